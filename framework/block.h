@@ -1,0 +1,146 @@
+#pragma once
+// Block: the unit of composition. A leaf block declares named, sized ports, its state, its
+// parameters and its events; a Diagram (diagram.h) is a Block made of other blocks.
+
+#include <deque>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "framework/port.h"
+#include "framework/types.h"
+
+namespace cbbg {
+
+class BlockContext;
+class Diagram;
+
+// What an update tells the simulator: carry on, or end the simulation (a trial ends when the
+// robot falls). The reason must be a string with static storage (a literal), so that
+// returning it never allocates.
+class EventStatus {
+ public:
+  static EventStatus succeeded() { return EventStatus(nullptr); }
+  static EventStatus terminate(const char* reason) { return EventStatus(reason); }
+  bool terminates() const { return reason_ != nullptr; }
+  const char* reason() const { return reason_ == nullptr ? "" : reason_; }
+
+ private:
+  explicit EventStatus(const char* reason) : reason_(reason) {}
+  const char* reason_;
+};
+
+// Per-context working memory a block may need besides its numeric state (a multibody
+// integrator, say). Created once per Context and copied with it; never shared between
+// contexts, so one Diagram can run in many threads at once.
+class BlockScratch {
+ public:
+  virtual ~BlockScratch() = default;
+  virtual std::unique_ptr<BlockScratch> clone() const = 0;
+};
+
+// Computes an output port's value from the context. Must not change anything.
+using OutputFunction = std::function<void(const BlockContext&, VectorRef value)>;
+// Writes the block's next discrete state; `next_state` holds the current one on entry. Every
+// update at one instant reads the values from before any of them ran.
+using UpdateFunction = std::function<EventStatus(BlockContext&, VectorRef next_state)>;
+// Time derivatives of the block's continuous state, for the simulator's integrator.
+using DerivativeFunction = std::function<void(const BlockContext&, VectorRef derivatives)>;
+// Advances a self-integrating block's continuous state to `end_time`; its inputs are held.
+using AdvanceFunction = std::function<void(BlockContext&, double end_time)>;
+
+struct PeriodicUpdate {
+  double period;
+  double offset;
+  UpdateFunction update;
+};
+
+struct Parameter {
+  std::string name;
+  Vector default_value;
+};
+
+class Block {
+ public:
+  explicit Block(std::string name);
+  virtual ~Block();
+  Block(const Block&) = delete;
+  Block& operator=(const Block&) = delete;
+
+  const std::string& name() const { return name_; }
+  // Names from the root diagram down, joined by '/': "cbbg/controller/critic".
+  std::string path() const;
+  const Diagram* parent() const { return parent_; }
+  virtual bool is_diagram() const { return false; }
+
+  int num_input_ports() const { return static_cast<int>(inputs_.size()); }
+  int num_output_ports() const { return static_cast<int>(outputs_.size()); }
+  const InputPort& input_port(int index) const;
+  const OutputPort& output_port(int index) const;
+  // By name; an unknown name throws, listing the ports the block has.
+  const InputPort& input_port(std::string_view name) const;
+  const OutputPort& output_port(std::string_view name) const;
+
+  // What a leaf block declared (empty for a Diagram).
+  const OutputFunction& output_function(int output_index) const;
+  // Inputs that the output reads directly (direct feedthrough), by input index.
+  const std::vector<int>& output_reads(int output_index) const;
+  const Vector& initial_discrete_state() const { return initial_discrete_state_; }
+  const Vector& initial_continuous_state() const { return initial_continuous_state_; }
+  bool has_continuous_state() const { return initial_continuous_state_.size() > 0; }
+  // True where the block advances its own continuous state (advance_function), false where
+  // the simulator integrates it from derivative_function.
+  bool integrates_itself() const { return static_cast<bool>(advance_); }
+  const DerivativeFunction& derivative_function() const { return derivatives_; }
+  const AdvanceFunction& advance_function() const { return advance_; }
+  const std::vector<PeriodicUpdate>& periodic_updates() const { return periodic_updates_; }
+  const std::vector<UpdateFunction>& initialization_updates() const { return init_updates_; }
+  const std::vector<Parameter>& parameters() const { return parameters_; }
+  // Index of the named parameter; an unknown name throws, listing the parameters.
+  int parameter_index(std::string_view name) const;
+
+  // Working memory for one context; null when the block needs none.
+  virtual std::unique_ptr<BlockScratch> make_scratch() const { return nullptr; }
+
+ protected:
+  const InputPort& declare_input_port(std::string name, int size, std::string description = {});
+  // `reads` lists the inputs the output reads directly; an output that reads only state lists
+  // none, which is what breaks feedback loops.
+  const OutputPort& declare_output_port(std::string name, int size, OutputFunction calc,
+                                        std::vector<const InputPort*> reads,
+                                        std::string description = {});
+  // A numeric parameter stored in the context, so it can change between runs (annealing)
+  // and differ between cloned contexts. Returns its index for BlockContext::parameter.
+  int declare_parameter(std::string name, Vector default_value);
+  void declare_discrete_state(Vector initial_value);
+  void declare_periodic_update(double period, double offset, UpdateFunction update);
+  // Runs once when a simulation is initialised, before the events at the initial time.
+  void declare_initialization_update(UpdateFunction update);
+  void declare_continuous_state(Vector initial_value, DerivativeFunction derivatives);
+  void declare_self_integrated_state(Vector initial_value, AdvanceFunction advance);
+
+ private:
+  friend class DiagramBuilder;
+
+  void check_new_port_name(const std::string& name, int size) const;
+  void check_no_continuous_state() const;
+
+  std::string name_;
+  const Diagram* parent_ = nullptr;
+  // Deques keep port references valid as more ports are declared.
+  std::deque<InputPort> inputs_;
+  std::deque<OutputPort> outputs_;
+  std::vector<OutputFunction> output_functions_;
+  std::vector<std::vector<int>> output_reads_;
+  Vector initial_discrete_state_;
+  Vector initial_continuous_state_;
+  DerivativeFunction derivatives_;
+  AdvanceFunction advance_;
+  std::vector<PeriodicUpdate> periodic_updates_;
+  std::vector<UpdateFunction> init_updates_;
+  std::vector<Parameter> parameters_;
+};
+
+}  // namespace cbbg

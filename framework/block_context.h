@@ -1,0 +1,59 @@
+#pragma once
+// BlockContext: one leaf block's view of a Context, handed to its output, update, derivative
+// and advance functions. Everything is a view into the context's storage: no copies.
+
+#include "framework/context.h"
+#include "framework/layout.h"
+#include "framework/port.h"
+#include "framework/types.h"
+
+namespace cbbg {
+
+class BlockContext {
+ public:
+  BlockContext(Context& context, const LeafLayout& layout)
+      : context_(&context), layout_(&layout) {}
+
+  double time() const { return context_->time(); }
+
+  ConstVectorView input(int index) const {
+    const InputPort& port = layout_->block->input_port(index);
+    return ConstVectorView(
+        context_->signals().data() + layout_->input_offsets[static_cast<size_t>(index)],
+        port.size());
+  }
+  ConstVectorView input(const InputPort& port) const { return input(port.index()); }
+
+  ConstVectorView discrete_state() const {
+    return ConstVectorView(context_->discrete_states().data() + layout_->discrete_offset,
+                           layout_->block->initial_discrete_state().size());
+  }
+  ConstVectorView continuous_state() const {
+    return ConstVectorView(context_->continuous_states().data() + layout_->continuous_offset,
+                           layout_->block->initial_continuous_state().size());
+  }
+  ConstVectorView parameter(int index) const {
+    const auto size = layout_->block->parameters()[static_cast<size_t>(index)].default_value.size();
+    return ConstVectorView(
+        context_->parameters().data() + layout_->parameter_offsets[static_cast<size_t>(index)],
+        size);
+  }
+
+  // For updates and self-integrating blocks only (their BlockContext is not const).
+  RandomGenerator& random_generator() { return context_->random_generator(layout_->index); }
+  VectorView mutable_continuous_state() {
+    return VectorView(context_->continuous_states().data() + layout_->continuous_offset,
+                      layout_->block->initial_continuous_state().size());
+  }
+  // The block's scratch, of the type its make_scratch returns.
+  template <typename Scratch>
+  Scratch& scratch() {
+    return static_cast<Scratch&>(*context_->scratch(layout_->index));
+  }
+
+ private:
+  Context* context_;
+  const LeafLayout* layout_;
+};
+
+}  // namespace cbbg

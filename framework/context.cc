@@ -1,0 +1,132 @@
+#include "framework/context.h"
+
+#include <stdexcept>
+
+#include "framework/diagram.h"
+
+namespace cbbg {
+
+Context::Context(const Diagram& diagram, std::uint64_t root_seed)
+    : diagram_(&diagram),
+      root_seed_(root_seed),
+      signals_(diagram.initial_signals()),
+      discrete_(diagram.initial_discrete_states()),
+      next_discrete_(diagram.initial_discrete_states()),
+      continuous_(diagram.initial_continuous_states()),
+      parameters_(diagram.default_parameters()) {
+  for (const auto& leaf : diagram.leaves()) {
+    generators_.emplace_back(derive_seed(root_seed, leaf.block->path()));
+    scratch_.push_back(leaf.block->make_scratch());
+  }
+}
+
+Context::~Context() = default;
+
+std::unique_ptr<Context> Context::clone() const {
+  auto copy = std::make_unique<Context>(*diagram_, root_seed_);
+  copy->assign_from(*this);
+  return copy;
+}
+
+void Context::assign_from(const Context& other) {
+  if (other.diagram_ != diagram_) {
+    throw std::invalid_argument("cannot assign a context of diagram '" + other.diagram_->path() +
+                                "' to a context of diagram '" + diagram_->path() + "'");
+  }
+  root_seed_ = other.root_seed_;
+  time_ = other.time_;
+  signals_ = other.signals_;
+  discrete_ = other.discrete_;
+  next_discrete_ = other.next_discrete_;
+  continuous_ = other.continuous_;
+  parameters_ = other.parameters_;
+  generators_ = other.generators_;
+  for (size_t leaf = 0; leaf < scratch_.size(); ++leaf) {
+    scratch_[leaf] = other.scratch_[leaf] ? other.scratch_[leaf]->clone() : nullptr;
+  }
+}
+
+const LeafLayout& Context::layout_of(const Block& block) const {
+  return diagram_->leaves()[static_cast<size_t>(diagram_->leaf_index(block))];
+}
+
+VectorView Context::discrete_state(const Block& block) {
+  return VectorView(discrete_.data() + layout_of(block).discrete_offset,
+                    block.initial_discrete_state().size());
+}
+
+ConstVectorView Context::discrete_state(const Block& block) const {
+  return ConstVectorView(discrete_.data() + layout_of(block).discrete_offset,
+                         block.initial_discrete_state().size());
+}
+
+VectorView Context::continuous_state(const Block& block) {
+  return VectorView(continuous_.data() + layout_of(block).continuous_offset,
+                    block.initial_continuous_state().size());
+}
+
+ConstVectorView Context::continuous_state(const Block& block) const {
+  return ConstVectorView(continuous_.data() + layout_of(block).continuous_offset,
+                         block.initial_continuous_state().size());
+}
+
+ConstVectorView Context::parameter(const Block& block, std::string_view name) const {
+  const int index = block.parameter_index(name);
+  return ConstVectorView(
+      parameters_.data() + layout_of(block).parameter_offsets[static_cast<size_t>(index)],
+      block.parameters()[static_cast<size_t>(index)].default_value.size());
+}
+
+void Context::set_parameter(const Block& block, std::string_view name, const Vector& value) {
+  const int index = block.parameter_index(name);
+  const auto size = block.parameters()[static_cast<size_t>(index)].default_value.size();
+  if (value.size() != size) {
+    throw std::invalid_argument("parameter '" + std::string(name) + "' of block '" +
+                                block.path() + "' has size " + std::to_string(size) +
+                                ", got a value of size " + std::to_string(value.size()));
+  }
+  parameters_.segment(layout_of(block).parameter_offsets[static_cast<size_t>(index)], size) =
+      value;
+}
+
+RandomGenerator& Context::random_generator(const Block& block) {
+  return generators_[static_cast<size_t>(layout_of(block).index)];
+}
+
+void Context::reset_state(const Block& block) {
+  discrete_state(block) = block.initial_discrete_state();
+  continuous_state(block) = block.initial_continuous_state();
+}
+
+void Context::reset_all_state() {
+  time_ = 0.0;
+  discrete_ = diagram_->initial_discrete_states();
+  continuous_ = diagram_->initial_continuous_states();
+}
+
+void Context::reseed(std::uint64_t root_seed) {
+  root_seed_ = root_seed;
+  for (const auto& leaf : diagram_->leaves()) {
+    generators_[static_cast<size_t>(leaf.index)].seed(derive_seed(root_seed, leaf.block->path()));
+  }
+}
+
+void Context::fix_input(const InputPort& diagram_input, const Vector& value) {
+  if (&diagram_input.block() != diagram_) {
+    throw std::invalid_argument("fix_input: '" + diagram_input.path() +
+                                "' is not an input port of the root diagram '" +
+                                diagram_->path() + "'");
+  }
+  if (value.size() != diagram_input.size()) {
+    throw std::invalid_argument("fix_input: input '" + diagram_input.path() + "' has size " +
+                                std::to_string(diagram_input.size()) + ", got a value of size " +
+                                std::to_string(value.size()));
+  }
+  signals_.segment(diagram_->root_input_offset(diagram_input.index()), value.size()) = value;
+}
+
+ConstVectorView Context::signal(const OutputPort& port) const {
+  return ConstVectorView(signals_.data() + diagram_->signal_offset(port), port.size());
+}
+
+}  // namespace cbbg

@@ -1,0 +1,88 @@
+#pragma once
+// Context: everything that changes during a simulation, in contiguous storage: time, the
+// signals on every wire, discrete and continuous state, parameters, and one random generator
+// per block. A Diagram is fixed after build; a Context is what a run owns. Clone one to
+// restart a trial or to run in parallel.
+
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "framework/block.h"
+#include "framework/random.h"
+#include "framework/types.h"
+
+namespace cbbg {
+
+class Diagram;
+struct LeafLayout;
+
+class Context {
+ public:
+  // Made by Diagram::create_context.
+  Context(const Diagram& diagram, std::uint64_t root_seed);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  std::unique_ptr<Context> clone() const;
+  // Copies every value of `other` (a context of the same diagram) into this one without
+  // allocating: the way to restart from a stored initial context.
+  void assign_from(const Context& other);
+
+  const Diagram& diagram() const { return *diagram_; }
+  std::uint64_t root_seed() const { return root_seed_; }
+  double time() const { return time_; }
+  void set_time(double time) { time_ = time; }
+
+  // Per-block state and parameters; `block` is any leaf of the diagram.
+  VectorView discrete_state(const Block& block);
+  ConstVectorView discrete_state(const Block& block) const;
+  VectorView continuous_state(const Block& block);
+  ConstVectorView continuous_state(const Block& block) const;
+  ConstVectorView parameter(const Block& block, std::string_view name) const;
+  // Throws, naming the block and parameter, when the size differs from the declared one.
+  void set_parameter(const Block& block, std::string_view name, const Vector& value);
+  RandomGenerator& random_generator(const Block& block);
+  // Restores the block's declared initial discrete and continuous state.
+  void reset_state(const Block& block);
+  // Restores every block's initial state and sets the time to zero; parameters, fixed inputs
+  // and random generators are kept.
+  void reset_all_state();
+  // Re-seeds every block's generator from `root_seed` and its path.
+  void reseed(std::uint64_t root_seed);
+
+  // The value of an input port the root diagram exports: it must be set before simulating.
+  void fix_input(const InputPort& diagram_input, const Vector& value);
+  // The last evaluated value of an output port (Diagram::evaluate_outputs fills them).
+  ConstVectorView signal(const OutputPort& port) const;
+
+  // Whole storage, for the simulator and for block views.
+  Vector& signals() { return signals_; }
+  const Vector& signals() const { return signals_; }
+  Vector& discrete_states() { return discrete_; }
+  const Vector& discrete_states() const { return discrete_; }
+  Vector& next_discrete_states() { return next_discrete_; }
+  Vector& continuous_states() { return continuous_; }
+  const Vector& continuous_states() const { return continuous_; }
+  const Vector& parameters() const { return parameters_; }
+  RandomGenerator& random_generator(int leaf) { return generators_[static_cast<size_t>(leaf)]; }
+  BlockScratch* scratch(int leaf) { return scratch_[static_cast<size_t>(leaf)].get(); }
+
+ private:
+  const LeafLayout& layout_of(const Block& block) const;
+
+  const Diagram* diagram_;
+  std::uint64_t root_seed_;
+  double time_ = 0.0;
+  Vector signals_;
+  Vector discrete_;
+  Vector next_discrete_;
+  Vector continuous_;
+  Vector parameters_;
+  std::vector<RandomGenerator> generators_;
+  std::vector<std::unique_ptr<BlockScratch>> scratch_;
+};
+
+}  // namespace cbbg

@@ -1,0 +1,55 @@
+#pragma once
+// DiagramBuilder: add blocks, connect ports, export or fix what stays open, then build().
+// Every wiring mistake fails here or at build(), with the paths, ports and sizes involved.
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "framework/diagram.h"
+
+namespace cbbg {
+
+class DiagramBuilder {
+ public:
+  explicit DiagramBuilder(std::string diagram_name);
+
+  // Adds a block (a leaf or a built Diagram); its name must be unique in this diagram.
+  template <typename B>
+  B& add(std::unique_ptr<B> block) {
+    B& added = *block;
+    add_block(std::unique_ptr<Block>(std::move(block)));
+    return added;
+  }
+  // Constructs a block in place: builder.emplace<Gain>("gain", 2.0).
+  template <typename B, typename... Args>
+  B& emplace(Args&&... args) {
+    return add(std::make_unique<B>(std::forward<Args>(args)...));
+  }
+
+  // Wires an output to an input of the same size; each input has at most one source.
+  void connect(const OutputPort& source, const InputPort& destination);
+  void connect(const Block& source, std::string_view output, const Block& destination,
+               std::string_view input);
+  // Makes a child's input an input of the diagram. Exporting several inner inputs under one
+  // name fans the diagram input out to all of them. Returns the diagram's port.
+  const InputPort& export_input(const InputPort& inner, std::string name = {});
+  const OutputPort& export_output(const OutputPort& inner, std::string name = {});
+  // Feeds a child's input with a constant value.
+  void fix_input(const InputPort& inner, Vector value);
+
+  // Checks the wiring (every input connected, exported or fixed; no algebraic loop) and
+  // fixes the evaluation order. The builder is spent afterwards.
+  std::unique_ptr<Diagram> build();
+
+ private:
+  void add_block(std::unique_ptr<Block> block);
+  void check_child(const Block& block, const char* action) const;
+  void check_input_free(const InputPort& port, const char* action) const;
+  Diagram& diagram() const;
+
+  std::unique_ptr<Diagram> diagram_;
+};
+
+}  // namespace cbbg

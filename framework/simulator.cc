@@ -1,0 +1,282 @@
+#include "framework/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <boost/numeric/odeint.hpp>
+
+#include "framework/block_context.h"
+
+namespace cbbg {
+namespace odeint = boost::numeric::odeint;
+
+namespace {
+
+constexpr double kSimultaneous = 1e-9;  // relative tolerance for simultaneous events
+
+bool same_instant(double a, double b) {
+  return std::abs(a - b) <= kSimultaneous * std::max(1.0, std::abs(b));
+}
+
+}  // namespace
+
+// The error-controlled Dormand–Prince 5(4) stepper of Boost.Odeint over the
+// simulator-integrated prefix of the continuous state. Kept across intervals, so its
+// buffers are sized once and its step size carries over.
+struct Simulator::Integrator {
+  using State = std::vector<double>;
+  using Stepper = odeint::controlled_runge_kutta<odeint::runge_kutta_dopri5<State>>;
+
+  explicit Integrator(double accuracy, int size)
+      : stepper(Stepper::error_checker_type(accuracy, accuracy)),
+        state(static_cast<size_t>(size)) {}
+
+  Stepper stepper;
+  State state;
+  double step = 1e-3;  // the step the controller proposed last
+};
+
+Simulator::Simulator(const Diagram& diagram, SimulatorOptions options, std::uint64_t root_seed)
+    : Simulator(diagram, diagram.create_context(root_seed), options) {}
+
+Simulator::Simulator(const Diagram& diagram, std::unique_ptr<Context> context,
+                     SimulatorOptions options)
+    : diagram_(&diagram), context_(std::move(context)), options_(options) {
+  if (!context_ || &context_->diagram() != &diagram) {
+    throw std::invalid_argument("Simulator: the context does not belong to diagram '" +
+                                diagram.path() + "'");
+  }
+  if (!std::isfinite(options.accuracy) || options.accuracy <= 0.0) {
+    throw std::invalid_argument("Simulator: accuracy must be positive and finite; got " +
+                                std::to_string(options.accuracy));
+  }
+  integrator_ = std::make_unique<Integrator>(options.accuracy, diagram.ode_size());
+}
+
+Simulator::~Simulator() = default;
+
+SignalLog& Simulator::add_log(const OutputPort& port, double period, double offset) {
+  diagram_->resolve_output(port);  // throws unless the port is in this diagram
+  SignalLog& log = logs_.emplace_back(port, period, offset);
+  initialized_ = false;  // the schedule gains an event
+  return log;
+}
+
+void Simulator::check_root_inputs() const {
+  for (int port = 0; port < diagram_->num_input_ports(); ++port) {
+    const auto value = context_->signals().segment(diagram_->root_input_offset(port),
+                                                   diagram_->input_port(port).size());
+    if (value.hasNaN()) {
+      throw std::invalid_argument("simulate: input '" + diagram_->input_port(port).path() +
+                                  "' of the root diagram has no value; set it with "
+                                  "Context::fix_input");
+    }
+  }
+}
+
+void Simulator::schedule_events() {
+  events_.clear();
+  const double now = context_->time();
+  auto first_index = [now](double period, double offset) {
+    const double k = std::ceil((now - offset) / period);
+    long long next = std::max(0LL, static_cast<long long>(k));
+    // Step back where rounding skipped an instant that is simultaneous with now.
+    if (next > 0 && same_instant(offset + static_cast<double>(next - 1) * period, now)) --next;
+    return next;
+  };
+  for (const auto& leaf : diagram_->leaves()) {
+    const auto& updates = leaf.block->periodic_updates();
+    for (size_t u = 0; u < updates.size(); ++u) {
+      events_.push_back({leaf.index, static_cast<int>(u), updates[u].period, updates[u].offset,
+                         first_index(updates[u].period, updates[u].offset)});
+    }
+  }
+  for (size_t l = 0; l < logs_.size(); ++l) {
+    events_.push_back({-1, static_cast<int>(l), logs_[l].period(), logs_[l].offset(),
+                       first_index(logs_[l].period(), logs_[l].offset())});
+  }
+  due_updates_.clear();
+  due_updates_.reserve(events_.size());
+}
+
+double Simulator::next_event_time() const {
+  double next = std::numeric_limits<double>::infinity();
+  for (const auto& event : events_) next = std::min(next, event.next_time());
+  return next;
+}
+
+SimulationStatus Simulator::run_updates(
+    const std::vector<std::pair<int, const UpdateFunction*>>& updates) {
+  Context& context = *context_;
+  context.next_discrete_states() = context.discrete_states();
+  SimulationStatus status;
+  for (const auto& [leaf_index, update] : updates) {
+    const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(leaf_index)];
+    BlockContext view(context, leaf);
+    const EventStatus result =
+        (*update)(view, VectorView(context.next_discrete_states().data() + leaf.discrete_offset,
+                                   leaf.block->initial_discrete_state().size()));
+    if (result.terminates() && !status.terminated) {
+      status.terminated = true;
+      status.terminated_by = leaf.block;
+      status.reason = result.reason();
+    }
+  }
+  context.discrete_states().swap(context.next_discrete_states());
+  return status;
+}
+
+SimulationStatus Simulator::initialize() {
+  check_root_inputs();
+  terminated_ = false;
+  schedule_events();
+  due_updates_.clear();
+  for (const auto& leaf : diagram_->leaves()) {
+    for (const auto& update : leaf.block->initialization_updates()) {
+      due_updates_.emplace_back(leaf.index, &update);
+    }
+  }
+  last_status_ = SimulationStatus{};
+  if (!due_updates_.empty()) {
+    diagram_->evaluate_outputs(*context_);
+    last_status_ = run_updates(due_updates_);
+  }
+  last_status_.time = context_->time();
+  terminated_ = last_status_.terminated;
+  initialized_ = true;
+  return last_status_;
+}
+
+SimulationStatus Simulator::handle_events(double time) {
+  ++num_event_instants_;
+  Context& context = *context_;
+  diagram_->evaluate_outputs(context);
+  due_updates_.clear();
+  for (auto& event : events_) {
+    if (!same_instant(event.next_time(), time)) continue;
+    ++event.next;
+    if (event.leaf < 0) {
+      SignalLog& log = logs_[static_cast<size_t>(event.update)];
+      log.record(time, context.signals().data() + diagram_->signal_offset(log.port()));
+    } else {
+      const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(event.leaf)];
+      due_updates_.emplace_back(event.leaf,
+                                &leaf.block->periodic_updates()[static_cast<size_t>(event.update)].update);
+    }
+  }
+  if (due_updates_.empty()) return SimulationStatus{};
+  return run_updates(due_updates_);
+}
+
+SimulationStatus Simulator::advance_to(double end_time) {
+  if (!std::isfinite(end_time)) {
+    throw std::invalid_argument("advance_to: the end time must be finite; got " +
+                                std::to_string(end_time));
+  }
+  if (!initialized_) {
+    initialize();
+  }
+  Context& context = *context_;
+  while (!terminated_ && context.time() < end_time) {
+    const double event_time = next_event_time();
+    if (same_instant(event_time, context.time())) {
+      context.set_time(event_time);
+      last_status_ = handle_events(event_time);
+      if (last_status_.terminated) {
+        terminated_ = true;
+        break;
+      }
+      continue;
+    }
+    integrate_to(std::min(event_time, end_time));
+  }
+  last_status_.time = context.time();
+  return last_status_;
+}
+
+void Simulator::integrate_to(double end_time) {
+  Context& context = *context_;
+  const double start_time = context.time();
+  if (!diagram_->self_integrating_leaves().empty()) {
+    diagram_->evaluate_continuous_inputs(context);
+    for (const int index : diagram_->self_integrating_leaves()) {
+      const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(index)];
+      BlockContext view(context, leaf);
+      leaf.block->advance_function()(view, end_time);
+      context.set_time(start_time);
+    }
+  }
+  if (diagram_->ode_size() > 0) integrate_ode(start_time, end_time);
+  context.set_time(end_time);
+  check_continuous_state_finite();
+}
+
+void Simulator::integrate_ode(double start_time, double end_time) {
+  Context& context = *context_;
+  Integrator& integrator = *integrator_;
+  const Diagram& diagram = *diagram_;
+  const int size = diagram.ode_size();
+  std::copy_n(context.continuous_states().data(), size, integrator.state.begin());
+
+  // The right-hand side writes the trial state into the context, recomputes the outputs the
+  // integrated blocks read, and asks each for its derivatives.
+  auto derivatives = [&context, &diagram, size](const Integrator::State& x,
+                                                Integrator::State& dxdt, double t) {
+    std::copy_n(x.begin(), size, context.continuous_states().data());
+    context.set_time(t);
+    diagram.evaluate_continuous_inputs(context);
+    for (const int index : diagram.ode_leaves()) {
+      const LeafLayout& leaf = diagram.leaves()[static_cast<size_t>(index)];
+      const BlockContext view(context, leaf);
+      leaf.block->derivative_function()(
+          view, VectorView(dxdt.data() + leaf.continuous_offset,
+                           leaf.block->initial_continuous_state().size()));
+    }
+  };
+
+  double t = start_time;
+  double step = std::min(integrator.step, end_time - start_time);
+  while (t < end_time) {
+    const bool last = t + step >= end_time;
+    if (last) step = end_time - t;
+    const double proposed_before = integrator.step;
+    const auto result = integrator.stepper.try_step(derivatives, integrator.state, t, step);
+    if (result == odeint::success) {
+      if (last) {
+        t = end_time;
+        // A step shortened to land on the event says nothing about the right step size.
+        integrator.step = std::max(step, proposed_before);
+      } else {
+        integrator.step = step;
+      }
+    } else if (step < options_.min_step) {
+      std::copy_n(integrator.state.begin(), size, context.continuous_states().data());
+      std::string blocks;
+      for (const int index : diagram.ode_leaves()) {
+        blocks += (blocks.empty() ? "'" : ", '") +
+                  diagram.leaves()[static_cast<size_t>(index)].block->path() + "'";
+      }
+      throw SimulationError("the integrator cannot meet accuracy " +
+                            std::to_string(options_.accuracy) + " at t = " + std::to_string(t) +
+                            ": its step fell below " + std::to_string(options_.min_step) +
+                            " s (blocks " + blocks + ")");
+    }
+  }
+  std::copy_n(integrator.state.begin(), size, context.continuous_states().data());
+}
+
+void Simulator::check_continuous_state_finite() const {
+  const Vector& state = context_->continuous_states();
+  if (state.allFinite()) return;
+  for (const auto& leaf : diagram_->leaves()) {
+    const auto size = leaf.block->initial_continuous_state().size();
+    if (size > 0 && !state.segment(leaf.continuous_offset, size).allFinite()) {
+      throw SimulationError("block '" + leaf.block->path() +
+                            "': continuous state became non-finite at t = " +
+                            std::to_string(context_->time()));
+    }
+  }
+}
+
+}  // namespace cbbg

@@ -1,0 +1,120 @@
+#pragma once
+// Simulator: advances a Context of a root Diagram through time.
+//
+// Step semantics (tested in tests/framework/simulator_test.cc):
+//  1. initialize() runs every block's initialization updates once, then schedules periodic
+//     events: an event of period p and offset o fires at t = o + k p, for the integers k with
+//     o + k p >= the context's time at initialize(). Events whose times agree within
+//     1e-9 * max(1, |t|) are simultaneous.
+//  2. At an event instant t, in this order: (a) every output is evaluated from the state at
+//     t; (b) logs due at t record those values; (c) every update due at t runs, reading the
+//     values of (a) and the discrete state from before any update at t; (d) all new discrete
+//     states are committed at once; (e) if an update returned EventStatus::terminate, the
+//     simulation stops at t, after (d).
+//  3. Between instants, continuous state advances with inputs recomputed from the committed
+//     discrete state. A discrete block's output therefore holds its value (zero-order hold)
+//     from the instant its state changes until the next one. Simulator-integrated blocks
+//     share one error-controlled Dormand–Prince integrator (Boost.Odeint) at
+//     options.accuracy; self-integrating blocks advance themselves over the same interval.
+//  4. advance_to(t_end) fires the events at instants before t_end and integrates up to
+//     t_end; events at exactly t_end fire at the start of the next advance_to, so
+//     advance_to(a); advance_to(b) equals advance_to(b).
+// A non-finite continuous state, or an integrator that cannot meet its accuracy, throws
+// SimulationError naming the block.
+
+#include <deque>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "framework/context.h"
+#include "framework/diagram.h"
+#include "framework/signal_log.h"
+
+namespace cbbg {
+
+// A simulation that cannot go on: non-finite state, or the integrator failing.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct SimulatorOptions {
+  // Relative and absolute error tolerance of the continuous integrator.
+  double accuracy = 1e-6;
+  // The integrator gives up (SimulationError) when its step falls below this.
+  double min_step = 1e-12;
+};
+
+struct SimulationStatus {
+  bool terminated = false;         // true where an update ended the simulation
+  double time = 0.0;               // the context's time on return
+  const Block* terminated_by = nullptr;
+  const char* reason = "";         // the update's reason for terminating
+};
+
+class Simulator {
+ public:
+  // Simulates a fresh context of `diagram` made with `root_seed`.
+  explicit Simulator(const Diagram& diagram, SimulatorOptions options = {},
+                     std::uint64_t root_seed = 0);
+  // Simulates `context`, which must belong to `diagram`.
+  Simulator(const Diagram& diagram, std::unique_ptr<Context> context,
+            SimulatorOptions options = {});
+  ~Simulator();
+  Simulator(const Simulator&) = delete;
+  Simulator& operator=(const Simulator&) = delete;
+
+  const Diagram& diagram() const { return *diagram_; }
+  Context& context() { return *context_; }
+  const Context& context() const { return *context_; }
+  const SimulatorOptions& options() const { return options_; }
+
+  // Runs initialization updates and schedules events from the context's time. advance_to
+  // calls it the first time; call it again after resetting the context for a new run.
+  SimulationStatus initialize();
+  SimulationStatus advance_to(double end_time);
+
+  // Records `port` (an output of any block in the diagram) every `period` from `offset`.
+  // The reference stays valid for the simulator's life.
+  SignalLog& add_log(const OutputPort& port, double period, double offset = 0.0);
+  const std::deque<SignalLog>& logs() const { return logs_; }
+
+  // Event instants handled since construction (for tests and benchmarks).
+  long long num_event_instants() const { return num_event_instants_; }
+
+ private:
+  struct ScheduledEvent {
+    int leaf;        // the block whose update fires, or -1 for a log
+    int update;      // index in its periodic updates, or the log's index
+    double period;
+    double offset;
+    long long next;  // fires next at offset + next * period
+    double next_time() const { return offset + static_cast<double>(next) * period; }
+  };
+  struct Integrator;
+
+  void check_root_inputs() const;
+  void schedule_events();
+  double next_event_time() const;
+  SimulationStatus handle_events(double time);
+  void integrate_to(double end_time);
+  void integrate_ode(double start_time, double end_time);
+  void check_continuous_state_finite() const;
+  SimulationStatus run_updates(const std::vector<std::pair<int, const UpdateFunction*>>& updates);
+
+  const Diagram* diagram_;
+  std::unique_ptr<Context> context_;
+  SimulatorOptions options_;
+  std::deque<SignalLog> logs_;
+  std::vector<ScheduledEvent> events_;
+  std::vector<std::pair<int, const UpdateFunction*>> due_updates_;  // reused every instant
+  std::unique_ptr<Integrator> integrator_;
+  bool initialized_ = false;
+  bool terminated_ = false;
+  SimulationStatus last_status_;
+  long long num_event_instants_ = 0;
+};
+
+}  // namespace cbbg
