@@ -30,8 +30,9 @@ std::unique_ptr<Context> Context::clone() const {
 
 void Context::assign_from(const Context& other) {
   if (other.diagram_ != diagram_) {
-    throw std::invalid_argument("cannot assign a context of diagram '" + other.diagram_->path() +
-                                "' to a context of diagram '" + diagram_->path() + "'");
+    throw std::invalid_argument(
+        "assign_from: the source context belongs to another diagram than this one ('" +
+        diagram_->path() + "')");
   }
   root_seed_ = other.root_seed_;
   time_ = other.time_;

@@ -218,6 +218,9 @@ void Simulator::integrate_ode(double start_time, double end_time) {
   const Diagram& diagram = *diagram_;
   const int size = diagram.ode_size();
   std::copy_n(context.continuous_states().data(), size, integrator.state.begin());
+  // Dormand–Prince reuses the last stage of a step as the first of the next (FSAL); an
+  // event may have changed the inputs since, so the first derivative is computed afresh.
+  integrator.stepper.reset();
 
   // The right-hand side writes the trial state into the context, recomputes the outputs the
   // integrated blocks read, and asks each for its derivatives.

@@ -1,0 +1,85 @@
+// Per-tick cost of a diagram: a chain of N trivial blocks (y = u / 2 + 1) closed by a
+// zero-order hold, against the same arithmetic written as a plain loop.
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <string>
+
+#include "bench/ratio_reporter.h"
+#include "framework/block_context.h"
+#include "framework/diagram_builder.h"
+#include "framework/primitives/zero_order_hold.h"
+#include "framework/simulator.h"
+
+namespace cbbg::bench {
+namespace {
+
+constexpr double kPeriod = 0.01;
+
+class HalvePlusOne final : public Block {
+ public:
+  explicit HalvePlusOne(std::string name) : Block(std::move(name)) {
+    const InputPort& u = declare_input_port("u", 1);
+    declare_output_port(
+        "y", 1,
+        [&u](const BlockContext& context, VectorRef y) { y[0] = 0.5 * context.input(u)[0] + 1.0; },
+        {&u});
+  }
+};
+
+std::unique_ptr<Diagram> make_chain(int length) {
+  DiagramBuilder builder("chain");
+  auto& hold = builder.emplace<ZeroOrderHold>("hold", 1, kPeriod);
+  const OutputPort* previous = &hold.output_port("y");
+  for (int i = 0; i < length; ++i) {
+    auto& step = builder.emplace<HalvePlusOne>("step" + std::to_string(i));
+    builder.connect(*previous, step.input_port("u"));
+    previous = &step.output_port("y");
+  }
+  builder.connect(*previous, hold.input_port("u"));
+  return builder.build();
+}
+
+void BM_Diagram(benchmark::State& state) {
+  const auto diagram = make_chain(static_cast<int>(state.range(0)));
+  Simulator simulator(*diagram);
+  double time = 0.0;
+  for (auto _ : state) {
+    time += kPeriod;
+    simulator.advance_to(time);  // exactly one tick
+  }
+  benchmark::DoNotOptimize(simulator.context().discrete_states()[0]);
+}
+
+void BM_PlainLoop(benchmark::State& state) {
+  const auto length = state.range(0);
+  double held = 0.0;
+  for (auto _ : state) {
+    double x = held;
+    for (long i = 0; i < length; ++i) {
+      x = 0.5 * x + 1.0;
+      benchmark::DoNotOptimize(x);
+    }
+    held = x;
+  }
+  benchmark::DoNotOptimize(held);
+}
+
+BENCHMARK(BM_Diagram)->Arg(1)->Arg(10)->Arg(100);
+BENCHMARK(BM_PlainLoop)->Arg(1)->Arg(10)->Arg(100);
+
+}  // namespace
+}  // namespace cbbg::bench
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  cbbg::bench::RatioReporter reporter([](const std::string& name) -> std::string {
+    const std::string prefix = "BM_Diagram/";
+    return name.rfind(prefix, 0) == 0 ? "BM_PlainLoop/" + name.substr(prefix.size()) : "";
+  });
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}
