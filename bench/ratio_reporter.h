@@ -34,8 +34,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
     for (const std::string& name : order_) {
       const std::string baseline = baseline_of_(name);
       if (baseline.empty() || cpu_ns_.count(baseline) == 0) continue;
-      GetOutputStream() << "  " << name << " / " << baseline << " = " << cpu_ns_[name] /
-                               cpu_ns_[baseline] << "\n";
+      GetOutputStream() << "  " << name << " / " << baseline << " = "
+                        << cpu_ns_[name] / cpu_ns_[baseline] << "\n";
     }
   }
 

@@ -63,9 +63,8 @@ const OutputPort& Block::output_port(std::string_view name) const {
   for (const auto& port : outputs_) {
     if (port.name() == name) return port;
   }
-  throw std::invalid_argument("block '" + path() + "' has no output port '" +
-                              std::string(name) + "'; its output ports are: " +
-                              list_names(outputs_));
+  throw std::invalid_argument("block '" + path() + "' has no output port '" + std::string(name) +
+                              "'; its output ports are: " + list_names(outputs_));
 }
 
 const OutputFunction& Block::output_function(int output_index) const {
@@ -136,8 +135,7 @@ int Block::declare_parameter(std::string name, Vector default_value) {
   check_name("block '" + path() + "'", name, "parameter name");
   for (const auto& parameter : parameters_) {
     if (parameter.name == name) {
-      throw std::invalid_argument("block '" + path() + "' already has a parameter '" + name +
-                                  "'");
+      throw std::invalid_argument("block '" + path() + "' already has a parameter '" + name + "'");
     }
   }
   parameters_.push_back({std::move(name), std::move(default_value)});

@@ -11,8 +11,7 @@ namespace cbbg {
 
 class BlockContext {
  public:
-  BlockContext(Context& context, const LeafLayout& layout)
-      : context_(&context), layout_(&layout) {}
+  BlockContext(Context& context, const LeafLayout& layout) : context_(&context), layout_(&layout) {}
 
   double time() const { return context_->time(); }
 

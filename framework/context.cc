@@ -82,12 +82,11 @@ void Context::set_parameter(const Block& block, std::string_view name, const Vec
   const int index = block.parameter_index(name);
   const auto size = block.parameters()[static_cast<size_t>(index)].default_value.size();
   if (value.size() != size) {
-    throw std::invalid_argument("parameter '" + std::string(name) + "' of block '" +
-                                block.path() + "' has size " + std::to_string(size) +
-                                ", got a value of size " + std::to_string(value.size()));
+    throw std::invalid_argument("parameter '" + std::string(name) + "' of block '" + block.path() +
+                                "' has size " + std::to_string(size) + ", got a value of size " +
+                                std::to_string(value.size()));
   }
-  parameters_.segment(layout_of(block).parameter_offsets[static_cast<size_t>(index)], size) =
-      value;
+  parameters_.segment(layout_of(block).parameter_offsets[static_cast<size_t>(index)], size) = value;
 }
 
 RandomGenerator& Context::random_generator(const Block& block) {
@@ -115,8 +114,8 @@ void Context::reseed(std::uint64_t root_seed) {
 void Context::fix_input(const InputPort& diagram_input, const Vector& value) {
   if (&diagram_input.block() != diagram_) {
     throw std::invalid_argument("fix_input: '" + diagram_input.path() +
-                                "' is not an input port of the root diagram '" +
-                                diagram_->path() + "'");
+                                "' is not an input port of the root diagram '" + diagram_->path() +
+                                "'");
   }
   if (value.size() != diagram_input.size()) {
     throw std::invalid_argument("fix_input: input '" + diagram_input.path() + "' has size " +

@@ -51,7 +51,8 @@ void Diagram::evaluate_outputs(Context& context) const {
     const BlockContext view(context, leaf);
     const auto port = static_cast<size_t>(slot.port);
     leaf.block->output_function(slot.port)(
-        view, VectorView(signals + leaf.output_offsets[port], leaf.block->output_port(slot.port).size()));
+        view,
+        VectorView(signals + leaf.output_offsets[port], leaf.block->output_port(slot.port).size()));
   }
 }
 
@@ -62,7 +63,8 @@ void Diagram::evaluate_continuous_inputs(Context& context) const {
     const BlockContext view(context, leaf);
     const auto port = static_cast<size_t>(slot.port);
     leaf.block->output_function(slot.port)(
-        view, VectorView(signals + leaf.output_offsets[port], leaf.block->output_port(slot.port).size()));
+        view,
+        VectorView(signals + leaf.output_offsets[port], leaf.block->output_port(slot.port).size()));
   }
 }
 
@@ -151,9 +153,8 @@ void Diagram::assign_signal_offsets() {
       const InputSource source = resolve_input(leaf.block->input_port(port));
       sources.push_back(source);
       if (source.output.leaf >= 0) {
-        leaf.input_offsets.push_back(
-            leaves_[static_cast<size_t>(source.output.leaf)]
-                .output_offsets[static_cast<size_t>(source.output.port)]);
+        leaf.input_offsets.push_back(leaves_[static_cast<size_t>(source.output.leaf)]
+                                         .output_offsets[static_cast<size_t>(source.output.port)]);
       } else if (source.root_input >= 0) {
         leaf.input_offsets.push_back(root_input_offsets_[static_cast<size_t>(source.root_input)]);
       } else {
@@ -165,7 +166,8 @@ void Diagram::assign_signal_offsets() {
   }
   initial_signals_ = Vector::Zero(size);
   for (int port = 0; port < num_input_ports(); ++port) {
-    initial_signals_.segment(root_input_offsets_[static_cast<size_t>(port)], input_port(port).size())
+    initial_signals_
+        .segment(root_input_offsets_[static_cast<size_t>(port)], input_port(port).size())
         .setConstant(std::numeric_limits<double>::quiet_NaN());
   }
   for (const auto& [offset, value] : fixed_slots) {
@@ -188,8 +190,9 @@ void Diagram::sort_outputs() {
 
   auto loop_message = [&](size_t first_frame, OutputSlot closing_source) {
     // Frames [first_frame, end) run downstream to upstream; print them in data-flow order.
-    std::string message = "algebraic loop (outputs that read each other through direct "
-                          "feedthrough): ";
+    std::string message =
+        "algebraic loop (outputs that read each other through direct "
+        "feedthrough): ";
     const Block* closing_block = leaves_[static_cast<size_t>(closing_source.leaf)].block;
     message += closing_block->output_port(closing_source.port).path();
     for (size_t k = stack.size(); k-- > first_frame;) {
@@ -230,8 +233,8 @@ void Diagram::sort_outputs() {
                  stack[first].slot.port != source.output.port) {
             --first;
           }
-          throw std::invalid_argument("build: diagram '" + path() + "': " +
-                                      loop_message(first, source.output));
+          throw std::invalid_argument("build: diagram '" + path() +
+                                      "': " + loop_message(first, source.output));
         }
         colour[node] = kGrey;
         stack.push_back({source.output, 0});
@@ -321,12 +324,14 @@ void Diagram::assign_state_offsets() {
   int continuous = 0;
   for (const int index : ode_leaves_) {
     leaves_[static_cast<size_t>(index)].continuous_offset = continuous;
-    continuous += static_cast<int>(leaves_[static_cast<size_t>(index)].block->initial_continuous_state().size());
+    continuous += static_cast<int>(
+        leaves_[static_cast<size_t>(index)].block->initial_continuous_state().size());
   }
   ode_size_ = continuous;
   for (const int index : self_integrating_leaves_) {
     leaves_[static_cast<size_t>(index)].continuous_offset = continuous;
-    continuous += static_cast<int>(leaves_[static_cast<size_t>(index)].block->initial_continuous_state().size());
+    continuous += static_cast<int>(
+        leaves_[static_cast<size_t>(index)].block->initial_continuous_state().size());
   }
 
   initial_discrete_ = Vector::Zero(discrete);
@@ -339,7 +344,8 @@ void Diagram::assign_state_offsets() {
     initial_continuous_.segment(leaf.continuous_offset, block.initial_continuous_state().size()) =
         block.initial_continuous_state();
     for (size_t p = 0; p < block.parameters().size(); ++p) {
-      default_parameters_.segment(leaf.parameter_offsets[p], block.parameters()[p].default_value.size()) =
+      default_parameters_.segment(leaf.parameter_offsets[p],
+                                  block.parameters()[p].default_value.size()) =
           block.parameters()[p].default_value;
     }
   }

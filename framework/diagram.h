@@ -23,8 +23,8 @@ class Diagram final : public Block {
     const InputPort* destination;
   };
   struct ExportedInput {
-    int diagram_port;          // index of this diagram's input port
-    const InputPort* inner;    // the child input it feeds
+    int diagram_port;        // index of this diagram's input port
+    const InputPort* inner;  // the child input it feeds
   };
   struct FixedInput {
     const InputPort* port;

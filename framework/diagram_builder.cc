@@ -61,8 +61,8 @@ void DiagramBuilder::connect(const OutputPort& source, const InputPort& destinat
   check_child(source.block(), "connect");
   check_child(destination.block(), "connect");
   if (source.size() != destination.size()) {
-    throw std::invalid_argument("connect: size mismatch: output '" + source.path() +
-                                "' has size " + std::to_string(source.size()) + " but input '" +
+    throw std::invalid_argument("connect: size mismatch: output '" + source.path() + "' has size " +
+                                std::to_string(source.size()) + " but input '" +
                                 destination.path() + "' has size " +
                                 std::to_string(destination.size()));
   }
@@ -71,8 +71,8 @@ void DiagramBuilder::connect(const OutputPort& source, const InputPort& destinat
   diagram().source_of_[&destination] = &source;
 }
 
-void DiagramBuilder::connect(const Block& source, std::string_view output,
-                             const Block& destination, std::string_view input) {
+void DiagramBuilder::connect(const Block& source, std::string_view output, const Block& destination,
+                             std::string_view input) {
   connect(source.output_port(output), destination.input_port(input));
 }
 
@@ -90,9 +90,8 @@ const InputPort& DiagramBuilder::export_input(const InputPort& inner, std::strin
   } else if (parent.input_port(index).size() != inner.size()) {
     throw std::invalid_argument("export_input: size mismatch: diagram input '" +
                                 parent.input_port(index).path() + "' has size " +
-                                std::to_string(parent.input_port(index).size()) +
-                                " but input '" + inner.path() + "' has size " +
-                                std::to_string(inner.size()));
+                                std::to_string(parent.input_port(index).size()) + " but input '" +
+                                inner.path() + "' has size " + std::to_string(inner.size()));
   }
   parent.exported_inputs_.push_back({index, &inner});
   parent.exported_input_of_[&inner] = index;
@@ -132,7 +131,8 @@ std::unique_ptr<Diagram> DiagramBuilder::build() {
   for (const auto& child : built.blocks_) {
     for (int index = 0; index < child->num_input_ports(); ++index) {
       const InputPort& port = child->input_port(index);
-      bool has_source = built.source_of_.count(&port) > 0 || built.exported_input_of_.count(&port) > 0;
+      bool has_source =
+          built.source_of_.count(&port) > 0 || built.exported_input_of_.count(&port) > 0;
       for (const auto& fixed : built.fixed_inputs_) has_source = has_source || fixed.port == &port;
       if (!has_source) {
         open_inputs += (open_inputs.empty() ? "" : "; ") + std::string("input '") + port.path() +

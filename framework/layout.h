@@ -10,12 +10,12 @@ class Block;
 
 struct LeafLayout {
   const Block* block = nullptr;
-  int index = 0;                      // position among the leaves: its generator and scratch
-  std::vector<int> input_offsets;     // into Context signals, per input port
-  std::vector<int> output_offsets;    // into Context signals, per output port
-  int discrete_offset = 0;            // into Context discrete state
-  int continuous_offset = 0;          // into Context continuous state
-  std::vector<int> parameter_offsets; // into Context parameters, per parameter
+  int index = 0;                       // position among the leaves: its generator and scratch
+  std::vector<int> input_offsets;      // into Context signals, per input port
+  std::vector<int> output_offsets;     // into Context signals, per output port
+  int discrete_offset = 0;             // into Context discrete state
+  int continuous_offset = 0;           // into Context continuous state
+  std::vector<int> parameter_offsets;  // into Context parameters, per parameter
 };
 
 // One output port of one leaf: a node of the evaluation schedule.

@@ -7,8 +7,8 @@ namespace cbbg {
 void check_name(const std::string& owner, const std::string& name, const char* what) {
   bool valid = !name.empty();
   for (const char c : name) {
-    const bool allowed = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                         (c >= '0' && c <= '9') || c == '_';
+    const bool allowed =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
     valid = valid && allowed;
   }
   if (!valid) {

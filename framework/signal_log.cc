@@ -53,9 +53,8 @@ Eigen::Map<const Eigen::MatrixXd> SignalLog::values() const {
 
 void SignalLog::set_column_names(std::vector<std::string> names) {
   if (static_cast<int>(names.size()) != size()) {
-    throw std::invalid_argument("log of '" + port_->path() + "': " +
-                                std::to_string(names.size()) + " column names for a port of size " +
-                                std::to_string(size()));
+    throw std::invalid_argument("log of '" + port_->path() + "': " + std::to_string(names.size()) +
+                                " column names for a port of size " + std::to_string(size()));
   }
   column_names_ = std::move(names);
 }
@@ -107,13 +106,13 @@ void SignalLog::record(double time, const double* values) {
   if (stream_.is_open()) {
     // Formatted into a stack buffer: streaming never allocates.
     std::array<char, 32> buffer{};
-    stream_.write(buffer.data(),
-                  format_number(buffer.data(), buffer.data() + buffer.size(), time) - buffer.data());
+    stream_.write(buffer.data(), format_number(buffer.data(), buffer.data() + buffer.size(), time) -
+                                     buffer.data());
     for (int i = 0; i < size(); ++i) {
       stream_.put(',');
-      stream_.write(buffer.data(),
-                    format_number(buffer.data(), buffer.data() + buffer.size(), values[i]) -
-                        buffer.data());
+      stream_.write(
+          buffer.data(),
+          format_number(buffer.data(), buffer.data() + buffer.size(), values[i]) - buffer.data());
     }
     stream_.put('\n');
   }

@@ -161,8 +161,8 @@ SimulationStatus Simulator::handle_events(double time) {
       log.record(time, context.signals().data() + diagram_->signal_offset(log.port()));
     } else {
       const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(event.leaf)];
-      due_updates_.emplace_back(event.leaf,
-                                &leaf.block->periodic_updates()[static_cast<size_t>(event.update)].update);
+      due_updates_.emplace_back(
+          event.leaf, &leaf.block->periodic_updates()[static_cast<size_t>(event.update)].update);
     }
   }
   if (due_updates_.empty()) return SimulationStatus{};
@@ -224,17 +224,17 @@ void Simulator::integrate_ode(double start_time, double end_time) {
 
   // The right-hand side writes the trial state into the context, recomputes the outputs the
   // integrated blocks read, and asks each for its derivatives.
-  auto derivatives = [&context, &diagram, size](const Integrator::State& x,
-                                                Integrator::State& dxdt, double t) {
+  auto derivatives = [&context, &diagram, size](const Integrator::State& x, Integrator::State& dxdt,
+                                                double t) {
     std::copy_n(x.begin(), size, context.continuous_states().data());
     context.set_time(t);
     diagram.evaluate_continuous_inputs(context);
     for (const int index : diagram.ode_leaves()) {
       const LeafLayout& leaf = diagram.leaves()[static_cast<size_t>(index)];
       const BlockContext view(context, leaf);
-      leaf.block->derivative_function()(
-          view, VectorView(dxdt.data() + leaf.continuous_offset,
-                           leaf.block->initial_continuous_state().size()));
+      leaf.block->derivative_function()(view,
+                                        VectorView(dxdt.data() + leaf.continuous_offset,
+                                                   leaf.block->initial_continuous_state().size()));
     }
   };
 
@@ -275,9 +275,9 @@ void Simulator::check_continuous_state_finite() const {
   for (const auto& leaf : diagram_->leaves()) {
     const auto size = leaf.block->initial_continuous_state().size();
     if (size > 0 && !state.segment(leaf.continuous_offset, size).allFinite()) {
-      throw SimulationError("block '" + leaf.block->path() +
-                            "': continuous state became non-finite at t = " +
-                            std::to_string(context_->time()));
+      throw SimulationError(
+          "block '" + leaf.block->path() +
+          "': continuous state became non-finite at t = " + std::to_string(context_->time()));
     }
   }
 }

@@ -48,10 +48,10 @@ struct SimulatorOptions {
 };
 
 struct SimulationStatus {
-  bool terminated = false;         // true where an update ended the simulation
-  double time = 0.0;               // the context's time on return
+  bool terminated = false;  // true where an update ended the simulation
+  double time = 0.0;        // the context's time on return
   const Block* terminated_by = nullptr;
-  const char* reason = "";         // the update's reason for terminating
+  const char* reason = "";  // the update's reason for terminating
 };
 
 class Simulator {
@@ -86,8 +86,8 @@ class Simulator {
 
  private:
   struct ScheduledEvent {
-    int leaf;        // the block whose update fires, or -1 for a log
-    int update;      // index in its periodic updates, or the log's index
+    int leaf;    // the block whose update fires, or -1 for a log
+    int update;  // index in its periodic updates, or the log's index
     double period;
     double offset;
     long long next;  // fires next at offset + next * period

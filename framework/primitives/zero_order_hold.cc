@@ -16,13 +16,12 @@ ZeroOrderHold::ZeroOrderHold(std::string name, const Vector& initial_value, doub
   const InputPort& u = declare_input_port("u", size, "the signal to sample");
   declare_discrete_state(initial_value);
   declare_output_port(
-      "y", size, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); },
-      {}, "the held sample");
-  declare_periodic_update(period, offset,
-                          [&u](BlockContext& context, VectorRef next) {
-                            next = context.input(u);
-                            return EventStatus::succeeded();
-                          });
+      "y", size, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {},
+      "the held sample");
+  declare_periodic_update(period, offset, [&u](BlockContext& context, VectorRef next) {
+    next = context.input(u);
+    return EventStatus::succeeded();
+  });
 }
 
 }  // namespace cbbg

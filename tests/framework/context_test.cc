@@ -17,12 +17,11 @@ class Noise final : public Block {
   explicit Noise(std::string name) : Block(std::move(name)) {
     scale_ = declare_parameter("scale", Vector::Ones(1));
     declare_discrete_state(Vector::Zero(1));
-    declare_output_port(
-        "y", 1,
-        [this](const BlockContext& context, VectorRef y) {
-          y = context.parameter(scale_)[0] * context.discrete_state();
-        },
-        {});
+    declare_output_port("y", 1,
+                        [this](const BlockContext& context, VectorRef y) {
+                          y = context.parameter(scale_)[0] * context.discrete_state();
+                        },
+                        {});
     declare_periodic_update(0.01, 0.0, [](BlockContext& context, VectorRef next) {
       next[0] = draw_standard_normal(context.random_generator());
       return EventStatus::succeeded();

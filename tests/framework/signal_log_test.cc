@@ -63,7 +63,7 @@ TEST(SignalLog, StreamsTheSameBytesWithoutKeepingSamples) {
     streamed.stream_to_csv(path);
     streaming.advance_to(1.0);
     EXPECT_EQ(streamed.num_samples(), 0);  // nothing kept in memory
-  }  // the log's file closes with its simulator
+  }                                        // the log's file closes with its simulator
   EXPECT_EQ(kept.num_samples(), 100);
   EXPECT_EQ(read_file(path), expected.str());
   std::filesystem::remove(path);

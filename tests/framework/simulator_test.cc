@@ -145,8 +145,7 @@ TEST(Simulator, SelfIntegratingBlocksAdvanceOverEachInterval) {
   auto diagram = builder.build();
   Simulator simulator(*diagram);
   simulator.advance_to(0.35);
-  EXPECT_NEAR(simulator.context().continuous_state(self)[0], 0.1 * (1 + 2 + 3) + 0.05 * 4,
-              1e-12);
+  EXPECT_NEAR(simulator.context().continuous_state(self)[0], 0.1 * (1 + 2 + 3) + 0.05 * 4, 1e-12);
 }
 
 TEST(Simulator, TerminatesAfterTheUpdatesOfTheInstantThatAskedForIt) {

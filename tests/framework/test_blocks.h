@@ -57,8 +57,7 @@ class Counter final : public Block {
       : Block(std::move(name)) {
     declare_discrete_state(Vector::Zero(1));
     declare_output_port(
-        "y", 1, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); },
-        {});
+        "y", 1, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {});
     declare_periodic_update(period, offset, [stop_at](BlockContext&, VectorRef next) {
       next[0] += 1.0;
       return stop_at > 0 && next[0] >= stop_at ? EventStatus::terminate("count reached")
@@ -75,8 +74,7 @@ class IncrementInput final : public Block {
     const InputPort& u = declare_input_port("u", 1);
     declare_discrete_state(Vector::Zero(1));
     declare_output_port(
-        "y", 1, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); },
-        {});
+        "y", 1, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {});
     declare_periodic_update(period, 0.0, [&u](BlockContext& context, VectorRef next) {
       next = context.input(u).array() + 1.0;
       return EventStatus::succeeded();
@@ -90,10 +88,11 @@ class Adder final : public Block {
   Adder(std::string name, int size) : Block(std::move(name)) {
     const InputPort& a = declare_input_port("a", size);
     const InputPort& b = declare_input_port("b", size);
-    declare_output_port(
-        "y", size,
-        [&a, &b](const BlockContext& context, VectorRef y) { y = context.input(a) + context.input(b); },
-        {&a, &b});
+    declare_output_port("y", size,
+                        [&a, &b](const BlockContext& context, VectorRef y) {
+                          y = context.input(a) + context.input(b);
+                        },
+                        {&a, &b});
   }
 };
 
