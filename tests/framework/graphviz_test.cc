@@ -19,6 +19,7 @@
 #include "framework/primitives/constant_source.h"
 #include "framework/primitives/gain.h"
 #include "framework/primitives/zero_order_hold.h"
+#include "tests/framework/test_blocks.h"
 
 namespace cbbg {
 namespace {
@@ -70,6 +71,16 @@ std::unique_ptr<Diagram> nested_diagram() {
   builder.connect(plant, "y", scale, "u");
   builder.fix_input(offset.input_port("u"), Vector::Constant(1, 0.5));
   builder.export_output(scale.output_port("y"), "out");
+  return builder.build();
+}
+
+// An adder (two inputs, one output) and a block without ports.
+std::unique_ptr<Diagram> uneven_diagram() {
+  DiagramBuilder builder("top");
+  auto& adder = builder.emplace<testing::Adder>("adder", 3);
+  builder.emplace<testing::BlowUp>("portless");
+  builder.export_input(adder.input_port("a"));
+  builder.export_input(adder.input_port("b"));
   return builder.build();
 }
 
@@ -170,11 +181,22 @@ TEST(Graphviz, DrawsEachLeafAsATableWithNameInputsLeftAndOutputsRight) {
                        R"(cellspacing="0" cellpadding="4"><tr><td colspan="2"><b>gain</b></td>)"
                        R"(</tr><tr><td port="in_u" align="left">u [2]</td><td port="out_y" )"
                        R"(align="right">y [2]</td></tr></table>>];)"));
-  // A source has no inputs: an empty, borderless cell keeps its output in the right column.
-  EXPECT_THAT(dot, HasSubstr(R"(<b>source</b></td></tr><tr><td border="0"></td><td )"
-                             R"(port="out_y" align="right">y [2]</td></tr>)"));
-  EXPECT_THAT(dot, HasSubstr(R"(<b>hold</b></td></tr><tr><td port="in_u" align="left">u [2])"
-                             R"(</td><td port="out_y" align="right">y [2]</td></tr>)"));
+  EXPECT_THAT(dot, HasSubstr(R"(<tr><td colspan="2"><b>hold</b></td></tr><tr><td port="in_u" )"
+                             R"(align="left">u [2]</td><td port="out_y" align="right">y [2]</td>)"
+                             R"(</tr></table>)"));
+  // A source has no inputs, so a single column.
+  EXPECT_THAT(dot, HasSubstr(R"(<tr><td colspan="1"><b>source</b></td></tr><tr><td )"
+                             R"(port="out_y" align="right">y [2]</td></tr></table>)"));
+}
+
+TEST(Graphviz, PadsTheShorterPortColumnWithEmptyCells) {
+  const std::string dot = to_dot(*uneven_diagram());
+  EXPECT_THAT(dot, HasSubstr(R"(<tr><td colspan="2"><b>adder</b></td></tr>)"
+                             R"(<tr><td port="in_a" align="left">a [3]</td><td port="out_y" )"
+                             R"(align="right">y [3]</td></tr>)"
+                             R"(<tr><td port="in_b" align="left">b [3]</td><td border="0"></td>)"
+                             R"(</tr></table>)"));
+  EXPECT_THAT(dot, HasSubstr(R"(<tr><td colspan="1"><b>portless</b></td></tr></table>)"));
 }
 
 TEST(Graphviz, IsALeftToRightDigraphWithTheRootAsACluster) {
@@ -345,9 +367,11 @@ TEST(Graphviz, DotAcceptsTheTextWithoutAWord) {
     EXPECT_EQ(status, 0) << "max_depth " << depth;
     EXPECT_EQ(printed, "") << "max_depth " << depth;
   }
-  const auto [status, printed] = run_dot_on(to_dot(*flat_diagram()), directory.path());
-  EXPECT_EQ(status, 0);
-  EXPECT_EQ(printed, "");
+  for (const auto& diagram : {flat_diagram(), uneven_diagram()}) {
+    const auto [status, printed] = run_dot_on(to_dot(*diagram), directory.path());
+    EXPECT_EQ(status, 0) << diagram->name();
+    EXPECT_EQ(printed, "") << diagram->name();
+  }
 }
 
 TEST(Graphviz, RendersSvgAndPngThroughDot) {

@@ -1,0 +1,398 @@
+#include "config/config.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+namespace cbbg::config {
+namespace {
+
+const KeySpec* find_spec(std::string_view path) {
+  for (const auto& spec : schema()) {
+    if (spec.path == path) return &spec;
+  }
+  return nullptr;
+}
+
+// The keys directly under a section ("plant" -> "kind, wheel_mass, ..."), or "" if none.
+std::string section_keys(std::string_view section) {
+  std::string keys;
+  const std::string prefix = std::string(section) + ".";
+  for (const auto& spec : schema()) {
+    if (spec.path.rfind(prefix, 0) == 0) {
+      keys += (keys.empty() ? "" : ", ") + spec.path.substr(prefix.size());
+    }
+  }
+  return keys;
+}
+
+std::string format_number(double value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
+// A node as the user wrote it, on one line, for "got ..." in messages.
+std::string shown(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "nothing";
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  YAML::Emitter out;
+  out.SetSeqFormat(YAML::Flow);
+  out.SetMapFormat(YAML::Flow);
+  out << node;
+  std::string text = out.c_str();
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  return text;
+}
+
+std::string range_text(const KeySpec& spec) {
+  const bool has_min = std::isfinite(spec.min);
+  const bool has_max = std::isfinite(spec.max);
+  if (has_min && has_max) {
+    return "in " + std::string(spec.min_exclusive ? "(" : "[") + format_number(spec.min) + ", " +
+           format_number(spec.max) + (spec.max_exclusive ? ")" : "]");
+  }
+  if (has_min) return std::string(spec.min_exclusive ? "> " : ">= ") + format_number(spec.min);
+  if (has_max) return std::string(spec.max_exclusive ? "< " : "<= ") + format_number(spec.max);
+  return "any finite number";
+}
+
+bool in_range(const KeySpec& spec, double value) {
+  const bool above = spec.min_exclusive ? value > spec.min : value >= spec.min;
+  const bool below = spec.max_exclusive ? value < spec.max : value <= spec.max;
+  return above && below;
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+class Parser {
+ public:
+  explicit Parser(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw ConfigError(source_ + ": " + message);
+  }
+
+  double parse_number(const std::string& label, const YAML::Node& node,
+                      const char* what = "a number") const {
+    double value = 0.0;
+    if (!node.IsScalar() || !YAML::convert<double>::decode(node, value)) {
+      fail(label + " must be " + what + "; got " + shown(node));
+    }
+    if (!std::isfinite(value)) fail(label + " must be a finite number; got " + shown(node));
+    return value;
+  }
+
+  double checked_number(const KeySpec& spec, const std::string& label,
+                        const YAML::Node& node) const {
+    const double value = parse_number(label, node);
+    if (!in_range(spec, value)) {
+      fail(label + " must be " + range_text(spec) + "; got " + format_number(value));
+    }
+    return value;
+  }
+
+  long long parse_integer(const KeySpec& spec, const std::string& label,
+                          const YAML::Node& node) const {
+    const double value = parse_number(label, node, "an integer");
+    if (value != std::floor(value) || std::abs(value) > 9.0e15) {
+      fail(label + " must be an integer; got " + shown(node));
+    }
+    if (!in_range(spec, value)) {
+      fail(label + " must be an integer " + range_text(spec) + "; got " + format_number(value));
+    }
+    return static_cast<long long>(value);
+  }
+
+  std::string parse_choice(const KeySpec& spec, const std::string& label,
+                           const YAML::Node& node) const {
+    if (!node.IsScalar())
+      fail(label + " must be one of " + join(spec.choices) + "; got " + shown(node));
+    const std::string& value = node.Scalar();
+    if (!spec.choices.empty() &&
+        std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {
+      fail(label + " must be one of " + join(spec.choices) + "; got '" + value + "'");
+    }
+    return value;
+  }
+
+  Value parse(const KeySpec& spec, const YAML::Node& node) const {
+    const std::string& key = spec.path;
+    switch (spec.kind) {
+      case Kind::kNumber:
+        return checked_number(spec, key, node);
+      case Kind::kInteger:
+        return parse_integer(spec, key, node);
+      case Kind::kText:
+        return parse_choice(spec, key, node);
+      case Kind::kNumbers: {
+        const std::string wanted = spec.list_size > 0
+                                       ? "a list of " + std::to_string(spec.list_size) + " numbers"
+                                       : "a non-empty list of numbers";
+        if (!node.IsSequence() || node.size() == 0 ||
+            (spec.list_size > 0 && static_cast<int>(node.size()) != spec.list_size)) {
+          fail(key + " must be " + wanted + "; got " + shown(node));
+        }
+        std::vector<double> values;
+        for (std::size_t i = 0; i < node.size(); ++i) {
+          values.push_back(checked_number(spec, key + "[" + std::to_string(i) + "]", node[i]));
+        }
+        return values;
+      }
+      case Kind::kNames: {
+        if (!node.IsSequence() || node.size() == 0) {
+          fail(key + " must be a non-empty list of " + join(spec.choices) + "; got " + shown(node));
+        }
+        std::vector<std::string> values;
+        for (std::size_t i = 0; i < node.size(); ++i) {
+          std::string name = parse_choice(spec, key + "[" + std::to_string(i) + "]", node[i]);
+          if (std::find(values.begin(), values.end(), name) != values.end()) {
+            fail(key + " lists '" + name + "' twice");
+          }
+          values.push_back(std::move(name));
+        }
+        return values;
+      }
+      case Kind::kAnnealing:
+        return parse_annealing(key, node);
+    }
+    fail(key + ": unknown kind");
+  }
+
+  std::vector<AnnealingStep> parse_annealing(const std::string& key, const YAML::Node& node) const {
+    const std::string shape = " must be a list of {from_trial: integer >= 1, k1: number > 0}";
+    if (!node.IsSequence() || node.size() == 0) fail(key + shape + "; got " + shown(node));
+    std::vector<AnnealingStep> steps;
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const std::string label = key + "[" + std::to_string(i) + "]";
+      const YAML::Node& entry = node[i];
+      if (!entry.IsMap()) {
+        fail(label + " must be a map {from_trial: integer >= 1, k1: number > 0}; got " +
+             shown(entry));
+      }
+      for (const auto& field : entry) {
+        const std::string name = field.first.as<std::string>();
+        if (name != "from_trial" && name != "k1") {
+          fail(label + " has an unknown key '" + name + "'; allowed: from_trial, k1");
+        }
+      }
+      if (!entry["from_trial"] || !entry["k1"]) fail(label + " needs both from_trial and k1");
+      KeySpec trial_spec;
+      trial_spec.min = 1;
+      KeySpec k1_spec;
+      k1_spec.min = 0;
+      k1_spec.min_exclusive = true;
+      const AnnealingStep step{
+          parse_integer(trial_spec, label + ".from_trial", entry["from_trial"]),
+          checked_number(k1_spec, label + ".k1", entry["k1"])};
+      if (i == 0 && step.from_trial != 1) {
+        fail(key + " must start at from_trial 1; got " + std::to_string(step.from_trial));
+      }
+      if (i > 0 && step.from_trial <= steps.back().from_trial) {
+        fail(key + " must list trials in increasing order; " + label + ".from_trial is " +
+             std::to_string(step.from_trial) + " after " + std::to_string(steps.back().from_trial));
+      }
+      steps.push_back(step);
+    }
+    return steps;
+  }
+
+  // Merges a map node found at `prefix` ("" for the top level) into `values`.
+  void merge(const YAML::Node& node, const std::string& prefix,
+             std::map<std::string, Value, std::less<>>& values) const {
+    for (const auto& entry : node) {
+      if (!entry.first.IsScalar()) fail("keys must be plain names; got " + shown(entry.first));
+      const std::string path =
+          prefix.empty() ? entry.first.Scalar() : prefix + "." + entry.first.Scalar();
+      assign(path, entry.second, values);
+    }
+  }
+
+  void assign(const std::string& path, const YAML::Node& node,
+              std::map<std::string, Value, std::less<>>& values) const {
+    if (const KeySpec* spec = find_spec(path)) {
+      values[path] = parse(*spec, node);
+      return;
+    }
+    const std::string children = section_keys(path);
+    if (!children.empty()) {
+      if (!node.IsMap()) {
+        fail(path + " is a section: give a map of its keys (" + children + "); got " + shown(node));
+      }
+      merge(node, path, values);
+      return;
+    }
+    const std::string suggestion = closest_key(path);
+    fail("unknown key '" + path + "'" +
+         (suggestion.empty() ? "; `cbbg list` shows every key"
+                             : "; did you mean '" + suggestion + "'?"));
+  }
+
+ private:
+  std::string source_;
+};
+
+YAML::Node load_yaml(const std::string& text, const std::string& source) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& error) {
+    throw ConfigError(source + ": malformed YAML at line " + std::to_string(error.mark.line + 1) +
+                      ", column " + std::to_string(error.mark.column + 1) + ": " + error.msg);
+  }
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string last_segment(std::string_view path) {
+  const auto dot = path.rfind('.');
+  return std::string(dot == std::string_view::npos ? path : path.substr(dot + 1));
+}
+
+void write_value(std::ostringstream& out, const Value& value) {
+  std::visit(
+      [&out](const auto& v) {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, double>) {
+          out << format_number(v);
+        } else if constexpr (std::is_same_v<T, long long>) {
+          out << v;
+        } else if constexpr (std::is_same_v<T, std::string>) {
+          out << v;
+        } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+          out << "[";
+          for (std::size_t i = 0; i < v.size(); ++i) out << (i ? ", " : "") << format_number(v[i]);
+          out << "]";
+        } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+          out << "[";
+          for (std::size_t i = 0; i < v.size(); ++i) out << (i ? ", " : "") << v[i];
+          out << "]";
+        } else {
+          for (const auto& step : v) {
+            out << "\n  - {from_trial: " << step.from_trial << ", k1: " << format_number(step.k1)
+                << "}";
+          }
+        }
+      },
+      value);
+}
+
+}  // namespace
+
+std::string closest_key(std::string_view unknown) {
+  std::string best;
+  std::size_t best_distance = 4;  // suggest only keys within three edits
+  for (const auto& spec : schema()) {
+    std::size_t distance = edit_distance(unknown, spec.path);
+    // A key written without its section ("gamma") matches by its last segment.
+    if (last_segment(spec.path) == unknown) distance = 1;
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = spec.path;
+    }
+  }
+  return best;
+}
+
+Config::Config() {
+  for (const auto& spec : schema()) values_[spec.path] = spec.default_value;
+}
+
+void Config::merge_yaml(const std::string& text, const std::string& source) {
+  const YAML::Node document = load_yaml(text, source);
+  if (!document.IsDefined() || document.IsNull()) return;  // an empty file changes nothing
+  const Parser parser(source);
+  if (!document.IsMap()) parser.fail("a config is a map of keys; got " + shown(document));
+  auto merged = values_;  // all or nothing
+  parser.merge(document, "", merged);
+  values_ = std::move(merged);
+}
+
+void Config::merge_file(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) {
+    throw ConfigError("config file '" + path.string() + "' cannot be read (missing or unreadable)");
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  merge_yaml(text.str(), path.string());
+}
+
+void Config::set(std::string_view assignment) {
+  const std::string source = "--set " + std::string(assignment);
+  const auto equals = assignment.find('=');
+  if (equals == std::string_view::npos || equals == 0) {
+    throw ConfigError(source + ": expected key.path=value");
+  }
+  const std::string key(assignment.substr(0, equals));
+  const std::string text(assignment.substr(equals + 1));
+  if (text.empty()) throw ConfigError(source + ": " + key + " has no value after '='");
+  const YAML::Node node = load_yaml(text, source);
+  const Parser parser(source);
+  auto merged = values_;
+  parser.assign(key, node, merged);
+  values_ = std::move(merged);
+}
+
+const Value& Config::value(std::string_view key) const {
+  const auto found = values_.find(key);
+  if (found == values_.end()) {
+    throw std::logic_error("config has no key '" + std::string(key) + "'");
+  }
+  return found->second;
+}
+
+double Config::number(std::string_view key) const { return std::get<double>(value(key)); }
+long long Config::integer(std::string_view key) const { return std::get<long long>(value(key)); }
+const std::string& Config::text(std::string_view key) const {
+  return std::get<std::string>(value(key));
+}
+const std::vector<double>& Config::numbers(std::string_view key) const {
+  return std::get<std::vector<double>>(value(key));
+}
+const std::vector<std::string>& Config::names(std::string_view key) const {
+  return std::get<std::vector<std::string>>(value(key));
+}
+const std::vector<AnnealingStep>& Config::annealing(std::string_view key) const {
+  return std::get<std::vector<AnnealingStep>>(value(key));
+}
+
+std::string Config::to_yaml() const {
+  std::ostringstream out;
+  std::string section;
+  for (const auto& spec : schema()) {
+    const auto dot = spec.path.find('.');
+    const std::string head = dot == std::string::npos ? "" : spec.path.substr(0, dot);
+    if (head != section) {
+      section = head;
+      if (!head.empty()) out << head << ":\n";
+    }
+    out << (head.empty() ? "" : "  ") << spec.path.substr(head.empty() ? 0 : dot + 1) << ":"
+        << (spec.kind == Kind::kAnnealing ? "" : " ");
+    write_value(out, value(spec.path));
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace cbbg::config

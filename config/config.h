@@ -1,0 +1,88 @@
+#pragma once
+// The configuration tree of a cbbg run: every key of SPEC section 4 (and the keys added
+// since) with its type, default and meaning, merged from the built-in defaults, a YAML file
+// and `--set key.path=value` overrides, in that order. Types, choices and simple ranges are
+// checked here, as each value arrives; ranges a block owns are checked by its params'
+// validate() when the diagram is built.
+
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace cbbg::config {
+
+// A user's mistake in a config: one line naming the key path and what is allowed.
+class ConfigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// exp2's schedule: k1 from trial `from_trial` on (trials count from 1).
+struct AnnealingStep {
+  long long from_trial;
+  double k1;
+  bool operator==(const AnnealingStep&) const = default;
+};
+
+using Value = std::variant<double, long long, std::string, std::vector<double>,
+                           std::vector<std::string>, std::vector<AnnealingStep>>;
+
+enum class Kind { kNumber, kInteger, kText, kNumbers, kNames, kAnnealing };
+
+// One key of the tree.
+struct KeySpec {
+  std::string path;  // "critic.gamma"
+  Kind kind;
+  Value default_value;
+  std::string meaning;               // one line, for `cbbg list`
+  std::vector<std::string> choices;  // allowed texts (kText, kNames); empty: any
+  // Numeric range (kNumber, kInteger, each element of kNumbers).
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_exclusive = false;
+  bool max_exclusive = false;
+  int list_size = 0;  // kNumbers: exact length when > 0
+};
+
+// Every key, in the order `cbbg list` and config.yaml show them.
+const std::vector<KeySpec>& schema();
+// The diagram names an arm or `experiment` may take.
+const std::vector<std::string>& diagram_names();
+
+class Config {
+ public:
+  // The built-in defaults.
+  Config();
+
+  // Merges a YAML document; `source` names it in error messages (a file name).
+  void merge_yaml(const std::string& text, const std::string& source);
+  void merge_file(const std::filesystem::path& path);
+  // Applies one "key.path=value" override (value in YAML syntax: 3, [1, 2], {a: 1}).
+  void set(std::string_view assignment);
+
+  double number(std::string_view key) const;
+  long long integer(std::string_view key) const;
+  const std::string& text(std::string_view key) const;
+  const std::vector<double>& numbers(std::string_view key) const;
+  const std::vector<std::string>& names(std::string_view key) const;
+  const std::vector<AnnealingStep>& annealing(std::string_view key) const;
+
+  // The fully resolved tree as YAML, in schema order; it loads back to the same Config.
+  std::string to_yaml() const;
+  bool operator==(const Config&) const = default;
+
+ private:
+  const Value& value(std::string_view key) const;
+
+  std::map<std::string, Value, std::less<>> values_;
+};
+
+// The key closest to `unknown` by edit distance, or "" when none is close.
+std::string closest_key(std::string_view unknown);
+
+}  // namespace cbbg::config
