@@ -338,8 +338,8 @@ void Config::merge_file(const std::filesystem::path& path) {
   merge_yaml(text.str(), path.string());
 }
 
-void Config::set(std::string_view assignment) {
-  const std::string source = "--set " + std::string(assignment);
+void Config::set(std::string_view assignment, std::string source) {
+  if (source.empty()) source = "--set " + std::string(assignment);
   const auto equals = assignment.find('=');
   if (equals == std::string_view::npos || equals == 0) {
     throw ConfigError(source + ": expected key.path=value");

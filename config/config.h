@@ -63,7 +63,8 @@ class Config {
   void merge_yaml(const std::string& text, const std::string& source);
   void merge_file(const std::filesystem::path& path);
   // Applies one "key.path=value" override (value in YAML syntax: 3, [1, 2], {a: 1}).
-  void set(std::string_view assignment);
+  // Errors start with `source`, by default "--set key.path=value".
+  void set(std::string_view assignment, std::string source = {});
 
   double number(std::string_view key) const;
   long long integer(std::string_view key) const;

@@ -1,0 +1,35 @@
+#pragma once
+// The subcommands of `cbbg`. Each returns the process exit code: 0 done, 1 failed while
+// running, 2 bad input (config, command line).
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace cbbg::app {
+
+struct RunOptions {
+  std::string experiment;             // empty: the config's
+  std::filesystem::path config_file;  // empty: defaults only
+  std::vector<std::string> sets;      // key.path=value overrides, in order
+  long long seeds = 0;                // 0: the config's
+  long long seed = -1;                // < 0: the config's
+  int jobs = 1;
+  std::filesystem::path out = "results";
+  bool figures = true;
+};
+int run_command(const RunOptions& options);
+
+struct GraphOptions {
+  std::string diagram;  // empty: the config's first arm
+  std::filesystem::path config_file;
+  std::vector<std::string> sets;
+  std::filesystem::path output;
+  int max_depth = -1;
+};
+int graph_command(const GraphOptions& options);
+
+int plot_command(const std::filesystem::path& directory);
+int list_command();
+
+}  // namespace cbbg::app

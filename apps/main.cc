@@ -1,0 +1,69 @@
+// cbbg: run the paper's experiments, draw the diagrams, plot results, list what exists.
+
+#include <thread>
+
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+
+#include "apps/commands.h"
+
+int main(int argc, char** argv) {
+  using namespace cbbg::app;
+  CLI::App app{"cbbg: cerebellum-basal-ganglia motor learning on a two-wheeled robot"};
+  app.require_subcommand(0, 1);
+  std::string log_level = "info";
+  app.add_option("--log-level", log_level, "trace | debug | info | warn | error | off")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
+
+  RunOptions run;
+  run.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  CLI::App* run_app = app.add_subcommand("run", "run an experiment over many seeds (the default)");
+  run_app->add_option("--experiment", run.experiment,
+                      "exp1 | exp2 | a diagram name (default: the config's, exp1)");
+  run_app->add_option("--config", run.config_file, "a YAML config (keys: `cbbg list`)")
+      ->check(CLI::ExistingFile);
+  run_app->add_option("--set", run.sets, "override one key: --set critic.gamma=0.9 (repeatable)");
+  run_app->add_option("--seeds", run.seeds, "independent runs per arm")->check(CLI::PositiveNumber);
+  run_app->add_option("--seed", run.seed, "root seed; run k uses seed + k")
+      ->check(CLI::NonNegativeNumber);
+  run_app->add_option("--jobs,-j", run.jobs, "threads (results are the same for any count)")
+      ->check(CLI::Range(1, 1024));
+  run_app->add_option("--out,-o", run.out, "results directory (replaced when the run ends)");
+  run_app->add_flag("!--no-figures", run.figures, "skip the figures");
+
+  GraphOptions graph;
+  CLI::App* graph_app = app.add_subcommand("graph", "draw a diagram (.dot, .svg or .png)");
+  auto* diagram_option = graph_app->add_option(
+      "--diagram", graph.diagram, "cbbg | cbbg_weighted | bg_only | cb_only | pd_only");
+  graph_app->add_option("--config", graph.config_file, "a YAML config")
+      ->check(CLI::ExistingFile)
+      ->excludes(diagram_option);
+  graph_app->add_option("--set", graph.sets, "override one key (repeatable)");
+  graph_app->add_option("--depth", graph.max_depth, "nesting levels to expand (default: all)");
+  graph_app->add_option("-o,--output", graph.output, "FILE.dot | FILE.svg | FILE.png")->required();
+
+  std::filesystem::path plot_directory;
+  CLI::App* plot_app = app.add_subcommand("plot", "draw the figures of a results directory");
+  plot_app->add_option("DIR", plot_directory, "a results directory")->required();
+
+  CLI::App* list_app =
+      app.add_subcommand("list", "list the diagrams, the blocks and every config key");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    app.exit(error);
+    return 2;  // command-line misuse, like a bad config
+  }
+  spdlog::set_level(spdlog::level::from_str(log_level));
+  spdlog::set_pattern("[%H:%M:%S] %^%l%$ %v");
+
+  if (graph_app->parsed()) return graph_command(graph);
+  if (plot_app->parsed()) return plot_command(plot_directory);
+  if (list_app->parsed()) return list_command();
+  return run_command(run);  // `cbbg` alone runs exp1 with the paper's defaults
+}

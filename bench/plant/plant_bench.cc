@@ -1,0 +1,186 @@
+// CPU cost of one 10 ms step of each robot plant under the PD law of SPEC 2.4 (zero-order
+// hold, 20 s trials from theta_b = 0.1744), and what the diagram adds to the Simbody plant:
+// the same Simbody model stepped by a plain loop that does the same work (read the state,
+// PD law, saturate, hold the torque, integrate 10 ms).
+
+#include <benchmark/benchmark.h>
+
+#include <ctime>
+#include <memory>
+#include <string>
+
+#include "bench/ratio_reporter.h"
+#include "framework/block_context.h"
+#include "framework/diagram_builder.h"
+#include "framework/primitives/zero_order_hold.h"
+#include "framework/simulator.h"
+#include "plant/analytic_plant.h"
+#include "plant/multibody_robot.h"
+#include "plant/plant_ports.h"
+#include "plant/robot_dynamics.h"
+#include "plant/simbody_plant.h"
+
+namespace cbbg::plant::bench {
+namespace {
+
+constexpr double kPeriod = 0.01;
+constexpr int kTrialTicks = 2000;  // 20 s
+
+double pd_action(const double* x) {
+  return 50.0 * x[kThetaB] + 10.0 * x[kThetaBDot] + (x[kPhiLeft] + x[kPhiRight]) / 2.0 +
+         (x[kPhiLeftDot] + x[kPhiRightDot]) / 2.0;
+}
+
+class PdLaw final : public Block {
+ public:
+  explicit PdLaw(std::string name) : Block(std::move(name)) {
+    const InputPort& state = declare_input_port("state", kStateSize);
+    declare_output_port(
+        "torque", kTorqueSize,
+        [&state](const BlockContext& context, VectorRef torque) {
+          torque.setConstant(pd_action(context.input(state).data()));
+        },
+        {&state});
+  }
+};
+
+// PD law -> zero-order hold -> plant, and a simulator stepping it tick by tick.
+template <typename Plant>
+class DiagramLoop {
+ public:
+  DiagramLoop() {
+    DiagramBuilder builder("robot");
+    plant_ = &builder.emplace<Plant>("plant", RobotParams{});
+    auto& law = builder.emplace<PdLaw>("law");
+    auto& hold = builder.emplace<ZeroOrderHold>("hold", kTorqueSize, kPeriod);
+    builder.connect(*plant_, "state", law, "state");
+    builder.connect(law, "torque", hold, "u");
+    builder.connect(hold, "y", *plant_, "torque");
+    diagram_ = builder.build();
+    simulator_ = std::make_unique<Simulator>(*diagram_, SimulatorOptions{RobotParams{}.accuracy});
+  }
+
+  void step() {
+    if (tick_ == kTrialTicks) {  // next trial
+      tick_ = 0;
+      simulator_->context().set_time(0.0);
+      plant_->reset(simulator_->context(), kDefaultInitialPitch);
+      simulator_->initialize();
+    }
+    ++tick_;
+    simulator_->advance_to(tick_ * kPeriod);
+  }
+  double pitch() const { return simulator_->context().continuous_state(*plant_)[0]; }
+
+ private:
+  std::unique_ptr<Diagram> diagram_;
+  Plant* plant_ = nullptr;
+  std::unique_ptr<Simulator> simulator_;
+  int tick_ = 0;
+};
+
+// The same Simbody model and the same work, without the framework.
+class PlainSimbodyLoop {
+ public:
+  PlainSimbodyLoop()
+      : params_(), run_(std::make_shared<const MultibodyRobot>(params_)), state_(kStateSize) {
+    restart();
+  }
+
+  void step() {
+    if (tick_ == kTrialTicks) restart();
+    const double a = pd_action(state_.data());
+    const Torques tau = saturate_torque(Torques(a, a), params_.torque_limit);
+    run_.set_torque(tau[0], tau[1]);
+    ++tick_;
+    run_.advance_to(tick_ * kPeriod);
+    run_.get_state(state_);
+  }
+  double pitch() const { return state_[kThetaB]; }
+
+ private:
+  void restart() {
+    tick_ = 0;
+    state_.setZero();
+    state_[kThetaB] = kDefaultInitialPitch;
+    run_.set_state(0.0, state_);
+  }
+
+  RobotParams params_;
+  MultibodyRobotRun run_;
+  Eigen::VectorXd state_;
+  int tick_ = 0;
+};
+
+template <typename Loop>
+void run_steps(benchmark::State& state, Loop& loop) {
+  for (auto _ : state) loop.step();  // one iteration = one 10 ms step
+  benchmark::DoNotOptimize(loop.pitch());
+}
+
+void BM_AnalyticPlantStep(benchmark::State& state) {
+  DiagramLoop<AnalyticPlant> loop;
+  run_steps(state, loop);
+}
+
+void BM_SimbodyPlantStep(benchmark::State& state) {
+  DiagramLoop<SimbodyPlant> loop;
+  run_steps(state, loop);
+}
+
+void BM_SimbodyPlainLoop(benchmark::State& state) {
+  PlainSimbodyLoop loop;
+  run_steps(state, loop);
+}
+
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+// The diagram and the plain loop in alternating slices of 100 steps within one benchmark,
+// so that both see the same machine load; counters give each one's CPU per step and the
+// ratio.
+void BM_SimbodyDiagramOverPlainLoop(benchmark::State& state) {
+  DiagramLoop<SimbodyPlant> diagram;
+  PlainSimbodyLoop plain;
+  constexpr int kSlice = 100;
+  double diagram_seconds = 0.0;
+  double plain_seconds = 0.0;
+  long slices = 0;
+  for (auto _ : state) {
+    const double start = thread_cpu_seconds();
+    for (int i = 0; i < kSlice; ++i) plain.step();
+    const double middle = thread_cpu_seconds();
+    for (int i = 0; i < kSlice; ++i) diagram.step();
+    const double end = thread_cpu_seconds();
+    plain_seconds += middle - start;
+    diagram_seconds += end - middle;
+    ++slices;
+  }
+  benchmark::DoNotOptimize(diagram.pitch() + plain.pitch());
+  const double steps = static_cast<double>(slices * kSlice);
+  state.counters["plain_us_per_step"] = 1e6 * plain_seconds / steps;
+  state.counters["diagram_us_per_step"] = 1e6 * diagram_seconds / steps;
+  state.counters["diagram_over_plain"] = diagram_seconds / plain_seconds;
+}
+
+BENCHMARK(BM_AnalyticPlantStep)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SimbodyPlantStep)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SimbodyPlainLoop)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SimbodyDiagramOverPlainLoop)->Unit(benchmark::kMillisecond)->MinTime(5.0);
+
+}  // namespace
+}  // namespace cbbg::plant::bench
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  cbbg::bench::RatioReporter reporter([](const std::string& name) -> std::string {
+    return name == "BM_SimbodyPlantStep" ? "BM_SimbodyPlainLoop" : "";
+  });
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}

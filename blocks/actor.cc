@@ -1,0 +1,104 @@
+#include "blocks/actor.h"
+
+#include <stdexcept>
+
+#include "blocks/parameter_checks.h"
+#include "framework/block_context.h"
+
+namespace cbbg::blocks {
+namespace {
+
+// Offsets of the stored previous tick after theta and phi(s_{t-1}).
+enum PreviousTick : int {
+  kSupervisorAction = 0,
+  kExplorationAction,
+  kActorAction,
+  kOmega,
+  kHasPrevious,
+  kPreviousTickSize
+};
+
+}  // namespace
+
+ActorRule parse_actor_rule(std::string_view text) {
+  if (text == "improved") return ActorRule::kImproved;
+  if (text == "weighted") return ActorRule::kWeighted;
+  throw std::invalid_argument("actor.rule must be improved or weighted; got '" +
+                              std::string(text) + "'");
+}
+
+std::string_view to_string(ActorRule rule) {
+  return rule == ActorRule::kWeighted ? "weighted" : "improved";
+}
+
+void ActorParams::validate() const {
+  check_positive("actor.alpha", alpha);
+  if (rule != ActorRule::kImproved && rule != ActorRule::kWeighted) {
+    throw std::invalid_argument("actor.rule must be improved or weighted; got the value " +
+                                std::to_string(static_cast<int>(rule)));
+  }
+}
+
+Actor::Actor(std::string name, int num_features, const ActorParams& params, double period)
+    : Block(std::move(name)), num_features_(num_features), params_(params) {
+  if (num_features < 1) {
+    throw std::invalid_argument("block '" + path() + "': the actor needs at least 1 feature; got " +
+                                std::to_string(num_features));
+  }
+  params_.validate();
+  check_period(period);
+  const int n = num_features_;
+  const InputPort& features = declare_input_port("features", n, "phi(s_t)");
+  const InputPort& td_error = declare_input_port("td_error", 1, "delta_{t-1}");
+  const InputPort& supervisor = declare_input_port("supervisor_action", 1, "a_S(t)");
+  const InputPort& exploration = declare_input_port("exploration_action", 1, "a_E(t)");
+  const InputPort& omega = declare_input_port("omega", 1, "omega(t)");
+  declare_discrete_state(Vector::Zero(2 * n + kPreviousTickSize));
+  declare_output_port(
+      "action", 1,
+      [n, &features](const BlockContext& context, VectorRef action) {
+        action[0] = context.discrete_state().head(n).dot(context.input(features));
+      },
+      {&features}, "a_A(t) = theta . phi(s_t)");
+  declare_periodic_update(period, 0.0, [this, n, &features, &td_error, &supervisor, &exploration,
+                                        &omega](BlockContext& context, VectorRef next) {
+    const auto state = context.discrete_state();
+    const auto previous = state.segment(2 * n, kPreviousTickSize);
+    const auto phi = context.input(features);
+    if (previous[kHasPrevious] != 0.0) {
+      const double delta = context.input(td_error)[0];
+      const double a_s = previous[kSupervisorAction];
+      const double a_e = previous[kExplorationAction];
+      const double a_a = previous[kActorAction];
+      const double w = previous[kOmega];
+      const double alpha = params_.alpha;
+      const double step = params_.rule == ActorRule::kImproved
+                               ? alpha * delta * (w * (a_e - a_s) + (a_s - a_a))
+                               : w * alpha * delta * (a_e - a_a) + (1.0 - w) * alpha * (a_s - a_a);
+      next.head(n) = state.head(n) + step * state.segment(n, n);
+    }
+    next.segment(n, n) = phi;
+    auto stored = next.segment(2 * n, kPreviousTickSize);
+    stored[kSupervisorAction] = context.input(supervisor)[0];
+    stored[kExplorationAction] = context.input(exploration)[0];
+    stored[kActorAction] = state.head(n).dot(phi);  // the a_A output at t, before learning
+    stored[kOmega] = context.input(omega)[0];
+    stored[kHasPrevious] = 1.0;
+    return EventStatus::succeeded();
+  });
+}
+
+void Actor::start_trial(Context& context) const {
+  const int n = num_features_;
+  context.discrete_state(*this).tail(n + kPreviousTickSize).setZero();
+}
+
+ConstVectorView Actor::weights(const Context& context) const {
+  return ConstVectorView(context.discrete_state(*this).data(), num_features_);
+}
+
+VectorView Actor::mutable_weights(Context& context) const {
+  return VectorView(context.discrete_state(*this).data(), num_features_);
+}
+
+}  // namespace cbbg::blocks

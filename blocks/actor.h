@@ -1,0 +1,71 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "framework/block.h"
+#include "framework/context.h"
+
+namespace cbbg::blocks {
+
+// Config key actor.rule: how the actor's weights learn (SPEC 2.11).
+enum class ActorRule {
+  kImproved,  // "improved": paper eq. 11, the TD error modulates the supervised error too
+  kWeighted,  // "weighted": paper eq. 7, Rosenstein & Barto's supervised actor-critic
+};
+
+// "improved" or "weighted"; anything else throws naming actor.rule.
+ActorRule parse_actor_rule(std::string_view text);
+std::string_view to_string(ActorRule rule);
+
+// Config keys actor.*.
+struct ActorParams {
+  double alpha = 0.1;                    // actor.alpha: learning rate, > 0
+  ActorRule rule = ActorRule::kImproved;  // actor.rule
+
+  // Throws naming the key unless alpha is finite and > 0 and rule is one of the two.
+  void validate() const;
+};
+
+/// Actor: the action network a_A = theta . phi(s) and its learning rule (SPEC 2.3, 2.11).
+///
+/// | port               | dir | size | meaning                                 |
+/// |--------------------|-----|------|-----------------------------------------|
+/// | features           | in  | n    | phi(s_t)                                |
+/// | td_error           | in  | 1    | delta_{t-1}, from the Critic            |
+/// | supervisor_action  | in  | 1    | a_S(t), the supervisor's action         |
+/// | exploration_action | in  | 1    | a_E(t), the sampler's action            |
+/// | omega              | in  | 1    | omega(t), the mixing factor             |
+/// | action             | out | 1    | a_A(t) = theta . phi(s_t)               |
+///
+/// "action" reads only the features, so the mixer's loop through the sampler is not
+/// algebraic. The periodic update at tick t learns from the transition s_{t-1} -> s_t with
+/// delta = delta_{t-1} and the values it stored at t-1 (phi, a_S, a_E, a_A, omega):
+///   improved: theta <- theta + alpha delta [omega (a_E - a_S) + (a_S - a_A)] phi
+///             (= alpha delta (a - a_A) phi with a the mixed action);
+///   weighted: theta <- theta + omega alpha delta (a_E - a_A) phi
+///                            + (1 - omega) alpha (a_S - a_A) phi
+///             (the supervised term does not depend on delta);
+/// then stores this tick's values. Nothing is learnt on the first tick of a trial. theta
+/// starts at 0; start_trial forgets the previous tick and keeps theta.
+/// Parameters: alpha = actor.alpha, rule = actor.rule, the period trial.period; n is the
+/// feature count.
+///
+/// Discrete state: [theta (n), phi(s_{t-1}) (n), a_S, a_E, a_A, omega, has_previous].
+class Actor final : public Block {
+ public:
+  Actor(std::string name, int num_features, const ActorParams& params, double period);
+
+  int num_features() const { return num_features_; }
+  // A new trial: forgets the previous tick, keeps theta.
+  void start_trial(Context& context) const;
+  // The learnt weights theta in `context`.
+  ConstVectorView weights(const Context& context) const;
+  VectorView mutable_weights(Context& context) const;
+
+ private:
+  int num_features_;
+  ActorParams params_;
+};
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,35 @@
+#include "blocks/boltzmann_sampler.h"
+
+#include <cmath>
+
+#include "blocks/parameter_checks.h"
+#include "framework/block_context.h"
+#include "framework/random.h"
+
+namespace cbbg::blocks {
+
+void SamplerParams::validate() const { check_positive("sampler.k_b", k_b); }
+
+BoltzmannSampler::BoltzmannSampler(std::string name, const SamplerParams& params, double period)
+    : Block(std::move(name)), params_(params) {
+  params_.validate();
+  check_period(period);
+  const InputPort& actor_action = declare_input_port("actor_action", 1, "a_A(t)");
+  const InputPort& temperature = declare_input_port("temperature", 1, "T(t)");
+  declare_discrete_state(Vector::Zero(1));
+  declare_output_port(
+      "action", 1,
+      [this, &actor_action, &temperature](const BlockContext& context, VectorRef action) {
+        const double deviation = std::sqrt(params_.k_b * context.input(temperature)[0] / 2.0);
+        action[0] = context.input(actor_action)[0] + deviation * context.discrete_state()[0];
+      },
+      {&actor_action, &temperature}, "a_E(t) ~ N(a_A, K_B T / 2)");
+  const UpdateFunction draw = [](BlockContext& context, VectorRef next) {
+    next[0] = draw_standard_normal(context.random_generator());
+    return EventStatus::succeeded();
+  };
+  declare_initialization_update(draw);
+  declare_periodic_update(period, 0.0, draw);
+}
+
+}  // namespace cbbg::blocks

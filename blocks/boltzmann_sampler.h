@@ -1,0 +1,39 @@
+#pragma once
+
+#include <string>
+
+#include "framework/block.h"
+
+namespace cbbg::blocks {
+
+// Config key sampler.k_b.
+struct SamplerParams {
+  // sampler.k_b: K_B, temperature to action variance. The default 1 reads the temperature in
+  // action units; the paper's literal Boltzmann constant 1.38e-23 is accepted too (SPEC 2.6).
+  double k_b = 1.0;
+
+  // Throws naming sampler.k_b unless it is finite and > 0.
+  void validate() const;
+};
+
+/// BoltzmannSampler: the basal ganglia's exploratory action (SPEC 2.6).
+///
+/// | port         | dir | size | meaning                        |
+/// |--------------|-----|------|--------------------------------|
+/// | actor_action | in  | 1    | a_A(t), from the Actor         |
+/// | temperature  | in  | 1    | T(t) >= 0, from the Tropism    |
+/// | action       | out | 1    | a_E(t) ~ N(a_A, K_B T / 2)     |
+///
+/// Equation: a_E = a_A + sqrt(K_B T / 2) eps, eps a standard normal held in the discrete
+/// state, drawn from the block's own generator by the initialization update (first tick)
+/// and by each periodic update (next tick). The Boltzmann law exp(-(a_E - a_A)^2 / (K_B T))
+/// is this normal. Parameters: K_B = sampler.k_b, the period trial.period.
+class BoltzmannSampler final : public Block {
+ public:
+  BoltzmannSampler(std::string name, const SamplerParams& params, double period);
+
+ private:
+  SamplerParams params_;
+};
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <string>
+
+#include "framework/block.h"
+#include "framework/block_context.h"
+#include "framework/context.h"
+
+namespace cbbg::blocks {
+
+// Config keys critic.*.
+struct CriticParams {
+  double beta = 0.1;    // critic.beta: learning rate, > 0
+  double gamma = 0.8;   // critic.gamma: discount, in (0, 1]
+  double lambda = 0.8;  // critic.lambda: trace decay, in [0, 1)
+
+  // Throws naming the key unless every value is finite and in its range.
+  void validate() const;
+};
+
+/// Critic: the value function V(s) = w . phi(s), learnt by TD(lambda) (SPEC 2.3, 2.10).
+///
+/// | port     | dir | size | meaning                                              |
+/// |----------|-----|------|------------------------------------------------------|
+/// | features | in  | n    | phi(s_t)                                             |
+/// | reward   | in  | 1    | r_{t-1}, the reward of the transition s_{t-1} -> s_t |
+/// | failed   | in  | 1    | 1 when s_t is terminal (the trial fails), else 0     |
+/// | value    | out | 1    | V(s_t) = w . phi(s_t)                                |
+/// | td_error | out | 1    | delta_{t-1}                                          |
+///
+/// Equations, at tick t, with the weights w before this tick's update:
+///   delta_{t-1} = r_{t-1} + gamma V'(s_t) - w . phi(s_{t-1}),
+///   V'(s_t) = 0 if failed else w . phi(s_t);  delta = 0 on the first tick of a trial.
+/// The periodic update then learns from that transition and remembers phi(s_t):
+///   z <- gamma lambda z + phi(s_{t-1});  w <- w + beta delta_{t-1} z.
+/// w starts at 0. start_trial clears z and the previous tick, keeping w.
+/// Parameters: beta = critic.beta, gamma = critic.gamma, lambda = critic.lambda, the period
+/// trial.period; n is the feature count (RbfFeatures::num_features).
+///
+/// Discrete state: [w (n), z (n), phi(s_{t-1}) (n), has_previous (1)].
+class Critic final : public Block {
+ public:
+  Critic(std::string name, int num_features, const CriticParams& params, double period);
+
+  int num_features() const { return num_features_; }
+  // A new trial: clears the eligibility trace and forgets the previous tick; keeps w.
+  void start_trial(Context& context) const;
+  // The learnt weights w in `context`.
+  ConstVectorView weights(const Context& context) const;
+  VectorView mutable_weights(Context& context) const;
+
+ private:
+  // delta_{t-1} from the context at tick t (0 without a previous tick).
+  double td_error(const BlockContext& context) const;
+
+  int num_features_;
+  CriticParams params_;
+  const InputPort* features_;
+  const InputPort* reward_;
+  const InputPort* failed_;
+};
+
+}  // namespace cbbg::blocks

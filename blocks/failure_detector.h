@@ -1,0 +1,37 @@
+#pragma once
+
+#include <string>
+
+#include "framework/block.h"
+
+namespace cbbg::blocks {
+
+// Config key trial.failure_angle.
+struct FailureDetectorParams {
+  double failure_angle = 0.5236;  // trial.failure_angle: |theta_b| beyond it fails, rad
+
+  // Throws naming trial.failure_angle unless it is finite and > 0.
+  void validate() const;
+};
+
+/// FailureDetector: ends the trial when the robot falls (SPEC 3).
+///
+/// | port     | dir | size | meaning                                  |
+/// |----------|-----|------|------------------------------------------|
+/// | measured | in  | 6    | the Sensors output (measured_signals.h)   |
+/// | failed   | out | 1    | 1 when the trial fails at this tick, else 0 |
+///
+/// Equation: failed = 1 if |theta_b| > failure_angle (strictly: at the angle it still
+/// stands) or any measured signal is not finite, else 0. The periodic update returns
+/// EventStatus::terminate when failed, so the simulation stops after this tick's updates
+/// (the learning blocks still learn from the failing transition).
+/// Parameters: failure_angle = trial.failure_angle, the period trial.period.
+class FailureDetector final : public Block {
+ public:
+  FailureDetector(std::string name, const FailureDetectorParams& params, double period);
+
+ private:
+  FailureDetectorParams params_;
+};
+
+}  // namespace cbbg::blocks

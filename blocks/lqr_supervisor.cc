@@ -1,0 +1,43 @@
+#include "blocks/lqr_supervisor.h"
+
+#include "blocks/measured_signals.h"
+#include "blocks/parameter_checks.h"
+#include "blocks/riccati.h"
+#include "framework/block_context.h"
+#include "plant/linearization.h"
+
+namespace cbbg::blocks {
+
+void LqrSupervisorParams::validate() const {
+  for (size_t i = 0; i < lqr_q.size(); ++i) {
+    check_non_negative("supervisor.lqr_q[" + std::to_string(i) + "]", lqr_q[i]);
+  }
+  check_positive("supervisor.lqr_r", lqr_r);
+}
+
+LqrSupervisor::LqrSupervisor(std::string name, const plant::RobotParams& robot,
+                             const LqrSupervisorParams& params)
+    : Block(std::move(name)) {
+  params.validate();
+  const plant::LinearModel model = plant::linearize_planar_upright(robot);
+  const Eigen::Vector4d q(params.lqr_q[0], params.lqr_q[1], params.lqr_q[2], params.lqr_q[3]);
+  const Eigen::MatrixXd Q = q.asDiagonal();
+  const Eigen::MatrixXd R = Eigen::MatrixXd::Constant(1, 1, params.lqr_r);
+  const Eigen::MatrixXd X = solve_continuous_riccati(model.A, model.B, Q, R);
+  gain_ = (model.B.transpose() * X / params.lqr_r).row(0);
+
+  const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");
+  declare_output_port(
+      "action", 1,
+      [this, &measured](const BlockContext& context, VectorRef action) {
+        const auto y = context.input(measured);
+        const Eigen::Vector4d x(y[kMeasuredThetaB],
+                                (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0,
+                                y[kMeasuredThetaBDot],
+                                (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0);
+        action[0] = -gain_.dot(x);
+      },
+      {&measured}, "a_S = -K x, the LQR torque");
+}
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <array>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "framework/block.h"
+#include "plant/robot_params.h"
+
+namespace cbbg::blocks {
+
+// Config keys supervisor.lqr_* of the LQR supervisor (supervisor.kind: lqr).
+struct LqrSupervisorParams {
+  // supervisor.lqr_q: diagonal state weights on (theta_b, phi, theta_b', phi'), each >= 0.
+  std::array<double, 4> lqr_q{100.0, 1.0, 1.0, 1.0};
+  double lqr_r = 1.0;  // supervisor.lqr_r: torque weight, > 0
+
+  // Throws naming the key unless every value is finite and in its range.
+  void validate() const;
+};
+
+/// LqrSupervisor: a drop-in replacement of PdSupervisor whose gains come from linear-quadratic
+/// regulation of the linearised robot instead of from config.
+///
+/// | port     | dir | size | meaning                                 |
+/// |----------|-----|------|-----------------------------------------|
+/// | measured | in  | 6    | the Sensors output (measured_signals.h)  |
+/// | action   | out | 1    | a_S, N m, both wheels (the plant saturates it) |
+///
+/// Equations: x = (theta_b, phi, theta_b', phi') with phi = (phi_l + phi_r) / 2,
+/// a_S = -K x, K = R^-1 B' X, X the stabilising solution of the continuous-time algebraic
+/// Riccati equation A' X + X A - X B R^-1 B' X + Q = 0 (riccati.h) for the robot linearised
+/// upright with both wheels driven alike (plant::linearize_planar_upright), Q = diag(q), R = r.
+/// K is computed once, at construction.
+/// Parameters: plant.* (the robot), q = supervisor.lqr_q, r = supervisor.lqr_r.
+class LqrSupervisor final : public Block {
+ public:
+  LqrSupervisor(std::string name, const plant::RobotParams& robot,
+                const LqrSupervisorParams& params);
+
+  // K, 1 x 4, on (theta_b, phi, theta_b', phi').
+  const Eigen::RowVector4d& gain() const { return gain_; }
+
+ private:
+  Eigen::RowVector4d gain_;
+};
+
+}  // namespace cbbg::blocks

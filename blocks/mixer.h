@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+
+#include "framework/block.h"
+
+namespace cbbg::blocks {
+
+/// Mixer: the action sent to the motors, between exploration and supervision (SPEC 2.8).
+///
+/// | port               | dir | size | meaning                     |
+/// |--------------------|-----|------|-----------------------------|
+/// | exploration_action | in  | 1    | a_E, from the sampler       |
+/// | supervisor_action  | in  | 1    | a_S, from the supervisor    |
+/// | omega              | in  | 1    | omega, from OmegaSchedule   |
+/// | action             | out | 1    | a, N m                      |
+///
+/// Equation: a = omega a_E + (1 - omega) a_S. The plant saturates the torque, not the mixer.
+/// No parameters.
+class Mixer final : public Block {
+ public:
+  explicit Mixer(std::string name);
+};
+
+}  // namespace cbbg::blocks

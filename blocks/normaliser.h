@@ -1,0 +1,37 @@
+#pragma once
+
+#include <string>
+
+#include "framework/block.h"
+
+namespace cbbg::blocks {
+
+// Config keys normaliser.*.
+struct NormaliserParams {
+  double scale_theta = 0.05817764;   // normaliser.scale_theta: n_theta, rad (pi/54)
+  double scale_dtheta = 0.05817764;  // normaliser.scale_dtheta: n_dtheta, rad/s (pi/54)
+  double saturation = 3.0;           // normaliser.saturation: the RBF grid's half-width
+
+  // Throws naming the key unless every value is finite and > 0.
+  void validate() const;
+};
+
+/// Normaliser: pitch and pitch rate in grid units, saturated to the RBF grid (SPEC 2.2).
+///
+/// | port     | dir | size | meaning                                  |
+/// |----------|-----|------|------------------------------------------|
+/// | measured | in  | 6    | the Sensors output (measured_signals.h)   |
+/// | x        | out | 2    | normalised (theta_b, theta_b')            |
+///
+/// Equations: x = clamp((theta_b / n_theta, theta_b' / n_dtheta), -S, S). Without the clamp
+/// the pitch rate leaves the grid and every feature vanishes. Parameters: n_theta =
+/// normaliser.scale_theta, n_dtheta = normaliser.scale_dtheta, S = normaliser.saturation.
+class Normaliser final : public Block {
+ public:
+  Normaliser(std::string name, const NormaliserParams& params);
+
+ private:
+  NormaliserParams params_;
+};
+
+}  // namespace cbbg::blocks

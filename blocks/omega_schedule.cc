@@ -1,0 +1,74 @@
+#include "blocks/omega_schedule.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "blocks/parameter_checks.h"
+#include "framework/block_context.h"
+
+namespace cbbg::blocks {
+
+OmegaMode parse_omega_mode(std::string_view text) {
+  if (text == "schedule") return OmegaMode::kSchedule;
+  if (text == "zero") return OmegaMode::kZero;
+  if (text == "one") return OmegaMode::kOne;
+  throw std::invalid_argument("omega.mode must be schedule, zero or one; got '" +
+                              std::string(text) + "'");
+}
+
+std::string_view to_string(OmegaMode mode) {
+  switch (mode) {
+    case OmegaMode::kZero:
+      return "zero";
+    case OmegaMode::kOne:
+      return "one";
+    case OmegaMode::kSchedule:
+      break;
+  }
+  return "schedule";
+}
+
+void OmegaParams::validate() const {
+  check_non_negative("omega.n2", n2);
+  check_positive("omega.n3", n3);
+  if (mode != OmegaMode::kSchedule && mode != OmegaMode::kZero && mode != OmegaMode::kOne) {
+    throw std::invalid_argument("omega.mode must be schedule, zero or one; got the value " +
+                                std::to_string(static_cast<int>(mode)));
+  }
+}
+
+OmegaSchedule::OmegaSchedule(std::string name, const OmegaParams& params, double period)
+    : Block(std::move(name)), params_(params) {
+  params_.validate();
+  check_period(period);
+  declare_discrete_state(Vector::Zero(1));
+  declare_output_port(
+      "omega", 1,
+      [this](const BlockContext& context, VectorRef omega) {
+        omega[0] = omega_at(context.discrete_state()[0]);
+      },
+      {}, "omega(t)");
+  declare_periodic_update(period, 0.0, [](BlockContext& context, VectorRef next) {
+    next[0] = context.discrete_state()[0] + 1.0;
+    return EventStatus::succeeded();
+  });
+}
+
+double OmegaSchedule::omega_at(double ticks) const {
+  switch (params_.mode) {
+    case OmegaMode::kZero:
+      return 0.0;
+    case OmegaMode::kOne:
+      return 1.0;
+    case OmegaMode::kSchedule:
+      break;
+  }
+  return std::max(0.0, 1.0 - std::exp(-(ticks - params_.n2) / params_.n3));
+}
+
+double OmegaSchedule::ticks(const Context& context) const {
+  return context.discrete_state(*this)[0];
+}
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "framework/block.h"
+#include "framework/context.h"
+
+namespace cbbg::blocks {
+
+// Config key omega.mode: where omega comes from.
+enum class OmegaMode {
+  kSchedule,  // "schedule": SPEC 2.7's exponential rise (the CB-BG arms)
+  kZero,      // "zero": omega = 0, the supervisor alone drives (cb_only)
+  kOne,       // "one": omega = 1, exploration alone drives (bg_only)
+};
+
+// "schedule", "zero" or "one"; anything else throws naming omega.mode.
+OmegaMode parse_omega_mode(std::string_view text);
+std::string_view to_string(OmegaMode mode);
+
+// Config keys omega.*.
+struct OmegaParams {
+  double n2 = 500.0;  // omega.n2: ticks of pure supervision before omega rises, >= 0
+  double n3 = 200.0;  // omega.n3: the rise's time constant in ticks, > 0
+  OmegaMode mode = OmegaMode::kSchedule;  // omega.mode
+
+  // Throws naming the key unless n2 is finite and >= 0, n3 finite and > 0, mode valid.
+  void validate() const;
+};
+
+/// OmegaSchedule: the coordination factor between cerebellum and basal ganglia (SPEC 2.7).
+///
+/// | port  | dir | size | meaning               |
+/// |-------|-----|------|-----------------------|
+/// | omega | out | 1    | omega(t), in [0, 1]   |
+///
+/// Equation (mode schedule): omega(t) = max(0, 1 - exp(-(t - n2) / n3)), t the ticks since
+/// learning began: a counter in the discrete state, advanced by each periodic update and
+/// NOT reset between trials. Modes zero and one output that constant.
+/// Parameters: n2 = omega.n2, n3 = omega.n3, mode = omega.mode, the period trial.period.
+class OmegaSchedule final : public Block {
+ public:
+  OmegaSchedule(std::string name, const OmegaParams& params, double period);
+
+  // omega after `ticks` ticks of learning.
+  double omega_at(double ticks) const;
+  // Ticks of learning so far in `context`.
+  double ticks(const Context& context) const;
+
+ private:
+  OmegaParams params_;
+};
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,32 @@
+#include "blocks/pd_supervisor.h"
+
+#include "blocks/measured_signals.h"
+#include "blocks/parameter_checks.h"
+#include "framework/block_context.h"
+
+namespace cbbg::blocks {
+
+void PdSupervisorParams::validate() const {
+  check_finite("supervisor.k_theta", k_theta);
+  check_finite("supervisor.k_dtheta", k_dtheta);
+  check_finite("supervisor.k_phi", k_phi);
+  check_finite("supervisor.k_dphi", k_dphi);
+}
+
+PdSupervisor::PdSupervisor(std::string name, const PdSupervisorParams& params)
+    : Block(std::move(name)), params_(params) {
+  params_.validate();
+  const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");
+  declare_output_port(
+      "action", 1,
+      [this, &measured](const BlockContext& context, VectorRef action) {
+        const auto y = context.input(measured);
+        action[0] = params_.k_theta * y[kMeasuredThetaB] +
+                    params_.k_dtheta * y[kMeasuredThetaBDot] +
+                    params_.k_phi * (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0 +
+                    params_.k_dphi * (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
+      },
+      {&measured}, "a_S, the supervisor's torque");
+}
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <string>
+
+#include "framework/block.h"
+
+namespace cbbg::blocks {
+
+// Config keys supervisor.* of the PD supervisor (supervisor.kind: pd).
+struct PdSupervisorParams {
+  double k_theta = 50.0;  // supervisor.k_theta: N m / rad
+  double k_dtheta = 10.0;  // supervisor.k_dtheta: N m s / rad
+  double k_phi = 1.0;     // supervisor.k_phi: N m / rad
+  double k_dphi = 1.0;    // supervisor.k_dphi: N m s / rad
+
+  // Throws naming the key unless every gain is finite.
+  void validate() const;
+};
+
+/// PdSupervisor: the cerebellum's target action, a PD law on pitch and wheel angle (SPEC 2.4).
+///
+/// | port     | dir | size | meaning                                 |
+/// |----------|-----|------|-----------------------------------------|
+/// | measured | in  | 6    | the Sensors output (measured_signals.h)  |
+/// | action   | out | 1    | a_S, N m (the plant saturates it)        |
+///
+/// Equation: a_S = k_theta theta_b + k_dtheta theta_b' + k_phi (phi_l + phi_r) / 2
+///                 + k_dphi (phi_l' + phi_r') / 2.
+/// Parameters: supervisor.k_theta, supervisor.k_dtheta, supervisor.k_phi, supervisor.k_dphi.
+class PdSupervisor final : public Block {
+ public:
+  PdSupervisor(std::string name, const PdSupervisorParams& params);
+
+ private:
+  PdSupervisorParams params_;
+};
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "framework/block.h"
+
+namespace cbbg::blocks {
+
+// Config keys rbf.*.
+struct RbfParams {
+  // rbf.centres: the grid's coordinates along each axis; the units sit on centres x centres.
+  std::vector<double> centres{-3.0, -2.0, -1.0, 0.0, 1.0, 2.0, 3.0};
+  double width = 0.5;  // rbf.width: b, the Gaussian width of every unit, in grid units
+
+  // Throws naming the key unless centres is non-empty, finite and strictly increasing and
+  // width is finite and > 0.
+  void validate() const;
+};
+
+/// RbfFeatures: the Gaussian radial-basis features of the critic and the actor (SPEC 2.3).
+///
+/// | port     | dir | size | meaning                                  |
+/// |----------|-----|------|------------------------------------------|
+/// | x        | in  | 2    | normalised (theta_b, theta_b')            |
+/// | features | out | m^2  | phi(x), unit k = i m + j at (c_i, c_j)    |
+///
+/// Equations: phi_k(x) = exp(-((x_0 - c_i)^2 + (x_1 - c_j)^2) / (2 b^2)), k = i m + j, for
+/// i, j in [0, m): pitch picks the row i, pitch rate the column j. Since V = w . phi and
+/// a_A = theta . phi, phi is also the gradient of both with respect to their weights.
+/// Parameters: c = rbf.centres (m of them), b = rbf.width.
+class RbfFeatures final : public Block {
+ public:
+  RbfFeatures(std::string name, const RbfParams& params);
+
+  // m^2, the size of the "features" port.
+  int num_features() const;
+
+ private:
+  RbfParams params_;
+  double inverse_two_width_squared_;
+};
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <string>
+
+#include "framework/block.h"
+#include "framework/context.h"
+
+namespace cbbg::blocks {
+
+// Config keys reward.*.
+struct RewardParams {
+  double a1 = 10.0;  // reward.a1: weight of theta_b in the sliding surface, 1/rad
+  double a2 = 1.0;   // reward.a2: weight of theta_b', s/rad
+
+  // Throws naming the key unless both are finite.
+  void validate() const;
+};
+
+/// Reward: the sliding-surface reward of SPEC 2.9.
+///
+/// | port     | dir | size | meaning                                              |
+/// |----------|-----|------|------------------------------------------------------|
+/// | measured | in  | 6    | the Sensors output (measured_signals.h)               |
+/// | failed   | in  | 1    | 1 when the trial fails at this tick, else 0           |
+/// | reward   | out | 1    | r_{t-1}, the reward of the transition s_{t-1} -> s_t  |
+///
+/// Equations: s(t) = a1 theta_b + a2 theta_b';
+///   r_{t-1} = -1 if failed, else 0 if s(t)^2 <= s(t-1)^2, else -1;
+/// 0 on the first tick of a trial without failure (there is no transition yet). The
+/// periodic update remembers s(t). start_trial forgets it.
+/// Parameters: a1 = reward.a1, a2 = reward.a2, the period trial.period.
+///
+/// Discrete state: [s(t-1), has_previous].
+class Reward final : public Block {
+ public:
+  Reward(std::string name, const RewardParams& params, double period);
+
+  // A new trial: forgets the previous tick's s.
+  void start_trial(Context& context) const;
+
+ private:
+  RewardParams params_;
+};
+
+}  // namespace cbbg::blocks

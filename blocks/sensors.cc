@@ -1,0 +1,68 @@
+#include "blocks/sensors.h"
+
+#include <cmath>
+
+#include "blocks/parameter_checks.h"
+#include "framework/block_context.h"
+#include "framework/random.h"
+#include "plant/plant_ports.h"
+
+namespace cbbg::blocks {
+namespace {
+
+// Plant state index of each measured signal.
+constexpr std::array<int, kMeasuredSize> kPlantIndex = {
+    plant::kThetaB,   plant::kThetaBDot,   plant::kPhiLeft,
+    plant::kPhiRight, plant::kPhiLeftDot, plant::kPhiRightDot};
+
+}  // namespace
+
+void SensorsParams::validate() const {
+  for (int i = 0; i < kMeasuredSize; ++i) {
+    const auto index = static_cast<size_t>(i);
+    check_non_negative("sensors.noise_std[" + std::to_string(i) + "]", noise_std[index]);
+    check_non_negative("sensors.quantisation[" + std::to_string(i) + "]", quantisation[index]);
+  }
+}
+
+Sensors::Sensors(std::string name, const SensorsParams& params, double period)
+    : Block(std::move(name)), params_(params) {
+  params_.validate();
+  check_period(period);
+  const InputPort& plant_state =
+      declare_input_port("plant_state", plant::kStateSize, "plant state (plant/plant_ports.h)");
+  declare_discrete_state(Vector::Zero(kMeasuredSize));
+  declare_output_port(
+      "measured", kMeasuredSize,
+      [this, &plant_state](const BlockContext& context, VectorRef measured) {
+        const auto state = context.input(plant_state);
+        const auto noise = context.discrete_state();
+        for (int i = 0; i < kMeasuredSize; ++i) {
+          const auto index = static_cast<size_t>(i);
+          double value = state[kPlantIndex[index]] + params_.noise_std[index] * noise[i];
+          const double step = params_.quantisation[index];
+          if (step > 0.0) value = step * std::round(value / step);
+          measured[i] = value;
+        }
+      },
+      {&plant_state}, "theta_b, theta_b', phi_l, phi_r, phi_l', phi_r'");
+  const UpdateFunction draw = [this](BlockContext& context, VectorRef next) {
+    draw_noise(context.random_generator(), next);
+    return EventStatus::succeeded();
+  };
+  declare_initialization_update(draw);
+  declare_periodic_update(period, 0.0, draw);
+}
+
+void Sensors::draw_noise(RandomGenerator& generator, VectorRef noise) const {
+  for (int i = 0; i < kMeasuredSize; ++i) {
+    noise[i] = params_.noise_std[static_cast<size_t>(i)] > 0.0 ? draw_standard_normal(generator)
+                                                                : 0.0;
+  }
+}
+
+void Sensors::start_trial(Context& context) const {
+  draw_noise(context.random_generator(*this), context.discrete_state(*this));
+}
+
+}  // namespace cbbg::blocks

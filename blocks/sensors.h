@@ -1,0 +1,49 @@
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "blocks/measured_signals.h"
+#include "framework/block.h"
+#include "framework/context.h"
+
+namespace cbbg::blocks {
+
+// Config keys sensors.*: per-signal noise and quantisation, in the order of the "measured"
+// port (theta_b, theta_b', phi_l, phi_r, phi_l', phi_r'). Zero turns either off (default).
+struct SensorsParams {
+  std::array<double, kMeasuredSize> noise_std{};     // sensors.noise_std: Gaussian std
+  std::array<double, kMeasuredSize> quantisation{};  // sensors.quantisation: step
+
+  // Throws naming the key (e.g. "sensors.noise_std[1]") unless every value is finite, >= 0.
+  void validate() const;
+};
+
+/// Sensors: the plant state to the signals the controller measures (SPEC 2.1).
+///
+/// | port        | dir | size | meaning                                                  |
+/// |-------------|-----|------|----------------------------------------------------------|
+/// | plant_state | in  | 10   | plant state, plant/plant_ports.h                         |
+/// | measured    | out | 6    | theta_b, theta_b', phi_l, phi_r, phi_l', phi_r' (rad, s) |
+///
+/// Equations, per signal i taken from the plant state x:
+///   y_i = Q_i(x_i + sigma_i n_i),   Q_i(v) = q_i round(v / q_i) if q_i > 0, else v,
+/// with n_i a standard normal held in the discrete state: drawn by the initialization update
+/// for the first tick and by each periodic update for the next, from the block's own
+/// generator (only for signals with sigma_i > 0). Parameters: sigma = sensors.noise_std,
+/// q = sensors.quantisation (both off by default), the period trial.period.
+class Sensors final : public Block {
+ public:
+  Sensors(std::string name, const SensorsParams& params, double period);
+
+  // A new trial: draws fresh noise, so it does not reuse the last draw of the previous one.
+  void start_trial(Context& context) const;
+
+ private:
+  // Writes fresh noise samples n_i into `noise` (size 6).
+  void draw_noise(RandomGenerator& generator, VectorRef noise) const;
+
+  SensorsParams params_;
+};
+
+}  // namespace cbbg::blocks

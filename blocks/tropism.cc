@@ -1,0 +1,36 @@
+#include "blocks/tropism.h"
+
+#include <cmath>
+
+#include "blocks/parameter_checks.h"
+#include "framework/block_context.h"
+
+namespace cbbg::blocks {
+
+void TropismParams::validate() const {
+  check_positive("tropism.k1", k1);
+  check_finite("tropism.k2", k2);
+}
+
+Tropism::Tropism(std::string name, const TropismParams& params)
+    : Block(std::move(name)), params_(params) {
+  params_.validate();
+  k1_index_ = declare_parameter("k1", Vector::Constant(1, params_.k1));
+  const InputPort& value = declare_input_port("value", 1, "V(s_t)");
+  declare_output_port(
+      "temperature", 1,
+      [this, &value](const BlockContext& context, VectorRef temperature) {
+        const double k1 = context.parameter(k1_index_)[0];
+        temperature[0] = k1 / (1.0 + std::exp(params_.k2 * context.input(value)[0]));
+      },
+      {&value}, "T = k1 / (1 + exp(k2 V))");
+}
+
+void Tropism::set_k1(Context& context, double k1) const {
+  check_positive("tropism.k1", k1);
+  context.set_parameter(*this, "k1", Vector::Constant(1, k1));
+}
+
+double Tropism::k1(const Context& context) const { return context.parameter(*this, "k1")[0]; }
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <string>
+
+#include "framework/block.h"
+#include "framework/context.h"
+
+namespace cbbg::blocks {
+
+// Config keys tropism.*.
+struct TropismParams {
+  double k1 = 10.0;  // tropism.k1: the annealing factor, > 0 (the context parameter's default)
+  double k2 = 0.1;   // tropism.k2: how strongly a high value cools the temperature
+
+  // Throws naming the key unless k1 is finite and > 0 and k2 is finite.
+  void validate() const;
+};
+
+/// Tropism: the exploration temperature from the critic's value (SPEC 2.5).
+///
+/// | port        | dir | size | meaning                       |
+/// |-------------|-----|------|-------------------------------|
+/// | value       | in  | 1    | V(s_t), from the Critic       |
+/// | temperature | out | 1    | T                             |
+///
+/// Equation: T = k1 / (1 + exp(k2 V)): high value, low temperature.
+/// Parameters: k1 is the context parameter "k1" (default tropism.k1), so the annealing
+/// schedule changes it between trials without rebuilding (set_k1); k2 = tropism.k2.
+class Tropism final : public Block {
+ public:
+  Tropism(std::string name, const TropismParams& params);
+
+  // Sets k1 in `context` for the next trials; throws naming tropism.k1 unless finite, > 0.
+  void set_k1(Context& context, double k1) const;
+  double k1(const Context& context) const;
+
+ private:
+  TropismParams params_;
+  int k1_index_;
+};
+
+}  // namespace cbbg::blocks

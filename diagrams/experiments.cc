@@ -1,0 +1,169 @@
+#include "diagrams/experiments.h"
+
+#include <atomic>
+#include <charconv>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+namespace cbbg::diagrams {
+namespace {
+
+void append_number(std::string& out, double value) {
+  char buffer[32];
+  out.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+// Appends the decimated telemetry of the trial just run to `out`.
+void append_steps(const SeedRun& run, int trial, const SignalLog& telemetry, long long decimation,
+                  std::string& out) {
+  if (decimation <= 0) return;
+  static constexpr int kColumns[] = {kTelemetryThetaB,
+                                     kTelemetryThetaBDot,
+                                     kTelemetryPhiLeft,
+                                     kTelemetryPhiRight,
+                                     kTelemetrySupervisorAction,
+                                     kTelemetryActorAction,
+                                     kTelemetryExplorationAction,
+                                     kTelemetryAction,
+                                     kTelemetryOmega,
+                                     kTelemetryValue,
+                                     kTelemetryTdError,
+                                     kTelemetryTemperature,
+                                     kTelemetryReward};
+  const std::string prefix =
+      run.arm + "," + std::to_string(run.seed) + "," + std::to_string(trial) + ",";
+  for (int k = 0; k < telemetry.num_samples(); k += static_cast<int>(decimation)) {
+    out += prefix;
+    append_number(out, telemetry.times()[static_cast<std::size_t>(k)]);
+    const auto sample = telemetry.sample(k);
+    for (const int column : kColumns) {
+      out += ',';
+      append_number(out, sample[column]);
+    }
+    out += '\n';
+  }
+}
+
+// k1 of `trial` under the annealing schedule (steps sorted by from_trial, the first at 1).
+double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial) {
+  double k1 = schedule.front().k1;
+  for (const auto& step : schedule) {
+    if (step.from_trial <= trial) k1 = step.k1;
+  }
+  return k1;
+}
+
+void run_until_success(const config::Config& config, SeedRun& run) {
+  const ControllerDiagram controller = build_controller_diagram(run.arm, config);
+  const double period = config.number("trial.period");
+  TrialRunner runner(controller, static_cast<std::uint64_t>(run.seed), period);
+  const long long max_trials = config.integer("max_trials");
+  const double k1 = config.number("tropism.k1");
+  for (int trial = 1; trial <= max_trials; ++trial) {
+    TrialRecord record{
+        trial, k1,
+        runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"))};
+    append_steps(run, trial, runner.telemetry(), config.integer("log.decimation"), run.steps_csv);
+    run.trials.push_back(record);
+    if (record.outcome.status == TrialStatus::kSuccess) {
+      run.succeeded = true;
+      break;
+    }
+    ++run.failures_before_success;
+  }
+}
+
+// exp2: trial 1 coordinated by the cerebellum, then operant learning alone with annealing.
+void run_annealing(const config::Config& config, SeedRun& run) {
+  const double period = config.number("trial.period");
+  const double theta0 = config.number("trial.theta0");
+  const double duration = config.number("trial.duration");
+  const auto& schedule = config.annealing("annealing");
+  const ControllerDiagram coordinated = build_controller_diagram("cbbg", config);
+  const ControllerDiagram operant = build_controller_diagram("bg_only", config);
+  TrialRunner first(coordinated, static_cast<std::uint64_t>(run.seed), period);
+  coordinated.tropism->set_k1(first.context(), annealed_k1(schedule, 1));
+  TrialRecord record{1, annealed_k1(schedule, 1), first.run_trial(theta0, duration)};
+  append_steps(run, 1, first.telemetry(), config.integer("log.decimation"), run.steps_csv);
+  run.trials.push_back(record);
+
+  // Same seed, other diagram: the block paths differ, so the random streams do too.
+  TrialRunner later(operant, static_cast<std::uint64_t>(run.seed), period);
+  operant.critic->mutable_weights(later.context()) = coordinated.critic->weights(first.context());
+  operant.actor->mutable_weights(later.context()) = coordinated.actor->weights(first.context());
+  for (int trial = 2; trial <= config.integer("exp2.trials"); ++trial) {
+    const double k1 = annealed_k1(schedule, trial);
+    operant.tropism->set_k1(later.context(), k1);
+    TrialRecord next{trial, k1, later.run_trial(theta0, duration)};
+    append_steps(run, trial, later.telemetry(), config.integer("log.decimation"), run.steps_csv);
+    run.trials.push_back(next);
+  }
+  for (const auto& trial : run.trials) {
+    if (trial.outcome.status == TrialStatus::kSuccess && !run.succeeded) {
+      run.succeeded = true;
+      run.failures_before_success = trial.trial - 1;
+    }
+  }
+  if (!run.succeeded) run.failures_before_success = static_cast<int>(run.trials.size());
+}
+
+}  // namespace
+
+const char* steps_csv_header() {
+  return "arm,seed,trial,t,theta_b,dtheta_b,phi_l,phi_r,a_S,a_A,a_E,a,omega,V,delta,T,reward\n";
+}
+
+ExperimentResults run_experiment(const config::Config& config, int jobs,
+                                 const ProgressCallback& progress) {
+  ExperimentResults results;
+  results.experiment = config.text("experiment");
+  if (results.experiment == "exp1") {
+    results.arms = config.names("arms");
+  } else if (results.experiment == "exp2") {
+    results.arms = {"cbbg"};
+  } else {
+    results.arms = {results.experiment};
+  }
+  for (long long k = 0; k < config.integer("seeds"); ++k) {
+    results.seeds.push_back(config.integer("seed") + k);
+  }
+  for (const auto& arm : results.arms) {
+    for (const long long seed : results.seeds) {
+      SeedRun run;
+      run.arm = arm;
+      run.seed = seed;
+      results.runs.push_back(std::move(run));
+    }
+  }
+
+  // Workers take tasks in index order; each writes only its own slot.
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto work = [&]() {
+    for (std::size_t task = next++; task < results.runs.size(); task = next++) {
+      try {
+        SeedRun& run = results.runs[task];
+        if (results.experiment == "exp2") {
+          run_annealing(config, run);
+        } else {
+          run_until_success(config, run);
+        }
+        if (progress) progress(run);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next = results.runs.size();  // stop handing out tasks
+      }
+    }
+  };
+  std::vector<std::thread> workers;
+  for (int j = 1; j < std::max(jobs, 1); ++j) workers.emplace_back(work);
+  work();
+  for (auto& worker : workers) worker.join();
+  if (failure) std::rethrow_exception(failure);
+  return results;
+}
+
+}  // namespace cbbg::diagrams

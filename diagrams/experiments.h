@@ -1,0 +1,57 @@
+#pragma once
+// The experiments of SPEC section 3, over many seeds, in parallel threads. Each (arm, seed)
+// task builds its own diagram and context, and results land in a slot fixed by the task's
+// index, so they are the same whatever the number of threads.
+//
+//   exp1             per arm and seed: trials until the first success (or max_trials)
+//   exp2             per seed: one trial of cbbg, then bg_only (omega = 1) with the weights
+//                    learnt so far and k1 from the annealing schedule, for exp2.trials trials
+//   <diagram name>   exp1's protocol for that one arm
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "config/config.h"
+#include "diagrams/trial_runner.h"
+
+namespace cbbg::diagrams {
+
+struct TrialRecord {
+  int trial = 0;  // from 1
+  double k1 = 0.0;
+  TrialOutcome outcome;
+};
+
+struct SeedRun {
+  std::string arm;
+  long long seed = 0;
+  std::vector<TrialRecord> trials;
+  // exp1: failed or diverged trials before the first success; all of them if none succeeded.
+  int failures_before_success = 0;
+  bool succeeded = false;
+  // Telemetry rows (steps.csv, without the header), every log.decimation-th tick.
+  std::string steps_csv;
+};
+
+struct ExperimentResults {
+  std::string experiment;  // exp1, exp2 or a diagram name
+  std::vector<std::string> arms;
+  std::vector<long long> seeds;
+  std::vector<SeedRun> runs;  // arm-major: runs[a * seeds.size() + s]
+  const SeedRun& run(std::size_t arm, std::size_t seed) const {
+    return runs[arm * seeds.size() + seed];
+  }
+};
+
+// Called after each finished (arm, seed), from the worker thread that ran it.
+using ProgressCallback = std::function<void(const SeedRun&)>;
+
+// Runs the experiment the config names with `jobs` threads (>= 1).
+ExperimentResults run_experiment(const config::Config& config, int jobs,
+                                 const ProgressCallback& progress = {});
+
+// The header of steps.csv.
+const char* steps_csv_header();
+
+}  // namespace cbbg::diagrams

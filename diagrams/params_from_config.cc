@@ -1,0 +1,153 @@
+#include "diagrams/params_from_config.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace cbbg::diagrams {
+namespace {
+
+// A params struct's validate() names the key; the config layer reports it as a ConfigError.
+template <typename Params>
+Params validated(Params params) {
+  try {
+    params.validate();
+  } catch (const std::invalid_argument& error) {
+    throw config::ConfigError(error.what());
+  }
+  return params;
+}
+
+template <std::size_t N>
+std::array<double, N> fixed_list(const std::vector<double>& values) {
+  std::array<double, N> result{};
+  std::copy_n(values.begin(), std::min(N, values.size()), result.begin());
+  return result;
+}
+
+}  // namespace
+
+plant::RobotParams robot_params(const config::Config& c) {
+  plant::RobotParams p;
+  p.wheel_mass = c.number("plant.wheel_mass");
+  p.body_mass = c.number("plant.body_mass");
+  p.wheel_radius = c.number("plant.wheel_radius");
+  p.track_width = c.number("plant.track_width");
+  p.com_height = c.number("plant.com_height");
+  p.wheel_inertia = c.number("plant.wheel_inertia");
+  p.body_pitch_inertia = c.number("plant.body_pitch_inertia");
+  p.body_yaw_inertia = c.number("plant.body_yaw_inertia");
+  p.gravity = c.number("plant.gravity");
+  p.wheel_ground_friction = c.number("plant.wheel_ground_friction");
+  p.axle_friction = c.number("plant.axle_friction");
+  p.torque_limit = c.number("plant.torque_limit");
+  p.accuracy = c.number("plant.accuracy");
+  return validated(p);
+}
+
+blocks::SensorsParams sensors_params(const config::Config& c) {
+  blocks::SensorsParams p;
+  p.noise_std = fixed_list<blocks::kMeasuredSize>(c.numbers("sensors.noise_std"));
+  p.quantisation = fixed_list<blocks::kMeasuredSize>(c.numbers("sensors.quantisation"));
+  return validated(p);
+}
+
+blocks::NormaliserParams normaliser_params(const config::Config& c) {
+  blocks::NormaliserParams p;
+  p.scale_theta = c.number("normaliser.scale_theta");
+  p.scale_dtheta = c.number("normaliser.scale_dtheta");
+  p.saturation = c.number("normaliser.saturation");
+  return validated(p);
+}
+
+blocks::RbfParams rbf_params(const config::Config& c) {
+  blocks::RbfParams p;
+  p.centres = c.numbers("rbf.centres");
+  p.width = c.number("rbf.width");
+  return validated(p);
+}
+
+blocks::PdSupervisorParams pd_supervisor_params(const config::Config& c) {
+  blocks::PdSupervisorParams p;
+  p.k_theta = c.number("supervisor.k_theta");
+  p.k_dtheta = c.number("supervisor.k_dtheta");
+  p.k_phi = c.number("supervisor.k_phi");
+  p.k_dphi = c.number("supervisor.k_dphi");
+  return validated(p);
+}
+
+blocks::CriticParams critic_params(const config::Config& c) {
+  blocks::CriticParams p;
+  p.beta = c.number("critic.beta");
+  p.gamma = c.number("critic.gamma");
+  p.lambda = c.number("critic.lambda");
+  return validated(p);
+}
+
+blocks::ActorParams actor_params(const config::Config& c) {
+  blocks::ActorParams p;
+  p.alpha = c.number("actor.alpha");
+  try {
+    p.rule = blocks::parse_actor_rule(c.text("actor.rule"));
+  } catch (const std::invalid_argument& error) {
+    throw config::ConfigError(error.what());
+  }
+  return validated(p);
+}
+
+blocks::TropismParams tropism_params(const config::Config& c) {
+  blocks::TropismParams p;
+  p.k1 = c.number("tropism.k1");
+  p.k2 = c.number("tropism.k2");
+  return validated(p);
+}
+
+blocks::SamplerParams sampler_params(const config::Config& c) {
+  blocks::SamplerParams p;
+  p.k_b = c.number("sampler.k_b");
+  return validated(p);
+}
+
+blocks::EntropyParams entropy_params(const config::Config& c) {
+  blocks::EntropyParams p;
+  p.k_b = c.number("sampler.k_b");
+  return validated(p);
+}
+
+blocks::OmegaParams omega_params(const config::Config& c, blocks::OmegaMode mode) {
+  blocks::OmegaParams p;
+  p.n2 = c.number("omega.n2");
+  p.n3 = c.number("omega.n3");
+  p.mode = mode;
+  return validated(p);
+}
+
+blocks::RewardParams reward_params(const config::Config& c) {
+  blocks::RewardParams p;
+  p.a1 = c.number("reward.a1");
+  p.a2 = c.number("reward.a2");
+  return validated(p);
+}
+
+blocks::FailureDetectorParams failure_params(const config::Config& c) {
+  blocks::FailureDetectorParams p;
+  p.failure_angle = c.number("trial.failure_angle");
+  return validated(p);
+}
+
+void validate_all(const config::Config& c) {
+  robot_params(c);
+  sensors_params(c);
+  normaliser_params(c);
+  rbf_params(c);
+  pd_supervisor_params(c);
+  critic_params(c);
+  actor_params(c);
+  tropism_params(c);
+  sampler_params(c);
+  entropy_params(c);
+  omega_params(c, blocks::OmegaMode::kSchedule);
+  reward_params(c);
+  failure_params(c);
+}
+
+}  // namespace cbbg::diagrams

@@ -1,0 +1,133 @@
+#include "diagrams/results_writer.h"
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+namespace cbbg::diagrams {
+namespace {
+
+constexpr PaperReference kPaper[] = {{"cbbg", 0}, {"bg_only", 8}};
+
+std::string number(double value) {
+  if (!std::isfinite(value)) return "nan";
+  char buffer[32];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+std::string json_number(double value) { return std::isfinite(value) ? number(value) : "null"; }
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+double median(std::vector<int> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+}  // namespace
+
+std::string trials_csv(const ExperimentResults& results) {
+  std::string csv =
+      "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,final_theta,status\n";
+  for (const SeedRun& run : results.runs) {
+    for (const TrialRecord& record : run.trials) {
+      const TrialOutcome& outcome = record.outcome;
+      csv += run.arm + "," + std::to_string(run.seed) + "," + std::to_string(record.trial) + "," +
+             (outcome.status == TrialStatus::kSuccess ? "0" : "1") + "," +
+             std::to_string(outcome.steps) + "," + number(outcome.mean_temperature) + "," +
+             number(outcome.mean_entropy) + "," + number(outcome.final_theta) + "," +
+             to_string(outcome.status) + "\n";
+    }
+  }
+  return csv;
+}
+
+std::string summary_json(const ExperimentResults& results, const config::Config& config) {
+  std::ostringstream json;
+  json << "{\n  \"experiment\": \"" << results.experiment << "\",\n";
+  json << "  \"plant\": \"" << config.text("plant.kind") << "\",\n";
+  json << "  \"max_trials\": " << config.integer("max_trials") << ",\n";
+  json << "  \"seeds\": [";
+  for (std::size_t s = 0; s < results.seeds.size(); ++s)
+    json << (s ? ", " : "") << results.seeds[s];
+  json << "],\n  \"arms\": {";
+  for (std::size_t a = 0; a < results.arms.size(); ++a) {
+    std::vector<int> failures;
+    std::string succeeded;
+    int num_succeeded = 0;
+    for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+      const SeedRun& run = results.run(a, s);
+      failures.push_back(run.failures_before_success);
+      succeeded += std::string(s ? ", " : "") + (run.succeeded ? "true" : "false");
+      num_succeeded += run.succeeded ? 1 : 0;
+    }
+    json << (a ? "," : "") << "\n    \"" << results.arms[a] << "\": {\n";
+    json << "      \"failures_before_success\": [";
+    for (std::size_t s = 0; s < failures.size(); ++s) json << (s ? ", " : "") << failures[s];
+    json << "],\n      \"succeeded\": [" << succeeded << "],\n";
+    json << "      \"num_succeeded\": " << num_succeeded << ",\n";
+    json << "      \"median\": " << json_number(median(failures)) << ",\n";
+    json << "      \"min\": " << *std::min_element(failures.begin(), failures.end()) << ",\n";
+    json << "      \"max\": " << *std::max_element(failures.begin(), failures.end()) << "\n    }";
+  }
+  json << "\n  },\n  \"paper\": {";
+  for (std::size_t p = 0; p < std::size(kPaper); ++p) {
+    json << (p ? ", " : "") << "\"" << kPaper[p].arm << "\": " << kPaper[p].failures;
+  }
+  json << "},\n  \"note\": \"failures_before_success counts failed or diverged trials before the "
+          "first success; a seed that never succeeded counts all its trials\"\n}\n";
+  return json.str();
+}
+
+void write_result_files(const ExperimentResults& results, const config::Config& config,
+                        const std::filesystem::path& directory) {
+  write_text(directory / "config.yaml", config.to_yaml());
+  write_text(directory / "summary.json", summary_json(results, config));
+  write_text(directory / "trials.csv", trials_csv(results));
+  if (config.integer("log.decimation") > 0) {
+    std::ofstream steps(directory / "steps.csv", std::ios::binary | std::ios::trunc);
+    steps << steps_csv_header();
+    for (const SeedRun& run : results.runs) steps << run.steps_csv;
+    if (!steps)
+      throw std::runtime_error("cannot write '" + (directory / "steps.csv").string() + "'");
+  }
+}
+
+StagingDirectory::StagingDirectory(std::filesystem::path target) : target_(std::move(target)) {
+  if (target_.filename().empty()) target_ = target_.parent_path();
+  staging_ = target_;
+  staging_ += ".partial-" + std::to_string(::getpid());
+  std::filesystem::remove_all(staging_);
+  if (!target_.parent_path().empty()) std::filesystem::create_directories(target_.parent_path());
+  std::filesystem::create_directory(staging_);
+}
+
+StagingDirectory::~StagingDirectory() {
+  if (!committed_) {
+    std::error_code ignored;
+    std::filesystem::remove_all(staging_, ignored);
+  }
+}
+
+void StagingDirectory::commit() {
+  std::filesystem::path previous;
+  if (std::filesystem::exists(target_)) {
+    previous = target_;
+    previous += ".previous-" + std::to_string(::getpid());
+    std::filesystem::rename(target_, previous);
+  }
+  std::filesystem::rename(staging_, target_);
+  committed_ = true;
+  if (!previous.empty()) std::filesystem::remove_all(previous);
+}
+
+}  // namespace cbbg::diagrams

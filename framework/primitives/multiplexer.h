@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "framework/block.h"
+
+namespace cbbg {
+
+/// Multiplexer: concatenates its inputs, in order, into one vector.
+///
+/// | port          | dir | size        | meaning                  |
+/// |---------------|-----|-------------|--------------------------|
+/// | <input name>  | in  | its size    | one per declared input   |
+/// | y             | out | sum of them | the inputs, concatenated |
+class Multiplexer final : public Block {
+ public:
+  struct Input {
+    std::string name;
+    int size;
+  };
+  Multiplexer(std::string name, const std::vector<Input>& inputs);
+};
+
+}  // namespace cbbg

@@ -1,0 +1,92 @@
+#include "plant/analytic_plant.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "framework/block_context.h"
+#include "plant/plant_ports.h"
+#include "plant/robot_dynamics.h"
+#include "plant/plant_state.h"
+
+namespace cbbg::plant {
+namespace {
+
+// Layout of the continuous state.
+enum ContinuousIndex : int {
+  kQ = 0,       // theta_b, phi_l, phi_r
+  kQDot = 3,    // their rates
+  kPose = 6,    // x, y, yaw
+  kContinuousSize = 9
+};
+
+using Output = Eigen::Matrix<double, kStateSize, 1>;
+
+Output to_output(const RobotParams& params, const ConstVectorView& x) {
+  Output y;
+  y[kThetaB] = x[kQ];
+  y[kThetaBDot] = x[kQDot];
+  y[kPhiLeft] = x[kQ + 1];
+  y[kPhiRight] = x[kQ + 2];
+  y[kPhiLeftDot] = x[kQDot + 1];
+  y[kPhiRightDot] = x[kQDot + 2];
+  y[kX] = x[kPose];
+  y[kY] = x[kPose + 1];
+  y[kYaw] = x[kPose + 2];
+  y[kYawRate] = yaw_rate(params, x[kQDot + 1], x[kQDot + 2]);
+  return y;
+}
+
+Vector to_continuous(const Vector& y) {
+  Vector x(kContinuousSize);
+  x << y[kThetaB], y[kPhiLeft], y[kPhiRight], y[kThetaBDot], y[kPhiLeftDot], y[kPhiRightDot],
+      y[kX], y[kY], y[kYaw];
+  return x;
+}
+
+}  // namespace
+
+AnalyticPlant::AnalyticPlant(std::string name, const RobotParams& params, double initial_pitch)
+    : Block(std::move(name)), params_(params) {
+  params_.validate();
+  const InputPort& torque = declare_input_port(
+      "torque", kTorqueSize, "tau_l, tau_r: motor torques body -> wheel, N m (saturated here)");
+  declare_output_port(
+      "state", kStateSize,
+      [this](const BlockContext& context, VectorRef y) {
+        y = to_output(params_, context.continuous_state());
+      },
+      {}, "theta_b, theta_b', phi_l, phi_r, phi_l', phi_r', x, y, yaw, yaw rate");
+  declare_continuous_state(
+      to_continuous(initial_state_vector(initial_pitch)),
+      [this, &torque](const BlockContext& context, VectorRef x_dot) {
+        const ConstVectorView tau = context.input(torque);
+        check_torque_finite(*this, tau);
+        const ConstVectorView x = context.continuous_state();
+        if (!x.allFinite()) {
+          const Output y = to_output(params_, x);
+          check_state_finite(*this, ConstVectorView(y.data(), kStateSize), context.time());
+        }
+        const Coordinates q = x.segment<3>(kQ);
+        const Coordinates q_dot = x.segment<3>(kQDot);
+        const Torques applied = saturate_torque(Torques(tau[kTauLeft], tau[kTauRight]),
+                                                params_.torque_limit);
+        const double v = forward_speed(params_, q_dot[1], q_dot[2]);
+        const double yaw = x[kPose + 2];
+        x_dot.segment<3>(kQ) = q_dot;
+        x_dot.segment<3>(kQDot) = accelerations(params_, q, q_dot, applied);
+        x_dot[kPose] = v * std::cos(yaw);
+        x_dot[kPose + 1] = v * std::sin(yaw);
+        x_dot[kPose + 2] = yaw_rate(params_, q_dot[1], q_dot[2]);
+      });
+}
+
+void AnalyticPlant::reset(Context& context, double initial_pitch) const {
+  set_state(context, initial_state_vector(initial_pitch));
+}
+
+void AnalyticPlant::set_state(Context& context, const Vector& state) const {
+  check_state_argument(*this, state);
+  context.continuous_state(*this) = to_continuous(state);
+}
+
+}  // namespace cbbg::plant

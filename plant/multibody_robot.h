@@ -1,0 +1,80 @@
+#pragma once
+// The robot as a Simbody multibody system (the reference model), with Simbody kept out of
+// this header so that code including it needs no special compile flags.
+//
+// Model: a massless, level base frame moves on the ground in x, y and yaw (a planar joint at
+// axle height R); the body pitches on a revolute joint about the axle; each wheel turns on a
+// revolute joint about the axle, its angle measured from the base (absolute, not relative to
+// the body). Rolling without slip is three NoSlip1D constraints: no forward slip at each
+// wheel's contact point and no sideways slip of the base at the ground. Gravity; viscous
+// friction mu_l phi' (wheel-ground) and mu_w (phi' - theta_b') (axle, between wheel and
+// body); motor torques +tau on a wheel and -tau on the body.
+//
+// MultibodyRobot is built once and only read afterwards; a MultibodyRobotRun holds one
+// trajectory's Simbody state and integrator. Runs of one robot must stay in one thread:
+// Simbody's System is not safe to realise from two threads at once, even for separate
+// States (tried: two threads stepping two runs of one shared System gave results that
+// differed from the same runs done one after the other, by up to 4e-6).
+
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "plant/robot_params.h"
+
+namespace cbbg::plant {
+
+class MultibodyRobot {
+ public:
+  // Validates `params` with RobotParams::validate_rigid_bodies.
+  explicit MultibodyRobot(const RobotParams& params);
+  ~MultibodyRobot();
+  MultibodyRobot(const MultibodyRobot&) = delete;
+  MultibodyRobot& operator=(const MultibodyRobot&) = delete;
+
+  const RobotParams& params() const { return params_; }
+
+ private:
+  friend class MultibodyRobotRun;
+  struct Model;
+
+  RobotParams params_;
+  std::unique_ptr<Model> model_;
+};
+
+// One trajectory of a MultibodyRobot: a Simbody state advanced by an error-controlled
+// Runge–Kutta–Merson integrator at params().accuracy, with the motor torques held between
+// calls (no interpolation: every advance_to lands exactly on its end time).
+class MultibodyRobotRun {
+ public:
+  // Starts at rest, upright, at the origin, at time zero, with no torque.
+  explicit MultibodyRobotRun(std::shared_ptr<const MultibodyRobot> robot);
+  MultibodyRobotRun(const MultibodyRobotRun&) = delete;
+  MultibodyRobotRun& operator=(const MultibodyRobotRun&) = delete;
+  ~MultibodyRobotRun();
+
+  // Puts the robot in `state` (layout of plant_ports.h) at `time`, keeping the torques.
+  // The yaw rate and the base's velocity follow from the wheel rates (rolling without
+  // slip), so the yaw-rate element is not read.
+  void set_state(double time, const Eigen::Ref<const Eigen::VectorXd>& state);
+  // Applied as given (saturation is the plant's job) until the next call.
+  void set_torque(double tau_left, double tau_right);
+  // Integrates to `end_time` (>= time()). Simbody's exceptions pass through.
+  void advance_to(double end_time);
+
+  const MultibodyRobot& robot() const { return *robot_; }
+  double time() const;
+  // The state in the layout of plant_ports.h (10 values).
+  void get_state(Eigen::Ref<Eigen::VectorXd> state) const;
+  // Simbody's kinetic plus gravitational energy, zero with every mass centre at axle height
+  // (the same zero as plant::mechanical_energy).
+  double mechanical_energy() const;
+
+ private:
+  struct Integration;
+
+  std::shared_ptr<const MultibodyRobot> robot_;
+  std::unique_ptr<Integration> integration_;
+};
+
+}  // namespace cbbg::plant

@@ -1,0 +1,45 @@
+#pragma once
+// The two-wheeled robot's physical parameters (SPEC section 1), one field per config key
+// under `plant.` (SPEC section 4), with the SPEC defaults.
+
+namespace cbbg::plant {
+
+// The pitch a trial starts from by default (trial.theta0), rad.
+inline constexpr double kDefaultInitialPitch = 0.1744;
+
+struct RobotParams {
+  double wheel_mass = 1.0;             // m_l = m_r, kg
+  double body_mass = 10.0;             // M, kg
+  double wheel_radius = 0.15;          // R, m
+  double track_width = 0.44;           // d, distance between the wheels, m
+  double com_height = 0.4;             // L, axle midpoint to body centre of mass, m
+  double wheel_inertia = 0.01125;      // J_w, wheel about its axle, kg m^2
+  double body_pitch_inertia = 1.5417;  // J_y, body pitch about its centre of mass, kg m^2
+  double body_yaw_inertia = 0.5893;    // J_z, body yaw about its centre of mass, kg m^2
+  double gravity = 9.8;                // g, m/s^2
+  double wheel_ground_friction = 0.1;  // mu_l = mu_r, viscous, N m / (rad/s)
+  double axle_friction = 0.1;          // mu_w, wheel-axle viscous, N m / (rad/s)
+  double torque_limit = 5.0;           // |tau_l|, |tau_r| saturate here, N m
+  double accuracy = 1.0e-6;            // relative and absolute integrator tolerance
+
+  // Two inertias SPEC's equations leave out, which a rigid body cannot do without. SPEC's
+  // equations take the body's yaw inertia as J_z at every pitch, which needs a roll inertia
+  // J_x = J_z; with J_y = 1.5417 > 2 J_z that breaks the triangle inequality every rigid
+  // body obeys (J_y <= J_x + J_z), and Simbody rejects it. They also give the wheels no
+  // inertia about a diameter. Both only act while the robot turns (yaw rate != 0), never in
+  // the straight-line trials of the experiments. With body_roll_inertia = body_yaw_inertia
+  // and wheel_diametral_inertia = 0 the equations are exactly SPEC's (analytic plant only).
+  double body_roll_inertia = 1.5417;        // J_x, body roll about its centre of mass, kg m^2;
+                                            // default J_y: a body symmetric about its long axis
+  double wheel_diametral_inertia = 0.005625;  // I_d, wheel about a diameter, kg m^2; default
+                                              // J_w / 2: a thin disc, as J_w = m R^2 / 2 is
+
+  // Throws std::invalid_argument naming the first offending key, e.g.
+  // "plant.body_mass must be positive and finite; got -1".
+  void validate() const;
+  // validate(), plus what a rigid-body (Simbody) model needs: each of the body's three
+  // inertias at most the sum of the other two, and 2 I_d >= J_w for the wheel.
+  void validate_rigid_bodies() const;
+};
+
+}  // namespace cbbg::plant

@@ -1,0 +1,818 @@
+#!/usr/bin/python3
+"""Draw the figures of a cbbg results directory into DIR/figures/ (paper Figs. 11-14).
+
+Usage: /usr/bin/python3 scripts/plot_results.py DIR      (what `cbbg plot DIR` runs)
+
+Reads DIR/summary.json, DIR/trials.csv, DIR/config.yaml and, when the run logged ticks,
+DIR/steps.csv. Writes, for exp1 and single-diagram runs:
+  pitch_<arm>.png      theta_b(t) of the first seed's first trial and first successful trial
+  failures.png         failures before the first success, one point per seed, per arm
+and for exp2:
+  temperature_entropy.png   mean temperature and entropy per trial
+  pitch_early_late.png      theta_b(t) of early against late trials of the first seed
+
+The figures are drawn into a staging folder that replaces DIR/figures only when all of
+them are written. Exit status: 0 done, 2 a missing or malformed input file (one line on
+stderr naming the file), 1 the figures could not be written.
+
+Needs Debian's python3-numpy and python3-matplotlib: run it with /usr/bin/python3.
+"""
+
+import csv
+import json
+import math
+import os
+import re
+import shutil
+import sys
+import tempfile
+from dataclasses import dataclass
+
+MISSING_MODULE = None  # numpy or matplotlib absent: main() says so instead of a traceback
+try:
+    import numpy as np
+    import matplotlib
+
+    matplotlib.use("Agg")  # files only, no display
+    import matplotlib.pyplot as plt
+except ImportError as error:
+    MISSING_MODULE = error.name
+
+TRIALS_COLUMNS = ("arm", "seed", "trial", "failed", "steps", "mean_temperature",
+                  "mean_entropy", "final_theta", "status")
+STEPS_KEY_COLUMNS = ("arm", "seed", "trial")
+STEPS_PITCH_COLUMNS = ("t", "theta_b")
+STATUSES = ("success", "failed", "diverged")
+
+FIGURE_SIZE = (8.0, 4.5)  # inches
+FIGURE_DPI = 100
+
+
+class InputError(Exception):
+    """A missing or malformed input file: reported as 'FILE: what is wrong', exit 2."""
+
+    def __init__(self, path, what):
+        super().__init__(f"{path}: {what}")
+
+
+def note(text):
+    print(f"note: {text}")
+
+
+# ----------------------------------------------------------------------------- inputs
+
+def read_summary(path):
+    try:
+        with open(path, encoding="utf-8") as f:
+            summary = json.load(f)
+    except FileNotFoundError:
+        raise InputError(path, "missing (the run writes it at the end: did it finish?)")
+    except OSError as error:
+        raise InputError(path, f"cannot be read ({error.strerror})")
+    except UnicodeDecodeError:
+        raise InputError(path, "not UTF-8 text")
+    except json.JSONDecodeError as error:
+        raise InputError(path, f"not valid JSON (line {error.lineno} column {error.colno}: "
+                               f"{error.msg})")
+    if not isinstance(summary, dict):
+        raise InputError(path, "expected a JSON object at the top level")
+
+    def check(condition, what):
+        if not condition:
+            raise InputError(path, what)
+
+    def is_int(value):
+        return isinstance(value, int) and not isinstance(value, bool)
+
+    def is_number(value):
+        return (isinstance(value, (int, float)) and not isinstance(value, bool)
+                and math.isfinite(value))
+
+    check(isinstance(summary.get("experiment", ""), str), '"experiment" must be a string')
+    check(isinstance(summary.get("plant", ""), str), '"plant" must be a string')
+    seeds = summary.get("seeds")
+    check(seeds is None or (isinstance(seeds, list) and all(is_int(s) for s in seeds)),
+          '"seeds" must be a list of integers')
+    arms = summary.get("arms", {})
+    check(isinstance(arms, dict), '"arms" must be an object mapping arm names to results')
+    for arm, result in arms.items():
+        where = f'"arms"."{arm}"'
+        check(isinstance(result, dict), f"{where} must be an object")
+        failures = result.get("failures_before_success")
+        succeeded = result.get("succeeded")
+        check(failures is None or (isinstance(failures, list)
+                                   and all(is_int(n) and n >= 0 for n in failures)),
+              f'{where}."failures_before_success" must be a list of integers >= 0')
+        check(succeeded is None or (isinstance(succeeded, list)
+                                    and all(isinstance(b, bool) for b in succeeded)),
+              f'{where}."succeeded" must be a list of true/false')
+        if failures is not None and succeeded is not None:
+            check(len(failures) == len(succeeded),
+                  f'{where}: "failures_before_success" has {len(failures)} entries but '
+                  f'"succeeded" has {len(succeeded)}')
+        if failures is not None and seeds is not None:
+            check(len(failures) == len(seeds),
+                  f'{where}: "failures_before_success" has {len(failures)} entries but '
+                  f'"seeds" has {len(seeds)}')
+        median = result.get("median")
+        check(median is None or is_number(median), f'{where}."median" must be a number')
+    paper = summary.get("paper", {})
+    check(isinstance(paper, dict) and all(is_number(v) for v in paper.values()),
+          '"paper" must be an object mapping arm names to numbers')
+    return summary
+
+
+def parse_config(text):
+    """The few keys the figures use from the resolved config.yaml, without a YAML library.
+
+    Returns {"experiment": str, "trial.failure_angle": str, ...} for scalar keys (top level
+    and one section deep, block or flow style) and "annealing": [(from_trial, k1), ...].
+    """
+    values = {}
+    annealing = []
+    section = ""
+    for raw_line in text.splitlines():
+        line = raw_line.split("#", 1)[0].rstrip()
+        if not line.strip():
+            continue
+        indented = line[0] in " \t"
+        body = line.strip()
+        if not indented:
+            key, _, rest = body.partition(":")
+            section, rest = key.strip(), rest.strip()
+            if rest.startswith("{"):
+                for item in rest.strip("{}").split(","):
+                    sub, _, value = item.partition(":")
+                    values[f"{section}.{sub.strip()}"] = value.strip()
+            elif rest:
+                values[section] = rest
+            continue
+        if section == "annealing":
+            from_trial = re.search(r"from_trial:\s*([-+0-9.eE]+)", body)
+            k1 = re.search(r"k1:\s*([-+0-9.eE]+)", body)
+            if body.startswith("-") and from_trial and k1:
+                annealing.append((from_trial.group(1), k1.group(1)))
+            continue
+        key, _, value = body.partition(":")
+        if value.strip():
+            values[f"{section}.{key.strip()}"] = value.strip()
+    values = {key: value.strip("'\"") for key, value in values.items()}
+    values["annealing"] = annealing
+    return values
+
+
+def read_config(path):
+    """The parsed config.yaml, or None (with a note) when the run did not write one."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+    except FileNotFoundError:
+        note(f"{path} absent: figures drawn without the failure angle and annealing stages")
+        return None
+    except OSError as error:
+        raise InputError(path, f"cannot be read ({error.strerror})")
+    except UnicodeDecodeError:
+        raise InputError(path, "not UTF-8 text")
+    return parse_config(text)
+
+
+def config_number(config, key, path):
+    """A number from config.yaml, or None when the key is absent."""
+    if config is None or key not in config:
+        return None
+    try:
+        value = float(config[key])
+    except ValueError:
+        raise InputError(path, f"{key} is '{config[key]}', not a number")
+    if not math.isfinite(value):
+        raise InputError(path, f"{key} is '{config[key]}', not a finite number")
+    return value
+
+
+def annealing_stages(config, path):
+    """[(from_trial, k1), ...] of config.yaml's annealing schedule, sorted by trial."""
+    if config is None:
+        return []
+    stages = []
+    for from_trial, k1 in config["annealing"]:
+        try:
+            stages.append((int(from_trial), float(k1)))
+        except ValueError:
+            raise InputError(path, f"annealing entry {{from_trial: {from_trial}, k1: {k1}}} "
+                                   "is not an integer trial and a number")
+    return sorted(stages)
+
+
+@dataclass(frozen=True)
+class Trial:
+    arm: str
+    seed: int
+    trial: int
+    failed: bool
+    steps: int
+    mean_temperature: float
+    mean_entropy: float
+    final_theta: float
+    status: str
+
+    @property
+    def succeeded(self):
+        return self.status == "success"
+
+
+def open_csv(path, required, optional_file):
+    """(file, reader, header index) of a CSV file whose header holds the required columns."""
+    try:
+        f = open(path, newline="", encoding="utf-8")
+    except FileNotFoundError:
+        if optional_file:
+            return None
+        raise InputError(path, "missing")
+    except OSError as error:
+        raise InputError(path, f"cannot be read ({error.strerror})")
+    reader = csv.reader(f)
+    try:
+        header = next(reader, None)
+    except (csv.Error, UnicodeDecodeError) as error:
+        f.close()
+        raise InputError(path, f"line 1: unreadable header ({error})")
+    if not header:
+        f.close()
+        raise InputError(path, "empty (expected a header line)")
+    header = [name.strip() for name in header]
+    lacking = [name for name in required if name not in header]
+    if lacking:
+        f.close()
+        raise InputError(path, f"header lacks column(s) {', '.join(lacking)} "
+                               f"(header is: {','.join(header)})")
+    return f, reader, {name: header.index(name) for name in header}, len(header)
+
+
+def parse_integer(path, line, name, text, minimum):
+    try:
+        value = int(text)
+    except ValueError:
+        raise InputError(path, f"line {line}: {name} '{text}' is not an integer")
+    if value < minimum:
+        raise InputError(path, f"line {line}: {name} is {value}; must be >= {minimum}")
+    return value
+
+
+def parse_number(path, line, name, text):
+    try:
+        return float(text)
+    except ValueError:
+        raise InputError(path, f"line {line}: {name} '{text}' is not a number")
+
+
+def parse_trial_row(path, line, field):
+    """One trials.csv row (a dict of its stripped fields) as a Trial."""
+    if not field["arm"]:
+        raise InputError(path, f"line {line}: arm is empty")
+    failed = parse_integer(path, line, "failed", field["failed"], 0)
+    if failed > 1:
+        raise InputError(path, f"line {line}: failed is {failed}; must be 0 or 1")
+    if field["status"] not in STATUSES:
+        raise InputError(path, f"line {line}: status '{field['status']}' is not one of "
+                               f"{'|'.join(STATUSES)}")
+    return Trial(arm=field["arm"],
+                 seed=parse_integer(path, line, "seed", field["seed"], 0),
+                 trial=parse_integer(path, line, "trial", field["trial"], 1),
+                 failed=bool(failed),
+                 steps=parse_integer(path, line, "steps", field["steps"], 0),
+                 mean_temperature=parse_number(path, line, "mean_temperature",
+                                               field["mean_temperature"]),
+                 mean_entropy=parse_number(path, line, "mean_entropy", field["mean_entropy"]),
+                 final_theta=parse_number(path, line, "final_theta", field["final_theta"]),
+                 status=field["status"])
+
+
+def read_trials(path):
+    """Every row of trials.csv as a Trial, sorted by arm (first appearance), seed, trial."""
+    f, reader, column, width = open_csv(path, TRIALS_COLUMNS, optional_file=False)
+    trials = []
+    seen = set()
+    with f:
+        try:
+            for row in reader:
+                line = reader.line_num
+                if not row:
+                    continue
+                if len(row) != width:
+                    raise InputError(path, f"line {line}: expected {width} fields, got {len(row)}")
+                fields = {name: row[column[name]].strip() for name in TRIALS_COLUMNS}
+                trial = parse_trial_row(path, line, fields)
+                key = (trial.arm, trial.seed, trial.trial)
+                if key in seen:
+                    raise InputError(path, f"line {line}: arm {trial.arm} seed {trial.seed} "
+                                           f"trial {trial.trial} appears twice")
+                seen.add(key)
+                trials.append(trial)
+        except (csv.Error, UnicodeDecodeError) as error:
+            raise InputError(path, f"line {reader.line_num}: unreadable ({error})")
+    if not trials:
+        raise InputError(path, "has a header but no trial rows")
+    arm_order = {}
+    for trial in trials:
+        arm_order.setdefault(trial.arm, len(arm_order))
+    return sorted(trials, key=lambda t: (arm_order[t.arm], t.seed, t.trial))
+
+
+def read_pitch(path, wanted):
+    """{(arm, seed, trial): (t, theta_b)} as numpy arrays for the wanted trials of steps.csv.
+
+    Returns None when steps.csv is absent (logging off). Streams the file and parses only
+    the rows of the wanted trials, so a log of tens of MB costs one pass of the csv reader.
+    """
+    opened = open_csv(path, STEPS_KEY_COLUMNS + STEPS_PITCH_COLUMNS, optional_file=True)
+    if opened is None:
+        return None
+    f, reader, column, width = opened
+    i_arm, i_seed, i_trial = (column[name] for name in STEPS_KEY_COLUMNS)
+    i_t, i_theta = (column[name] for name in STEPS_PITCH_COLUMNS)
+    samples = {key: ([], []) for key in wanted}
+    key_of_raw = {}  # the raw key fields of a row -> its wanted key, or None
+    with f:
+        try:
+            for row in reader:
+                if len(row) != width:
+                    if not row:
+                        continue
+                    raise InputError(path, f"line {reader.line_num}: expected {width} fields, "
+                                           f"got {len(row)}")
+                raw = (row[i_arm], row[i_seed], row[i_trial])
+                key = key_of_raw.get(raw, False)
+                if key is False:
+                    try:
+                        key = (raw[0].strip(), int(raw[1]), int(raw[2]))
+                    except ValueError:
+                        raise InputError(path, f"line {reader.line_num}: seed '{raw[1]}' or "
+                                               f"trial '{raw[2]}' is not an integer")
+                    key = key if key in samples else None
+                    key_of_raw[raw] = key
+                if key is None:
+                    continue
+                try:
+                    t, theta = float(row[i_t]), float(row[i_theta])
+                except ValueError:
+                    raise InputError(path, f"line {reader.line_num}: t '{row[i_t]}' or "
+                                           f"theta_b '{row[i_theta]}' is not a number")
+                samples[key][0].append(t)
+                samples[key][1].append(theta)
+        except (csv.Error, UnicodeDecodeError) as error:
+            raise InputError(path, f"line {reader.line_num}: unreadable ({error})")
+    return {key: (np.asarray(t), np.asarray(theta))
+            for key, (t, theta) in samples.items() if t}
+
+
+# ------------------------------------------------------------------ what to plot
+
+def arms_in_order(summary, trials):
+    """Arms in the order of summary.json, then any that only trials.csv names."""
+    arms = list(summary.get("arms", {}))
+    for trial in trials:
+        if trial.arm not in arms:
+            arms.append(trial.arm)
+    return arms
+
+
+def trials_of(trials, arm, seed):
+    return [t for t in trials if t.arm == arm and t.seed == seed]
+
+
+def first_seed(summary, trials, arm):
+    """The run's first seed (summary.json's order) that has trials of this arm."""
+    seeds = sorted({t.seed for t in trials if t.arm == arm})
+    for seed in summary.get("seeds") or []:
+        if seed in seeds:
+            return seed
+    return seeds[0] if seeds else None
+
+
+@dataclass
+class PitchSelection:
+    """The exp1 trials of one arm and seed to draw: first, the failures between, the end."""
+    first: Trial
+    between: list
+    last: Trial  # the first successful trial, or the last trial when none succeeded
+    succeeded: bool
+
+
+def exp1_pitch_selection(seed_trials):
+    """First trial, the failed trials between, and the first success (or the last trial)."""
+    first_success = next((t for t in seed_trials if t.succeeded), None)
+    last = first_success or seed_trials[-1]
+    between = [t for t in seed_trials if seed_trials[0].trial < t.trial < last.trial]
+    return PitchSelection(first=seed_trials[0], between=between, last=last,
+                          succeeded=first_success is not None)
+
+
+def early_late_trials(trial_numbers):
+    """(early, late) exp2 trials: the first two after the CB-coordinated trial 1, the last two."""
+    numbers = sorted(trial_numbers)
+    operant = numbers[1:] if len(numbers) > 1 else numbers
+    early = operant[:2]
+    late = [n for n in operant[-2:] if n not in early]
+    return early, late
+
+
+@dataclass
+class SeedFailures:
+    seed: int
+    failures: int
+    succeeded: bool
+
+
+def failures_per_seed(summary, trials, arm):
+    """Failures before the first success per seed: summary.json's, else counted in trials.csv.
+
+    A seed that never succeeded counts every trial it ran (a lower bound).
+    """
+    result = summary.get("arms", {}).get(arm, {})
+    failures = result.get("failures_before_success")
+    succeeded = result.get("succeeded")
+    seeds = summary.get("seeds")
+    if failures is not None and succeeded is not None:
+        if seeds is None:  # summary.json without "seeds": the seeds trials.csv names
+            seeds = sorted({t.seed for t in trials if t.arm == arm})
+            if len(seeds) != len(failures):
+                seeds = list(range(1, len(failures) + 1))
+        return [SeedFailures(s, n, ok) for s, n, ok in zip(seeds, failures, succeeded)]
+    counted = []
+    for seed in sorted({t.seed for t in trials if t.arm == arm}):
+        seed_trials = trials_of(trials, arm, seed)
+        first_success = next((t for t in seed_trials if t.succeeded), None)
+        if first_success is None:
+            counted.append(SeedFailures(seed, len(seed_trials), False))
+        else:
+            before = sum(1 for t in seed_trials if t.trial < first_success.trial)
+            counted.append(SeedFailures(seed, before, True))
+    return counted
+
+
+def median_failures(summary, arm, per_seed):
+    median = summary.get("arms", {}).get(arm, {}).get("median")
+    if median is not None:
+        return float(median)
+    return float(np.median([s.failures for s in per_seed])) if per_seed else None
+
+
+def spread_offsets(values, width):
+    """Horizontal offsets that spread equal values side by side (a small beeswarm)."""
+    offsets = [0.0] * len(values)
+    groups = {}
+    for i, value in enumerate(values):
+        groups.setdefault(value, []).append(i)
+    for members in groups.values():
+        n = len(members)
+        step = min(0.1, width / max(n - 1, 1))
+        for rank, i in enumerate(members):
+            offsets[i] = (rank - (n - 1) / 2) * step
+    return offsets
+
+
+def file_name_part(arm):
+    return re.sub(r"[^A-Za-z0-9_.-]", "_", arm)
+
+
+# ----------------------------------------------------------------------- figures
+
+def new_figure(ncols=1, sharey=False):
+    fig, axes = plt.subplots(1, ncols, figsize=FIGURE_SIZE, dpi=FIGURE_DPI, sharey=sharey,
+                             layout="constrained")
+    return fig, axes
+
+
+def ending(trial, t):
+    """How a trial ended, for a legend: "20.0 s" or "failed at 1.62 s"."""
+    if not len(t):
+        return trial.status
+    if trial.status == "success":
+        return f"{t[-1]:.1f} s"
+    return f"{trial.status} at {t[-1]:.2f} s"
+
+
+def draw_failure_band(ax, failure_angle):
+    """The failure angle as dashed lines; the pitch axis spans a little beyond it, so that a
+    diverged trial's last samples do not squash the others."""
+    if failure_angle is None:
+        return
+    for sign in (1, -1):
+        ax.axhline(sign * failure_angle, color="0.55", linestyle="--", linewidth=0.9,
+                   label=f"failure angle ±{failure_angle:.3f} rad" if sign > 0 else None)
+    ax.set_ylim(-1.25 * failure_angle, 1.25 * failure_angle)
+
+
+def plot_exp1_pitch(arm, seed, selection, pitch, failure_angle, plant):
+    fig, ax = new_figure()
+    drawn_between = False
+    for trial in selection.between:
+        key = (arm, seed, trial.trial)
+        if key in pitch:
+            t, theta = pitch[key]
+            first_between = selection.between[0].trial
+            last_between = selection.between[-1].trial
+            span = (f"trial {first_between}" if first_between == last_between
+                    else f"trials {first_between}-{last_between}")
+            ax.plot(t, theta, color="0.7", linewidth=0.8,
+                    label=None if drawn_between else f"{span} (failed)")
+            drawn_between = True
+    ends = [selection.first] if selection.first is selection.last else [selection.first,
+                                                                        selection.last]
+    colours = ["tab:red", "tab:blue"] if len(ends) == 2 else ["tab:blue"]
+    for trial, colour in zip(ends, colours):
+        key = (arm, seed, trial.trial)
+        if key not in pitch:
+            continue
+        t, theta = pitch[key]
+        role = "first trial"
+        if trial is selection.last:
+            role = "first success" if selection.succeeded else "last trial, no success"
+            if trial is selection.first:
+                role = "first trial, first success"
+        ax.plot(t, theta, color=colour, linewidth=1.4,
+                label=f"trial {trial.trial}: {role} ({ending(trial, t)})")
+    draw_failure_band(ax, failure_angle)
+    ax.axhline(0.0, color="black", linewidth=0.5)
+    ax.set_xlabel("time t [s]")
+    ax.set_ylabel(r"pitch $\theta_b$ [rad]")
+    ax.set_title(f"Pitch angle, arm {arm} ({plant} plant), seed {seed}")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="upper right", fontsize="small")
+    return fig
+
+
+def plot_failures(arms, per_arm, medians, paper, experiment, plant):
+    fig, ax = new_figure()
+    labelled = set()
+
+    def label_once(text):
+        if text in labelled:
+            return None
+        labelled.add(text)
+        return text
+
+    tick_labels = []
+    for x, arm in enumerate(arms):
+        seeds = per_arm[arm]
+        values = [s.failures for s in seeds]
+        offsets = spread_offsets(values, 0.6)
+        for s, dx in zip(seeds, offsets):
+            if s.succeeded:
+                ax.plot(x + dx, s.failures, "o", color="tab:blue", markersize=6, alpha=0.8,
+                        zorder=3, label=label_once("one seed"))
+            else:
+                ax.plot(x + dx, s.failures, "X", color="tab:red", markersize=8, zorder=3,
+                        label=label_once("seed that never succeeded (at its trial count)"))
+        if medians[arm] is not None:
+            ax.hlines(medians[arm], x - 0.3, x + 0.3, color="black", linewidth=2.0, zorder=2,
+                      label=label_once("median over seeds"))
+        if arm in paper:
+            ax.plot(x + 0.4, paper[arm], "D", markersize=9, markerfacecolor="none",
+                    markeredgecolor="tab:orange", markeredgewidth=2, zorder=3,
+                    label=label_once("paper (one run)"))
+            ax.annotate(f"{paper[arm]:g}", (x + 0.4, paper[arm]), xytext=(8, 0),
+                        textcoords="offset points", va="center", color="tab:orange")
+        succeeded = sum(1 for s in seeds if s.succeeded)
+        tick_labels.append(f"{arm}\n{succeeded}/{len(seeds)} seeds succeeded")
+    ax.set_xticks(range(len(arms)), tick_labels)
+    ax.set_xlim(-0.6, len(arms) - 0.3)
+    top = max([s.failures for a in arms for s in per_arm[a]]
+              + [paper[a] for a in arms if a in paper] + [1])
+    ax.set_ylim(-0.05 * top - 0.5, top * 1.08 + 0.5)
+    ax.set_ylabel("failures before first success [trials]")
+    ax.set_title(f"Failures before the first successful trial ({experiment}, {plant} plant)")
+    ax.grid(True, axis="y", alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
+    return fig
+
+
+def plot_temperature_entropy(arms, trials, summary, stages, experiment, plant):
+    fig, (ax_t, ax_e) = new_figure(ncols=2)
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    for index, arm in enumerate(arms):
+        colour = colours[index % len(colours)]
+        seed = first_seed(summary, trials, arm)
+        arm_trials = [t for t in trials if t.arm == arm]
+        seeds = sorted({t.seed for t in arm_trials})
+        prefix = f"{arm}, " if len(arms) > 1 else ""
+        for ax, field in ((ax_t, "mean_temperature"), (ax_e, "mean_entropy")):
+            if len(seeds) > 1:
+                by_trial = {}
+                for t in arm_trials:
+                    value = getattr(t, field)
+                    if math.isfinite(value):
+                        by_trial.setdefault(t.trial, []).append(value)
+                numbers = sorted(n for n, v in by_trial.items() if len(v) > 1)
+                if numbers:
+                    low = [min(by_trial[n]) for n in numbers]
+                    high = [max(by_trial[n]) for n in numbers]
+                    middle = [float(np.median(by_trial[n])) for n in numbers]
+                    ax.fill_between(numbers, low, high, color=colour, alpha=0.18, linewidth=0,
+                                    label=f"{prefix}range over {len(seeds)} seeds")
+                    ax.plot(numbers, middle, color=colour, linestyle="--", linewidth=1.1,
+                            label=f"{prefix}median over {len(seeds)} seeds")
+            first = trials_of(trials, arm, seed)
+            ax.plot([t.trial for t in first], [getattr(t, field) for t in first], "o-",
+                    color=colour, markersize=3.5, linewidth=1.4, label=f"{prefix}seed {seed}")
+    for ax in (ax_t, ax_e):
+        for from_trial, k1 in stages:
+            if from_trial > 1:
+                ax.axvline(from_trial - 0.5, color="0.6", linestyle=":", linewidth=1.0)
+        ax.set_xlabel("trial")
+        ax.grid(True, alpha=0.3)
+        ax.xaxis.get_major_locator().set_params(integer=True)
+        if stages:
+            # The annealing stages on a top axis: k1 from each stage's first trial on.
+            top = ax.secondary_xaxis("top")
+            top.set_xticks([from_trial for from_trial, _ in stages],
+                           [f"{k1:g}" for _, k1 in stages], fontsize=8)
+            top.set_xlabel("annealing factor k1 from this trial", fontsize=8)
+    ax_t.set_ylabel("mean temperature T [dimensionless]")
+    ax_t.set_title("Mean temperature per trial")
+    ax_e.set_ylabel("mean entropy E [bits]")
+    ax_e.set_title("Mean entropy per trial")
+    ax_e.legend(loc="best", fontsize="small")
+    fig.suptitle(f"Annealing schedule and exploration ({experiment}, {plant} plant)")
+    return fig
+
+
+def plot_pitch_early_late(arm, seed, early, late, by_number, pitch, failure_angle,
+                          stages, plant):
+    fig, (ax_early, ax_late) = new_figure(ncols=2, sharey=True)
+
+    def k1_of(number):
+        k1 = None
+        for from_trial, value in stages:
+            if from_trial <= number:
+                k1 = value
+        return k1
+
+    for ax, numbers, name, colours in ((ax_early, early, "Early", ["tab:red", "tab:orange"]),
+                                       (ax_late, late, "Late", ["tab:blue", "tab:green"])):
+        for number, colour in zip(numbers, colours):
+            key = (arm, seed, number)
+            if key not in pitch:
+                continue
+            t, theta = pitch[key]
+            k1 = k1_of(number)
+            stage = f", k1={k1:g}" if k1 is not None else ""
+            ax.plot(t, theta, color=colour, linewidth=1.2,
+                    label=f"trial {number}{stage} ({ending(by_number[number], t)})")
+        draw_failure_band(ax, failure_angle)
+        ax.axhline(0.0, color="black", linewidth=0.5)
+        shown = ", ".join(str(n) for n in numbers) if numbers else "none"
+        ax.set_title(f"{name} trials ({shown})")
+        ax.set_xlabel("time t [s]")
+        ax.grid(True, alpha=0.3)
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(loc="upper right", fontsize="small")
+    ax_early.set_ylabel(r"pitch $\theta_b$ [rad]")
+    fig.suptitle(f"Pitch of early and late trials, arm {arm} ({plant} plant), seed {seed}")
+    return fig
+
+
+# -------------------------------------------------------------------------- main
+
+def draw_exp1(save, summary, trials, pitch_path, failure_angle, experiment, plant):
+    arms = arms_in_order(summary, trials)
+    selections = {}
+    for arm in arms:
+        seed = first_seed(summary, trials, arm)
+        if seed is not None:
+            selections[arm] = (seed, exp1_pitch_selection(trials_of(trials, arm, seed)))
+    wanted = set()
+    for arm, (seed, sel) in selections.items():
+        wanted.update((arm, seed, t.trial) for t in [sel.first, *sel.between, sel.last])
+    pitch = read_pitch(pitch_path, wanted)
+    if pitch is None:
+        note(f"{pitch_path} absent (tick logging off): pitch figures skipped")
+    else:
+        for arm, (seed, sel) in selections.items():
+            ends = {sel.first.trial, sel.last.trial}
+            missing = sorted(n for n in ends if (arm, seed, n) not in pitch)
+            if len(missing) == len(ends):
+                note(f"{pitch_path} has no rows for arm {arm} seed {seed}: "
+                     f"pitch_{file_name_part(arm)}.png skipped")
+                continue
+            if missing:
+                note(f"{pitch_path} has no rows for arm {arm} seed {seed} trial(s) "
+                     f"{', '.join(map(str, missing))}")
+            save(plot_exp1_pitch(arm, seed, sel, pitch, failure_angle, plant),
+                 f"pitch_{file_name_part(arm)}.png")
+    per_arm = {arm: failures_per_seed(summary, trials, arm) for arm in arms}
+    medians = {arm: median_failures(summary, arm, per_arm[arm]) for arm in arms}
+    save(plot_failures(arms, per_arm, medians, summary.get("paper", {}), experiment,
+                       plant), "failures.png")
+
+
+def draw_exp2(save, summary, trials, pitch_path, failure_angle, stages, experiment,
+              plant):
+    arms = [arm for arm in arms_in_order(summary, trials) if any(t.arm == arm for t in trials)]
+    save(plot_temperature_entropy(arms, trials, summary, stages, experiment, plant),
+         "temperature_entropy.png")
+    choices = {}
+    for arm in arms:
+        seed = first_seed(summary, trials, arm)
+        by_number = {t.trial: t for t in trials_of(trials, arm, seed)}
+        choices[arm] = (seed, by_number, *early_late_trials(by_number))
+    wanted = {(arm, seed, n) for arm, (seed, _, early, late) in choices.items()
+              for n in early + late}
+    pitch = read_pitch(pitch_path, wanted)
+    if pitch is None:
+        note(f"{pitch_path} absent (tick logging off): pitch figures skipped")
+        return
+    for arm, (seed, by_number, early, late) in choices.items():
+        name = ("pitch_early_late.png" if len(arms) == 1
+                else f"pitch_early_late_{file_name_part(arm)}.png")
+        missing = [n for n in early + late if (arm, seed, n) not in pitch]
+        if len(missing) == len(early + late):
+            note(f"{pitch_path} has no rows for arm {arm} seed {seed}: {name} skipped")
+            continue
+        if missing:
+            note(f"{pitch_path} has no rows for arm {arm} seed {seed} trial(s) "
+                 f"{', '.join(map(str, missing))}")
+        save(plot_pitch_early_late(arm, seed, early, late, by_number, pitch,
+                                   failure_angle, stages, plant), name)
+
+
+def replace_folder(staging, final):
+    """Put the staged figures at `final`, replacing any previous figures folder."""
+    previous = None
+    if os.path.lexists(final):
+        if not os.path.isdir(final) or os.path.islink(final):
+            raise OSError(f"{final} exists and is not a folder")
+        previous = tempfile.mkdtemp(prefix=".figures.old-", dir=os.path.dirname(final))
+        os.rmdir(previous)
+        os.rename(final, previous)
+    os.rename(staging, final)
+    if previous is not None:
+        shutil.rmtree(previous, ignore_errors=True)
+
+
+def run(results_dir):
+    summary_path = os.path.join(results_dir, "summary.json")
+    trials_path = os.path.join(results_dir, "trials.csv")
+    config_path = os.path.join(results_dir, "config.yaml")
+    steps_path = os.path.join(results_dir, "steps.csv")
+    if not os.path.isdir(results_dir):
+        raise InputError(results_dir, "not a results directory (missing or not a folder)")
+
+    summary = read_summary(summary_path)
+    trials = read_trials(trials_path)
+    config = read_config(config_path)
+    experiment = summary.get("experiment") or (config or {}).get("experiment")
+    if not experiment:
+        raise InputError(summary_path, 'has no "experiment" (and config.yaml names none)')
+    plant = summary.get("plant") or (config or {}).get("plant.kind") or "unknown"
+    failure_angle = config_number(config, "trial.failure_angle", config_path)
+    stages = annealing_stages(config, config_path)
+
+    staging = tempfile.mkdtemp(prefix=".figures.tmp-", dir=results_dir)
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(staging, 0o777 & ~umask)  # mkdtemp's folder is private; figures are not
+    written = []
+
+    def save(fig, name):
+        fig.savefig(os.path.join(staging, name), dpi=FIGURE_DPI)
+        plt.close(fig)
+        written.append(name)
+
+    try:
+        if experiment == "exp2":
+            draw_exp2(save, summary, trials, steps_path, failure_angle, stages, experiment,
+                      plant)
+        else:
+            draw_exp1(save, summary, trials, steps_path, failure_angle, experiment, plant)
+        final = os.path.join(results_dir, "figures")
+        replace_folder(staging, final)
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    for name in written:
+        print(f"wrote {os.path.join(final, name)}")
+
+
+def main(argv):
+    if len(argv) != 2:
+        print(f"usage: {os.path.basename(argv[0])} RESULTS_DIR", file=sys.stderr)
+        return 2
+    if MISSING_MODULE:
+        print(f"plot_results.py: {MISSING_MODULE} is not installed for {sys.executable}: "
+              "run with /usr/bin/python3 (Debian's python3-numpy, python3-matplotlib)",
+              file=sys.stderr)
+        return 1
+    try:
+        run(argv[1])
+    except InputError as error:
+        print(f"plot_results.py: error: {error}", file=sys.stderr)
+        return 2
+    except OSError as error:
+        print(f"plot_results.py: error: cannot write the figures: {error}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,139 @@
+#pragma once
+// Test rigs for the plants: the PD law of SPEC 2.4 as small test-local blocks (the project's
+// PD supervisor block lives in blocks/ and is tested there), and diagrams that put either
+// plant behind them.
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "framework/block.h"
+#include "framework/block_context.h"
+#include "framework/diagram_builder.h"
+#include "framework/primitives/zero_order_hold.h"
+#include "framework/random.h"
+#include "framework/simulator.h"
+#include "plant/analytic_plant.h"
+#include "plant/plant_ports.h"
+#include "plant/robot_params.h"
+#include "plant/simbody_plant.h"
+
+namespace cbbg::plant::testing {
+
+inline constexpr double kPeriod = 0.01;  // trial.period
+
+// a = sign (50 theta_b + 10 theta_b' + (phi_l + phi_r) / 2 + (phi_l' + phi_r') / 2),
+// tau_l = tau_r = a (SPEC 2.4; the plant saturates). Direct feedthrough: a hold follows it.
+inline double pd_action(const ConstVectorView& x, double sign) {
+  return sign * (50.0 * x[kThetaB] + 10.0 * x[kThetaBDot] + (x[kPhiLeft] + x[kPhiRight]) / 2.0 +
+                 (x[kPhiLeftDot] + x[kPhiRightDot]) / 2.0);
+}
+
+class PdLaw final : public Block {
+ public:
+  PdLaw(std::string name, double sign) : Block(std::move(name)) {
+    const InputPort& state = declare_input_port("state", kStateSize);
+    declare_output_port(
+        "torque", kTorqueSize,
+        [&state, sign](const BlockContext& context, VectorRef torque) {
+          torque.setConstant(pd_action(context.input(state), sign));
+        },
+        {&state});
+  }
+};
+
+// The PD action plus a random differential torque that makes the robot turn: every period,
+// delta ~ N(0, sigma^2) and the held torques become (a + delta, a - delta).
+class TurningPdLaw final : public Block {
+ public:
+  TurningPdLaw(std::string name, double sigma) : Block(std::move(name)) {
+    const InputPort& state = declare_input_port("state", kStateSize);
+    declare_discrete_state(Vector::Zero(kTorqueSize));
+    declare_output_port(
+        "torque", kTorqueSize,
+        [](const BlockContext& context, VectorRef torque) { torque = context.discrete_state(); },
+        {});
+    declare_periodic_update(kPeriod, 0.0,
+                            [&state, sigma](BlockContext& context, VectorRef next) {
+                              const double a = pd_action(context.input(state), 1.0);
+                              const double delta =
+                                  sigma * draw_standard_normal(context.random_generator());
+                              next[kTauLeft] = a + delta;
+                              next[kTauRight] = a - delta;
+                              return EventStatus::succeeded();
+                            });
+  }
+};
+
+enum class PlantKind { kAnalytic, kSimbody };
+
+inline std::string plant_name(PlantKind kind) {
+  return kind == PlantKind::kAnalytic ? "Analytic" : "Simbody";
+}
+
+enum class Control { kFixedTorque, kPd, kPdFlipped, kTurningPd };
+
+// A diagram "robot" with the plant "plant" behind the chosen control.
+struct Rig {
+  std::unique_ptr<Diagram> diagram;
+  PlantKind kind;
+  const Block* plant = nullptr;
+  const InputPort* torque_input = nullptr;  // the diagram's input, for kFixedTorque
+
+  const OutputPort& state() const { return plant->output_port("state"); }
+  void reset(Context& context, double pitch) const {
+    if (kind == PlantKind::kAnalytic) {
+      static_cast<const AnalyticPlant&>(*plant).reset(context, pitch);
+    } else {
+      static_cast<const SimbodyPlant&>(*plant).reset(context, pitch);
+    }
+  }
+  void set_state(Context& context, const Vector& state) const {
+    if (kind == PlantKind::kAnalytic) {
+      static_cast<const AnalyticPlant&>(*plant).set_state(context, state);
+    } else {
+      static_cast<const SimbodyPlant&>(*plant).set_state(context, state);
+    }
+  }
+};
+
+inline Rig make_rig(PlantKind kind, const RobotParams& params, double pitch, Control control,
+                    double sigma = 1.0) {
+  DiagramBuilder builder("robot");
+  Rig rig;
+  rig.kind = kind;
+  Block* plant = nullptr;
+  if (kind == PlantKind::kAnalytic) {
+    plant = &builder.emplace<AnalyticPlant>("plant", params, pitch);
+  } else {
+    plant = &builder.emplace<SimbodyPlant>("plant", params, pitch);
+  }
+  rig.plant = plant;
+  if (control == Control::kFixedTorque) {
+    builder.export_input(plant->input_port("torque"), "torque");
+  } else if (control == Control::kTurningPd) {
+    auto& law = builder.emplace<TurningPdLaw>("law", sigma);
+    builder.connect(*plant, "state", law, "state");
+    builder.connect(law, "torque", *plant, "torque");
+  } else {
+    auto& law = builder.emplace<PdLaw>("law", control == Control::kPd ? 1.0 : -1.0);
+    auto& hold = builder.emplace<ZeroOrderHold>("hold", kTorqueSize, kPeriod);
+    builder.connect(*plant, "state", law, "state");
+    builder.connect(law, "torque", hold, "u");
+    builder.connect(hold, "y", *plant, "torque");
+  }
+  rig.diagram = builder.build();
+  if (control == Control::kFixedTorque) rig.torque_input = &rig.diagram->input_port("torque");
+  return rig;
+}
+
+// The Simulator for a rig, at params.accuracy (what the Simbody plant uses too).
+inline std::unique_ptr<Simulator> make_simulator(const Rig& rig, const RobotParams& params,
+                                                 const Vector& fixed_torque = Vector::Zero(2)) {
+  auto simulator = std::make_unique<Simulator>(*rig.diagram, SimulatorOptions{params.accuracy});
+  if (rig.torque_input != nullptr) simulator->context().fix_input(*rig.torque_input, fixed_torque);
+  return simulator;
+}
+
+}  // namespace cbbg::plant::testing
