@@ -34,7 +34,7 @@ constexpr Entry kBlocks[] = {
     {"rbf", "Gaussian radial-basis features on the centres x centres grid"},
     {"critic", "V(s) = w . phi, TD(lambda) with an eligibility trace"},
     {"actor", "a_A = theta . phi, improved or weighted rule"},
-    {"supervisor", "PdSupervisor (supervisor.kind: pd), the cerebellum's target action"},
+    {"supervisor", "PdSupervisor (supervisor.kind: pd) or LqrSupervisor (lqr): the cerebellum"},
     {"tropism", "T = k1 / (1 + exp(k2 V)); k1 annealed between trials"},
     {"sampler", "BoltzmannSampler: a_E ~ N(a_A, K_B T / 2)"},
     {"omega", "OmegaSchedule: omega(t), or fixed 0 or 1"},

@@ -23,8 +23,8 @@ enum PreviousTick : int {
 ActorRule parse_actor_rule(std::string_view text) {
   if (text == "improved") return ActorRule::kImproved;
   if (text == "weighted") return ActorRule::kWeighted;
-  throw std::invalid_argument("actor.rule must be improved or weighted; got '" +
-                              std::string(text) + "'");
+  throw std::invalid_argument("actor.rule must be improved or weighted; got '" + std::string(text) +
+                              "'");
 }
 
 std::string_view to_string(ActorRule rule) {
@@ -60,32 +60,35 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
         action[0] = context.discrete_state().head(n).dot(context.input(features));
       },
       {&features}, "a_A(t) = theta . phi(s_t)");
-  declare_periodic_update(period, 0.0, [this, n, &features, &td_error, &supervisor, &exploration,
-                                        &omega](BlockContext& context, VectorRef next) {
-    const auto state = context.discrete_state();
-    const auto previous = state.segment(2 * n, kPreviousTickSize);
-    const auto phi = context.input(features);
-    if (previous[kHasPrevious] != 0.0) {
-      const double delta = context.input(td_error)[0];
-      const double a_s = previous[kSupervisorAction];
-      const double a_e = previous[kExplorationAction];
-      const double a_a = previous[kActorAction];
-      const double w = previous[kOmega];
-      const double alpha = params_.alpha;
-      const double step = params_.rule == ActorRule::kImproved
-                               ? alpha * delta * (w * (a_e - a_s) + (a_s - a_a))
-                               : w * alpha * delta * (a_e - a_a) + (1.0 - w) * alpha * (a_s - a_a);
-      next.head(n) = state.head(n) + step * state.segment(n, n);
-    }
-    next.segment(n, n) = phi;
-    auto stored = next.segment(2 * n, kPreviousTickSize);
-    stored[kSupervisorAction] = context.input(supervisor)[0];
-    stored[kExplorationAction] = context.input(exploration)[0];
-    stored[kActorAction] = state.head(n).dot(phi);  // the a_A output at t, before learning
-    stored[kOmega] = context.input(omega)[0];
-    stored[kHasPrevious] = 1.0;
-    return EventStatus::succeeded();
-  });
+  declare_periodic_update(
+      period, 0.0,
+      [this, n, &features, &td_error, &supervisor, &exploration, &omega](BlockContext& context,
+                                                                         VectorRef next) {
+        const auto state = context.discrete_state();
+        const auto previous = state.segment(2 * n, kPreviousTickSize);
+        const auto phi = context.input(features);
+        if (previous[kHasPrevious] != 0.0) {
+          const double delta = context.input(td_error)[0];
+          const double a_s = previous[kSupervisorAction];
+          const double a_e = previous[kExplorationAction];
+          const double a_a = previous[kActorAction];
+          const double w = previous[kOmega];
+          const double alpha = params_.alpha;
+          const double step =
+              params_.rule == ActorRule::kImproved
+                  ? alpha * delta * (w * (a_e - a_s) + (a_s - a_a))
+                  : w * alpha * delta * (a_e - a_a) + (1.0 - w) * alpha * (a_s - a_a);
+          next.head(n) = state.head(n) + step * state.segment(n, n);
+        }
+        next.segment(n, n) = phi;
+        auto stored = next.segment(2 * n, kPreviousTickSize);
+        stored[kSupervisorAction] = context.input(supervisor)[0];
+        stored[kExplorationAction] = context.input(exploration)[0];
+        stored[kActorAction] = state.head(n).dot(phi);  // the a_A output at t, before learning
+        stored[kOmega] = context.input(omega)[0];
+        stored[kHasPrevious] = 1.0;
+        return EventStatus::succeeded();
+      });
 }
 
 void Actor::start_trial(Context& context) const {

@@ -20,7 +20,7 @@ std::string_view to_string(ActorRule rule);
 
 // Config keys actor.*.
 struct ActorParams {
-  double alpha = 0.1;                    // actor.alpha: learning rate, > 0
+  double alpha = 0.1;                     // actor.alpha: learning rate, > 0
   ActorRule rule = ActorRule::kImproved;  // actor.rule
 
   // Throws naming the key unless alpha is finite and > 0 and rule is one of the two.

@@ -15,7 +15,8 @@ void CriticParams::validate() const {
 Critic::Critic(std::string name, int num_features, const CriticParams& params, double period)
     : Block(std::move(name)), num_features_(num_features), params_(params) {
   if (num_features < 1) {
-    throw std::invalid_argument("block '" + path() + "': the critic needs at least 1 feature; got " +
+    throw std::invalid_argument("block '" + path() +
+                                "': the critic needs at least 1 feature; got " +
                                 std::to_string(num_features));
   }
   params_.validate();
@@ -56,8 +57,7 @@ double Critic::td_error(const BlockContext& context) const {
   const auto w = state.head(n);
   const bool failed = context.input(*failed_)[0] > 0.5;
   const double next_value = failed ? 0.0 : w.dot(context.input(*features_));
-  return context.input(*reward_)[0] + params_.gamma * next_value -
-         w.dot(state.segment(2 * n, n));
+  return context.input(*reward_)[0] + params_.gamma * next_value - w.dot(state.segment(2 * n, n));
 }
 
 void Critic::start_trial(Context& context) const {

@@ -31,10 +31,9 @@ LqrSupervisor::LqrSupervisor(std::string name, const plant::RobotParams& robot,
       "action", 1,
       [this, &measured](const BlockContext& context, VectorRef action) {
         const auto y = context.input(measured);
-        const Eigen::Vector4d x(y[kMeasuredThetaB],
-                                (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0,
-                                y[kMeasuredThetaBDot],
-                                (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0);
+        const Eigen::Vector4d x(
+            y[kMeasuredThetaB], (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0,
+            y[kMeasuredThetaBDot], (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0);
         action[0] = -gain_.dot(x);
       },
       {&measured}, "a_S = -K x, the LQR torque");

@@ -12,8 +12,7 @@ Mixer::Mixer(std::string name) : Block(std::move(name)) {
       "action", 1,
       [&exploration, &supervisor, &omega](const BlockContext& context, VectorRef action) {
         const double w = context.input(omega)[0];
-        action[0] =
-            w * context.input(exploration)[0] + (1.0 - w) * context.input(supervisor)[0];
+        action[0] = w * context.input(exploration)[0] + (1.0 - w) * context.input(supervisor)[0];
       },
       {&exploration, &supervisor, &omega}, "a = omega a_E + (1 - omega) a_S");
 }

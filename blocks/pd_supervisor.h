@@ -8,10 +8,10 @@ namespace cbbg::blocks {
 
 // Config keys supervisor.* of the PD supervisor (supervisor.kind: pd).
 struct PdSupervisorParams {
-  double k_theta = 50.0;  // supervisor.k_theta: N m / rad
+  double k_theta = 50.0;   // supervisor.k_theta: N m / rad
   double k_dtheta = 10.0;  // supervisor.k_dtheta: N m s / rad
-  double k_phi = 1.0;     // supervisor.k_phi: N m / rad
-  double k_dphi = 1.0;    // supervisor.k_dphi: N m s / rad
+  double k_phi = 1.0;      // supervisor.k_phi: N m / rad
+  double k_dphi = 1.0;     // supervisor.k_dphi: N m s / rad
 
   // Throws naming the key unless every gain is finite.
   void validate() const;

@@ -16,9 +16,9 @@ void RbfParams::validate() const {
     const std::string key = "rbf.centres[" + std::to_string(i) + "]";
     check_finite(key, centres[i]);
     if (i > 0 && centres[i] <= centres[i - 1]) {
-      throw_invalid_parameter(key, "must be greater than the centre before it (" +
-                                       format_number(centres[i - 1]) + ")",
-                              centres[i]);
+      throw_invalid_parameter(
+          key, "must be greater than the centre before it (" + format_number(centres[i - 1]) + ")",
+          centres[i]);
     }
   }
   check_positive("rbf.width", width);

@@ -49,8 +49,6 @@ Reward::Reward(std::string name, const RewardParams& params, double period)
   });
 }
 
-void Reward::start_trial(Context& context) const {
-  context.discrete_state(*this).setZero();
-}
+void Reward::start_trial(Context& context) const { context.discrete_state(*this).setZero(); }
 
 }  // namespace cbbg::blocks

@@ -21,7 +21,7 @@ MatrixXd solve_lyapunov(const MatrixXd& F, const MatrixXd& M) {
   MatrixXd kronecker = MatrixXd::Zero(n * n, n * n);
   const MatrixXd Ft = F.transpose();
   for (Eigen::Index i = 0; i < n; ++i) {
-    kronecker.block(i * n, i * n, n, n) += Ft;                       // I (x) F'
+    kronecker.block(i * n, i * n, n, n) += Ft;  // I (x) F'
     for (Eigen::Index j = 0; j < n; ++j) {
       kronecker.block(i * n, j * n, n, n).diagonal().array() += Ft(i, j);  // F' (x) I
     }
@@ -32,9 +32,7 @@ MatrixXd solve_lyapunov(const MatrixXd& F, const MatrixXd& M) {
   return (X + X.transpose()) / 2.0;
 }
 
-bool is_stable(const MatrixXd& F) {
-  return (F.eigenvalues().real().array() < 0.0).all();
-}
+bool is_stable(const MatrixXd& F) { return (F.eigenvalues().real().array() < 0.0).all(); }
 
 }  // namespace
 
@@ -97,9 +95,9 @@ MatrixXd solve_continuous_riccati(const MatrixXd& A, const MatrixXd& B, const Ma
   const double residual = riccati_residual(A, B, Q, R, X).norm();
   const double scale = 1.0 + Q.norm() + (A.transpose() * X).norm() + (X * G * X).norm();
   if (!X.allFinite() || !is_stable(A - G * X) || residual > 1e-8 * scale) {
-    throw std::invalid_argument(
-        "Riccati equation: no stabilising solution found (residual " + std::to_string(residual) +
-        "): (A, B) not stabilisable or (A, Q) not detectable");
+    throw std::invalid_argument("Riccati equation: no stabilising solution found (residual " +
+                                std::to_string(residual) +
+                                "): (A, B) not stabilisable or (A, Q) not detectable");
   }
   return X;
 }

@@ -11,9 +11,9 @@ namespace cbbg::blocks {
 namespace {
 
 // Plant state index of each measured signal.
-constexpr std::array<int, kMeasuredSize> kPlantIndex = {
-    plant::kThetaB,   plant::kThetaBDot,   plant::kPhiLeft,
-    plant::kPhiRight, plant::kPhiLeftDot, plant::kPhiRightDot};
+constexpr std::array<int, kMeasuredSize> kPlantIndex = {plant::kThetaB,     plant::kThetaBDot,
+                                                        plant::kPhiLeft,    plant::kPhiRight,
+                                                        plant::kPhiLeftDot, plant::kPhiRightDot};
 
 }  // namespace
 
@@ -56,8 +56,8 @@ Sensors::Sensors(std::string name, const SensorsParams& params, double period)
 
 void Sensors::draw_noise(RandomGenerator& generator, VectorRef noise) const {
   for (int i = 0; i < kMeasuredSize; ++i) {
-    noise[i] = params_.noise_std[static_cast<size_t>(i)] > 0.0 ? draw_standard_normal(generator)
-                                                                : 0.0;
+    noise[i] =
+        params_.noise_std[static_cast<size_t>(i)] > 0.0 ? draw_standard_normal(generator) : 0.0;
   }
 }
 

@@ -99,7 +99,7 @@ std::vector<KeySpec> make_schema() {
       number("supervisor.k_dtheta", 10.0, "PD gain on theta_b', N m s/rad"),
       number("supervisor.k_phi", 1.0, "PD gain on (phi_l + phi_r)/2, N m/rad"),
       number("supervisor.k_dphi", 1.0, "PD gain on (phi_l' + phi_r')/2, N m s/rad"),
-      numbers("supervisor.lqr_q", {100, 1, 10, 1},
+      numbers("supervisor.lqr_q", {100, 1, 1, 1},
               "LQR state weights on (theta_b, phi, theta_b', phi')", 4, 0.0),
       positive("supervisor.lqr_r", 1.0, "LQR weight on the torque"),
       positive("critic.beta", 0.1, "critic learning rate"),

@@ -6,6 +6,7 @@
 #include "blocks/boltzmann_sampler.h"
 #include "blocks/entropy.h"
 #include "blocks/failure_detector.h"
+#include "blocks/lqr_supervisor.h"
 #include "blocks/mixer.h"
 #include "blocks/normaliser.h"
 #include "blocks/omega_schedule.h"
@@ -92,8 +93,11 @@ ControllerDiagram build_controller_diagram(std::string_view name, const config::
   if (arm == Arm::kBgOnly) {
     supervisor_action = &constant(builder, "no_supervisor", 0.0);
   } else {
-    auto& supervisor =
-        builder.emplace<blocks::PdSupervisor>("supervisor", pd_supervisor_params(config));
+    const Block& supervisor =
+        config.text("supervisor.kind") == "lqr"
+            ? static_cast<const Block&>(builder.emplace<blocks::LqrSupervisor>(
+                  "supervisor", robot_params(config), lqr_supervisor_params(config)))
+            : builder.emplace<blocks::PdSupervisor>("supervisor", pd_supervisor_params(config));
     builder.connect(measured, supervisor.input_port("measured"));
     supervisor_action = &supervisor.output_port("action");
   }

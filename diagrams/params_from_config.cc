@@ -75,6 +75,13 @@ blocks::PdSupervisorParams pd_supervisor_params(const config::Config& c) {
   return validated(p);
 }
 
+blocks::LqrSupervisorParams lqr_supervisor_params(const config::Config& c) {
+  blocks::LqrSupervisorParams p;
+  p.lqr_q = fixed_list<4>(c.numbers("supervisor.lqr_q"));
+  p.lqr_r = c.number("supervisor.lqr_r");
+  return validated(p);
+}
+
 blocks::CriticParams critic_params(const config::Config& c) {
   blocks::CriticParams p;
   p.beta = c.number("critic.beta");
@@ -140,6 +147,7 @@ void validate_all(const config::Config& c) {
   normaliser_params(c);
   rbf_params(c);
   pd_supervisor_params(c);
+  lqr_supervisor_params(c);
   critic_params(c);
   actor_params(c);
   tropism_params(c);

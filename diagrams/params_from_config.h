@@ -7,6 +7,7 @@
 #include "blocks/critic.h"
 #include "blocks/entropy.h"
 #include "blocks/failure_detector.h"
+#include "blocks/lqr_supervisor.h"
 #include "blocks/normaliser.h"
 #include "blocks/omega_schedule.h"
 #include "blocks/pd_supervisor.h"
@@ -24,6 +25,7 @@ blocks::SensorsParams sensors_params(const config::Config& config);
 blocks::NormaliserParams normaliser_params(const config::Config& config);
 blocks::RbfParams rbf_params(const config::Config& config);
 blocks::PdSupervisorParams pd_supervisor_params(const config::Config& config);
+blocks::LqrSupervisorParams lqr_supervisor_params(const config::Config& config);
 blocks::CriticParams critic_params(const config::Config& config);
 blocks::ActorParams actor_params(const config::Config& config);
 blocks::TropismParams tropism_params(const config::Config& config);

@@ -5,17 +5,17 @@
 
 #include "framework/block_context.h"
 #include "plant/plant_ports.h"
-#include "plant/robot_dynamics.h"
 #include "plant/plant_state.h"
+#include "plant/robot_dynamics.h"
 
 namespace cbbg::plant {
 namespace {
 
 // Layout of the continuous state.
 enum ContinuousIndex : int {
-  kQ = 0,       // theta_b, phi_l, phi_r
-  kQDot = 3,    // their rates
-  kPose = 6,    // x, y, yaw
+  kQ = 0,     // theta_b, phi_l, phi_r
+  kQDot = 3,  // their rates
+  kPose = 6,  // x, y, yaw
   kContinuousSize = 9
 };
 
@@ -38,8 +38,8 @@ Output to_output(const RobotParams& params, const ConstVectorView& x) {
 
 Vector to_continuous(const Vector& y) {
   Vector x(kContinuousSize);
-  x << y[kThetaB], y[kPhiLeft], y[kPhiRight], y[kThetaBDot], y[kPhiLeftDot], y[kPhiRightDot],
-      y[kX], y[kY], y[kYaw];
+  x << y[kThetaB], y[kPhiLeft], y[kPhiRight], y[kThetaBDot], y[kPhiLeftDot], y[kPhiRightDot], y[kX],
+      y[kY], y[kYaw];
   return x;
 }
 
@@ -68,8 +68,8 @@ AnalyticPlant::AnalyticPlant(std::string name, const RobotParams& params, double
         }
         const Coordinates q = x.segment<3>(kQ);
         const Coordinates q_dot = x.segment<3>(kQDot);
-        const Torques applied = saturate_torque(Torques(tau[kTauLeft], tau[kTauRight]),
-                                                params_.torque_limit);
+        const Torques applied =
+            saturate_torque(Torques(tau[kTauLeft], tau[kTauRight]), params_.torque_limit);
         const double v = forward_speed(params_, q_dot[1], q_dot[2]);
         const double yaw = x[kPose + 2];
         x_dot.segment<3>(kQ) = q_dot;

@@ -36,8 +36,8 @@ class ViscousFriction final : public SimTK::Force::Custom::Implementation {
     const double right_slip = right_.getOneU(state, 0) - theta_dot;
     left_.applyOneMobilityForce(state, 0, -ground_ * left_.getOneU(state, 0) - axle_ * left_slip,
                                 mobility_forces);
-    right_.applyOneMobilityForce(
-        state, 0, -ground_ * right_.getOneU(state, 0) - axle_ * right_slip, mobility_forces);
+    right_.applyOneMobilityForce(state, 0, -ground_ * right_.getOneU(state, 0) - axle_ * right_slip,
+                                 mobility_forces);
     body_.applyOneMobilityForce(state, 0, axle_ * (left_slip + right_slip), mobility_forces);
   }
   SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0.0; }
@@ -73,10 +73,10 @@ struct MultibodyRobot::Model {
     // would be wrong while turning and moving at once.
     const Vec3 left_contact(0, p.track_width / 2, -p.wheel_radius);
     const Vec3 right_contact(0, -p.track_width / 2, -p.wheel_radius);
-    SimTK::Constraint::NoSlip1D(base, left_contact, SimTK::UnitVec3(SimTK::XAxis),
-                                matter.Ground(), wheel_left);
-    SimTK::Constraint::NoSlip1D(base, right_contact, SimTK::UnitVec3(SimTK::XAxis),
-                                matter.Ground(), wheel_right);
+    SimTK::Constraint::NoSlip1D(base, left_contact, SimTK::UnitVec3(SimTK::XAxis), matter.Ground(),
+                                wheel_left);
+    SimTK::Constraint::NoSlip1D(base, right_contact, SimTK::UnitVec3(SimTK::XAxis), matter.Ground(),
+                                wheel_right);
     SimTK::Constraint::NoSlip1D(base, Vec3(0, 0, -p.wheel_radius), SimTK::UnitVec3(SimTK::YAxis),
                                 matter.Ground(), base);
     default_state = system.realizeTopology();
@@ -158,8 +158,7 @@ void MultibodyRobotRun::set_torque(double tau_left, double tau_right) {
   // stage sees the new torques.
   SimTK::State& state = integration_->integrator.updAdvancedState();
   model.motors.setOneMobilityForce(state, model.wheel_left, SimTK::MobilizerUIndex(0), tau_left);
-  model.motors.setOneMobilityForce(state, model.wheel_right, SimTK::MobilizerUIndex(0),
-                                   tau_right);
+  model.motors.setOneMobilityForce(state, model.wheel_right, SimTK::MobilizerUIndex(0), tau_right);
   model.motors.setOneMobilityForce(state, model.body, SimTK::MobilizerUIndex(0),
                                    -(tau_left + tau_right));
 }

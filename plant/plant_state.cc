@@ -32,8 +32,7 @@ std::string list_state(const double* state, Eigen::Index size) {
 
 Vector initial_state_vector(double initial_pitch) {
   if (!std::isfinite(initial_pitch)) {
-    throw std::invalid_argument("trial.theta0 must be finite; got " +
-                                format_number(initial_pitch));
+    throw std::invalid_argument("trial.theta0 must be finite; got " + format_number(initial_pitch));
   }
   Vector state = Vector::Zero(kStateSize);
   state[kThetaB] = initial_pitch;
@@ -60,11 +59,11 @@ void check_torque_finite(const Block& plant, const Eigen::Ref<const Eigen::Vecto
                         ", tau_r = " + format_number(torque[kTauRight]) + ")");
 }
 
-void check_state_finite(const Block& plant, const Eigen::Ref<const Eigen::VectorXd>& state, double time) {
+void check_state_finite(const Block& plant, const Eigen::Ref<const Eigen::VectorXd>& state,
+                        double time) {
   if (state.allFinite()) return;
   throw SimulationError("block '" + plant.path() + "': state is not finite at t = " +
-                        format_number(time) + " (" + list_state(state.data(), state.size()) +
-                        ")");
+                        format_number(time) + " (" + list_state(state.data(), state.size()) + ")");
 }
 
 }  // namespace cbbg::plant

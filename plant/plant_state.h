@@ -18,6 +18,7 @@ void check_state_argument(const Block& plant, const Vector& state);
 // "block 'robot/plant': torque input is not finite (tau_l = nan, tau_r = 0)".
 void check_torque_finite(const Block& plant, const Eigen::Ref<const Eigen::VectorXd>& torque);
 // "block 'robot/plant': state is not finite at t = 1.25 (theta_b = inf, theta_b' = 0, ...)".
-void check_state_finite(const Block& plant, const Eigen::Ref<const Eigen::VectorXd>& state, double time);
+void check_state_finite(const Block& plant, const Eigen::Ref<const Eigen::VectorXd>& state,
+                        double time);
 
 }  // namespace cbbg::plant

@@ -23,8 +23,8 @@ Eigen::Matrix3d mass_matrix(const RobotParams& p, double theta_b) {
   const double yaw_inertia =
       yaw_inertia_growth(p) * s * s + p.body_yaw_inertia + 2.0 * p.wheel_diametral_inertia;
   const double coupling = p.body_mass * p.com_height * p.wheel_radius * c / 2.0;
-  const double wheel = p.wheel_mass * r2 + p.wheel_inertia + p.body_mass * r2 / 4.0 +
-                       rho * rho * yaw_inertia;
+  const double wheel =
+      p.wheel_mass * r2 + p.wheel_inertia + p.body_mass * r2 / 4.0 + rho * rho * yaw_inertia;
   const double cross = p.body_mass * r2 / 4.0 - rho * rho * yaw_inertia;
   Eigen::Matrix3d m;
   m << p.body_mass * p.com_height * p.com_height + p.body_pitch_inertia, coupling, coupling,  //
@@ -44,9 +44,10 @@ Coordinates bias_forces(const RobotParams& p, const Coordinates& q, const Coordi
   const double growth = yaw_inertia_growth(p);
   const double mu_w = p.axle_friction;
   const double mu_g = p.wheel_ground_friction;
-  const double gyro = growth * rho * rho * (phi_l_dot - phi_r_dot) * theta_dot * std::sin(2.0 * q[0]);
-  const double pitch_centrifugal = p.body_mass * p.com_height * p.wheel_radius / 2.0 *
-                                   theta_dot * theta_dot * s;
+  const double gyro =
+      growth * rho * rho * (phi_l_dot - phi_r_dot) * theta_dot * std::sin(2.0 * q[0]);
+  const double pitch_centrifugal =
+      p.body_mass * p.com_height * p.wheel_radius / 2.0 * theta_dot * theta_dot * s;
   // Sideways momentum of the leaning body, turned by the yaw rate (rolling constraint forces).
   const double sideways = p.body_mass * p.com_height * p.wheel_radius * rho * s * psi_dot;
   Coordinates n;

@@ -40,18 +40,16 @@ using Torques = Eigen::Vector2d;      // (tau_l, tau_r)
 
 Eigen::Matrix3d mass_matrix(const RobotParams& params, double theta_b);
 // N(q, q'): gravity, centrifugal and Coriolis terms, and viscous friction.
-Coordinates bias_forces(const RobotParams& params, const Coordinates& q,
-                        const Coordinates& q_dot);
+Coordinates bias_forces(const RobotParams& params, const Coordinates& q, const Coordinates& q_dot);
 // E: how the motor torques enter the three equations.
 Eigen::Matrix<double, 3, 2> torque_input_matrix();
 // q'' = M(q)^-1 (E T - N(q, q')). T is used as given (saturation is the plant's job).
-Coordinates accelerations(const RobotParams& params, const Coordinates& q,
-                          const Coordinates& q_dot, const Torques& torque);
+Coordinates accelerations(const RobotParams& params, const Coordinates& q, const Coordinates& q_dot,
+                          const Torques& torque);
 
 // Kinetic plus gravitational energy, zero with the body's centre of mass at axle height:
 // q'^T M(q) q' / 2 + M g L cos theta_b. Constant when friction and torques are off.
-double mechanical_energy(const RobotParams& params, const Coordinates& q,
-                         const Coordinates& q_dot);
+double mechanical_energy(const RobotParams& params, const Coordinates& q, const Coordinates& q_dot);
 
 // psi' = R (phi_r' - phi_l') / d.
 double yaw_rate(const RobotParams& params, double phi_left_dot, double phi_right_dot);

@@ -16,8 +16,8 @@ std::string format_number(double value) {
 
 void require_positive(const char* key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
-    throw std::invalid_argument(std::string("plant.") + key +
-                                " must be positive and finite; got " + format_number(value));
+    throw std::invalid_argument(std::string("plant.") + key + " must be positive and finite; got " +
+                                format_number(value));
   }
 }
 
@@ -46,8 +46,7 @@ void RobotParams::validate() const {
   require_non_negative("axle_friction", axle_friction);
   require_positive("torque_limit", torque_limit);
   if (!(std::isfinite(accuracy) && accuracy > 0.0 && accuracy < 1.0)) {
-    throw std::invalid_argument("plant.accuracy must be in (0, 1); got " +
-                                format_number(accuracy));
+    throw std::invalid_argument("plant.accuracy must be in (0, 1); got " + format_number(accuracy));
   }
 }
 
@@ -67,8 +66,8 @@ void RobotParams::validate_rigid_bodies() const {
     throw std::invalid_argument(
         "plant.wheel_diametral_inertia must be at least half of plant.wheel_inertia, as for "
         "any rigid wheel; got " +
-        format_number(wheel_diametral_inertia) + " with plant.wheel_inertia = " +
-        format_number(wheel_inertia));
+        format_number(wheel_diametral_inertia) +
+        " with plant.wheel_inertia = " + format_number(wheel_inertia));
   }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The two-wheeled robot's physical parameters (SPEC section 1), one field per config key
-// under `plant.` (SPEC section 4), with the SPEC defaults.
+// under `plant.` (SPEC section 4), with the SPEC defaults; body_roll_inertia and
+// wheel_diametral_inertia are two keys this project adds (see below).
 
 namespace cbbg::plant {
 
@@ -28,9 +29,10 @@ struct RobotParams {
   // body obeys (J_y <= J_x + J_z), and Simbody rejects it. They also give the wheels no
   // inertia about a diameter. Both only act while the robot turns (yaw rate != 0), never in
   // the straight-line trials of the experiments. With body_roll_inertia = body_yaw_inertia
-  // and wheel_diametral_inertia = 0 the equations are exactly SPEC's (analytic plant only).
-  double body_roll_inertia = 1.5417;        // J_x, body roll about its centre of mass, kg m^2;
-                                            // default J_y: a body symmetric about its long axis
+  // and wheel_diametral_inertia = 0 the inertia terms are SPEC's (analytic plant only;
+  // robot_dynamics.h lists the one other difference from SPEC's equations).
+  double body_roll_inertia = 1.5417;          // J_x, body roll about its centre of mass, kg m^2;
+                                              // default J_y: a body symmetric about its long axis
   double wheel_diametral_inertia = 0.005625;  // I_d, wheel about a diameter, kg m^2; default
                                               // J_w / 2: a thin disc, as J_w = m R^2 / 2 is
 

@@ -29,7 +29,8 @@ std::string format_number(double value) {
 // matched the context.
 class SimbodyPlant::Scratch final : public BlockScratch {
  public:
-  explicit Scratch(const RobotParams& params) : run(std::make_shared<const MultibodyRobot>(params)) {}
+  explicit Scratch(const RobotParams& params)
+      : run(std::make_shared<const MultibodyRobot>(params)) {}
 
   // A copy gets a system of its own; its run starts where this one is (its integrator
   // restarts from that state).

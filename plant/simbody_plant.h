@@ -32,7 +32,7 @@ namespace cbbg::plant {
 /// not safe to realise from two threads at once, and contexts may run in parallel.) When
 /// the context's state or time differs from where the scratch left it (reset, set_state,
 /// Context::reset_all_state, a restored or cloned context), the scratch restarts its
-/// integrator from the context's state; nothing is rebuilt.
+/// integrator from the context's state; a reset rebuilds nothing.
 /// Parameters: RobotParams (plant.*, validated with validate_rigid_bodies); the initial
 /// pitch (trial.theta0), the rest zero.
 /// Errors: a non-finite torque or state, or a Simbody failure, throws SimulationError naming

@@ -90,6 +90,9 @@ def read_summary(path):
 
     check(isinstance(summary.get("experiment", ""), str), '"experiment" must be a string')
     check(isinstance(summary.get("plant", ""), str), '"plant" must be a string')
+    max_trials = summary.get("max_trials")
+    check(max_trials is None or (is_int(max_trials) and max_trials > 0),
+          '"max_trials" must be an integer > 0')
     seeds = summary.get("seeds")
     check(seeds is None or (isinstance(seeds, list) and all(is_int(s) for s in seeds)),
           '"seeds" must be a list of integers')
@@ -542,7 +545,7 @@ def plot_exp1_pitch(arm, seed, selection, pitch, failure_angle, plant):
     return fig
 
 
-def plot_failures(arms, per_arm, medians, paper, experiment, plant):
+def plot_failures(arms, per_arm, medians, paper, max_trials, experiment, plant):
     fig, ax = new_figure()
     labelled = set()
 
@@ -552,6 +555,8 @@ def plot_failures(arms, per_arm, medians, paper, experiment, plant):
         labelled.add(text)
         return text
 
+    never_succeeded = (f"seed that never succeeded in {max_trials} trials" if max_trials
+                       else "seed that never succeeded (at its trial count)")
     tick_labels = []
     for x, arm in enumerate(arms):
         seeds = per_arm[arm]
@@ -563,7 +568,7 @@ def plot_failures(arms, per_arm, medians, paper, experiment, plant):
                         zorder=3, label=label_once("one seed"))
             else:
                 ax.plot(x + dx, s.failures, "X", color="tab:red", markersize=8, zorder=3,
-                        label=label_once("seed that never succeeded (at its trial count)"))
+                        label=label_once(never_succeeded))
         if medians[arm] is not None:
             ax.hlines(medians[arm], x - 0.3, x + 0.3, color="black", linewidth=2.0, zorder=2,
                       label=label_once("median over seeds"))
@@ -702,8 +707,8 @@ def draw_exp1(save, summary, trials, pitch_path, failure_angle, experiment, plan
                  f"pitch_{file_name_part(arm)}.png")
     per_arm = {arm: failures_per_seed(summary, trials, arm) for arm in arms}
     medians = {arm: median_failures(summary, arm, per_arm[arm]) for arm in arms}
-    save(plot_failures(arms, per_arm, medians, summary.get("paper", {}), experiment,
-                       plant), "failures.png")
+    save(plot_failures(arms, per_arm, medians, summary.get("paper", {}),
+                       summary.get("max_trials"), experiment, plant), "failures.png")
 
 
 def draw_exp2(save, summary, trials, pitch_path, failure_angle, stages, experiment,

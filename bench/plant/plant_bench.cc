@@ -35,12 +35,11 @@ class PdLaw final : public Block {
  public:
   explicit PdLaw(std::string name) : Block(std::move(name)) {
     const InputPort& state = declare_input_port("state", kStateSize);
-    declare_output_port(
-        "torque", kTorqueSize,
-        [&state](const BlockContext& context, VectorRef torque) {
-          torque.setConstant(pd_action(context.input(state).data()));
-        },
-        {&state});
+    declare_output_port("torque", kTorqueSize,
+                        [&state](const BlockContext& context, VectorRef torque) {
+                          torque.setConstant(pd_action(context.input(state).data()));
+                        },
+                        {&state});
   }
 };
 
@@ -166,10 +165,42 @@ void BM_SimbodyDiagramOverPlainLoop(benchmark::State& state) {
   state.counters["diagram_over_plain"] = diagram_seconds / plain_seconds;
 }
 
+// What a new trial costs: the Simbody plant's reset (rewrite the context's state; the
+// scratch restarts its integrator at the next step) plus that first step, against building
+// a context (which builds a multibody system for its scratch) plus its first step.
+void BM_SimbodyResetAndFirstStep(benchmark::State& state) {
+  DiagramBuilder builder("robot");
+  auto& plant = builder.emplace<SimbodyPlant>("plant", RobotParams{});
+  builder.export_input(plant.input_port("torque"), "torque");
+  const auto diagram = builder.build();
+  Simulator simulator(*diagram);
+  simulator.context().fix_input(diagram->input_port("torque"), Vector::Zero(2));
+  for (auto _ : state) {
+    simulator.context().set_time(0.0);
+    plant.reset(simulator.context(), kDefaultInitialPitch);
+    simulator.initialize();
+    simulator.advance_to(kPeriod);
+  }
+}
+
+void BM_SimbodyNewContextAndFirstStep(benchmark::State& state) {
+  DiagramBuilder builder("robot");
+  auto& plant = builder.emplace<SimbodyPlant>("plant", RobotParams{});
+  builder.export_input(plant.input_port("torque"), "torque");
+  const auto diagram = builder.build();
+  for (auto _ : state) {
+    Simulator simulator(*diagram);
+    simulator.context().fix_input(diagram->input_port("torque"), Vector::Zero(2));
+    simulator.advance_to(kPeriod);
+  }
+}
+
 BENCHMARK(BM_AnalyticPlantStep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SimbodyPlantStep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SimbodyPlainLoop)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SimbodyDiagramOverPlainLoop)->Unit(benchmark::kMillisecond)->MinTime(5.0);
+BENCHMARK(BM_SimbodyResetAndFirstStep)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SimbodyNewContextAndFirstStep)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace cbbg::plant::bench

@@ -94,8 +94,8 @@ TEST(Actor, ImprovedRuleEqualsAlphaDeltaTimesMixedActionError) {
   const int n = 6;
   const double alpha = 0.3;
   DiagramBuilder builder("cbbg");
-  const auto& actor = builder.emplace<Actor>("actor", n, params_with(ActorRule::kImproved, alpha),
-                                             kPeriod);
+  const auto& actor =
+      builder.emplace<Actor>("actor", n, params_with(ActorRule::kImproved, alpha), kPeriod);
   const auto& mixer = builder.emplace<Mixer>("mixer");
   builder.export_input(actor.input_port("features"));
   builder.export_input(actor.input_port("td_error"));
@@ -223,15 +223,15 @@ TEST(Actor, ParsesItsRuleAndRejectsInvalidParameters) {
   EXPECT_THAT([] { parse_actor_rule("greedy"); },
               ThrowsMessage<std::invalid_argument>(
                   StrEq("actor.rule must be improved or weighted; got 'greedy'")));
-  EXPECT_THAT([] { Actor("actor", 2, params_with(ActorRule::kImproved, 0.0), kPeriod); },
-              ThrowsMessage<std::invalid_argument>(
-                  StrEq("actor.alpha must be finite and > 0; got 0")));
-  EXPECT_THAT([] { Actor("actor", 2, params_with(ActorRule::kImproved, NAN), kPeriod); },
-              ThrowsMessage<std::invalid_argument>(
-                  StrEq("actor.alpha must be finite and > 0; got nan")));
-  EXPECT_THAT([] { Actor("actor", 0, ActorParams{}, kPeriod); },
-              ThrowsMessage<std::invalid_argument>(
-                  HasSubstr("the actor needs at least 1 feature; got 0")));
+  EXPECT_THAT(
+      [] { Actor("actor", 2, params_with(ActorRule::kImproved, 0.0), kPeriod); },
+      ThrowsMessage<std::invalid_argument>(StrEq("actor.alpha must be finite and > 0; got 0")));
+  EXPECT_THAT(
+      [] { Actor("actor", 2, params_with(ActorRule::kImproved, NAN), kPeriod); },
+      ThrowsMessage<std::invalid_argument>(StrEq("actor.alpha must be finite and > 0; got nan")));
+  EXPECT_THAT(
+      [] { Actor("actor", 0, ActorParams{}, kPeriod); },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("the actor needs at least 1 feature; got 0")));
 }
 
 }  // namespace

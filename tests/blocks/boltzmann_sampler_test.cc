@@ -114,13 +114,14 @@ TEST(BoltzmannSampler, DeviationIsSqrtOfKbTOverTwoTimesTheHeldDraw) {
 TEST(BoltzmannSampler, RejectsNonPositiveOrNonFiniteKb) {
   SamplerParams zero;
   zero.k_b = 0.0;
-  EXPECT_THAT([&] { BoltzmannSampler("sampler", zero, kPeriod); },
-              ThrowsMessage<std::invalid_argument>(StrEq("sampler.k_b must be finite and > 0; got 0")));
+  EXPECT_THAT(
+      [&] { BoltzmannSampler("sampler", zero, kPeriod); },
+      ThrowsMessage<std::invalid_argument>(StrEq("sampler.k_b must be finite and > 0; got 0")));
   SamplerParams infinite;
   infinite.k_b = INFINITY;
-  EXPECT_THAT([&] { BoltzmannSampler("sampler", infinite, kPeriod); },
-              ThrowsMessage<std::invalid_argument>(
-                  StrEq("sampler.k_b must be finite and > 0; got inf")));
+  EXPECT_THAT(
+      [&] { BoltzmannSampler("sampler", infinite, kPeriod); },
+      ThrowsMessage<std::invalid_argument>(StrEq("sampler.k_b must be finite and > 0; got inf")));
 }
 
 }  // namespace

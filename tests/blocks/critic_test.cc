@@ -129,26 +129,23 @@ class RandomWalk final : public Block {
 
   explicit RandomWalk(std::string name) : Block(std::move(name)) {
     declare_discrete_state(Vector::Constant(1, kStart));
-    declare_output_port(
-        "features", kRightEnd - 1,
-        [](const BlockContext& context, VectorRef features) {
-          features.setZero();
-          const int s = position(context);
-          if (s > 0 && s < kRightEnd) features[s - 1] = 1.0;
-        },
-        {});
-    declare_output_port(
-        "reward", 1,
-        [](const BlockContext& context, VectorRef reward) {
-          reward[0] = position(context) == kRightEnd ? 1.0 : 0.0;
-        },
-        {});
-    declare_output_port(
-        "failed", 1,
-        [](const BlockContext& context, VectorRef failed) {
-          failed[0] = terminal(position(context)) ? 1.0 : 0.0;
-        },
-        {});
+    declare_output_port("features", kRightEnd - 1,
+                        [](const BlockContext& context, VectorRef features) {
+                          features.setZero();
+                          const int s = position(context);
+                          if (s > 0 && s < kRightEnd) features[s - 1] = 1.0;
+                        },
+                        {});
+    declare_output_port("reward", 1,
+                        [](const BlockContext& context, VectorRef reward) {
+                          reward[0] = position(context) == kRightEnd ? 1.0 : 0.0;
+                        },
+                        {});
+    declare_output_port("failed", 1,
+                        [](const BlockContext& context, VectorRef failed) {
+                          failed[0] = terminal(position(context)) ? 1.0 : 0.0;
+                        },
+                        {});
     declare_periodic_update(kPeriod, 0.0, [](BlockContext& context, VectorRef next) {
       const int s = position(context);
       if (terminal(s)) return EventStatus::terminate("the walk reached an end");
@@ -205,8 +202,8 @@ TEST(Critic, RejectsParametersOutsideTheirRanges) {
     params.lambda = lambda;
     return [params] { Critic("critic", 4, params, kPeriod); };
   };
-  EXPECT_THAT(make(0.1, 0.0, 0.8), ThrowsMessage<std::invalid_argument>(
-                                       StrEq("critic.gamma must be in (0, 1]; got 0")));
+  EXPECT_THAT(make(0.1, 0.0, 0.8),
+              ThrowsMessage<std::invalid_argument>(StrEq("critic.gamma must be in (0, 1]; got 0")));
   EXPECT_THAT(make(0.1, 1.5, 0.8), ThrowsMessage<std::invalid_argument>(
                                        StrEq("critic.gamma must be in (0, 1]; got 1.5")));
   EXPECT_THAT(make(0.1, 0.8, 1.0), ThrowsMessage<std::invalid_argument>(

@@ -25,8 +25,8 @@ double entropy_at(Harness& harness, double temperature) {
 
 TEST(Entropy, BitsAsWorkedOutByHand) {
   Harness harness("entropy", EntropyParams{});
-  EXPECT_NEAR(entropy_at(harness, 1.0 / kPiE), 0.0, 1e-15);   // log2(1) / 2
-  EXPECT_NEAR(entropy_at(harness, 4.0 / kPiE), 1.0, 1e-15);   // log2(4) / 2
+  EXPECT_NEAR(entropy_at(harness, 1.0 / kPiE), 0.0, 1e-15);            // log2(1) / 2
+  EXPECT_NEAR(entropy_at(harness, 4.0 / kPiE), 1.0, 1e-15);            // log2(4) / 2
   EXPECT_NEAR(entropy_at(harness, 1.0 / (16.0 * kPiE)), -2.0, 1e-15);  // negative when small
   EXPECT_EQ(entropy_at(harness, 0.0), -INFINITY);
 }
@@ -43,9 +43,9 @@ TEST(Entropy, ScalesWithKb) {
 TEST(Entropy, RejectsNonPositiveKb) {
   EntropyParams negative;
   negative.k_b = -1.0;
-  EXPECT_THAT([&] { Entropy("entropy", negative); },
-              ThrowsMessage<std::invalid_argument>(
-                  StrEq("sampler.k_b must be finite and > 0; got -1")));
+  EXPECT_THAT(
+      [&] { Entropy("entropy", negative); },
+      ThrowsMessage<std::invalid_argument>(StrEq("sampler.k_b must be finite and > 0; got -1")));
 }
 
 }  // namespace

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/Eigenvalues>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include "blocks/measured_signals.h"
 #include "blocks/riccati.h"
@@ -117,12 +117,11 @@ class BothWheels final : public Block {
  public:
   explicit BothWheels(std::string name) : Block(std::move(name)) {
     const InputPort& action = declare_input_port("action", 1);
-    declare_output_port(
-        "torque", plant::kTorqueSize,
-        [&action](const BlockContext& context, VectorRef torque) {
-          torque.setConstant(context.input(action)[0]);
-        },
-        {&action});
+    declare_output_port("torque", plant::kTorqueSize,
+                        [&action](const BlockContext& context, VectorRef torque) {
+                          torque.setConstant(context.input(action)[0]);
+                        },
+                        {&action});
   }
 };
 
@@ -131,8 +130,8 @@ TEST(LqrSupervisor, BalancesTheAnalyticPlantFromTheTrialStart) {
   DiagramBuilder builder("lqr_loop");
   const auto& robot_plant = builder.emplace<plant::AnalyticPlant>("plant", robot, 0.1744);
   const auto& sensors = builder.emplace<Sensors>("sensors", SensorsParams{}, kPeriod);
-  const auto& supervisor = builder.emplace<LqrSupervisor>("supervisor", robot,
-                                                          LqrSupervisorParams{});
+  const auto& supervisor =
+      builder.emplace<LqrSupervisor>("supervisor", robot, LqrSupervisorParams{});
   const auto& wheels = builder.emplace<BothWheels>("wheels");
   const auto& hold = builder.emplace<ZeroOrderHold>("hold", plant::kTorqueSize, kPeriod);
   builder.connect(robot_plant, "state", sensors, "plant_state");
@@ -154,7 +153,7 @@ TEST(LqrSupervisor, BalancesTheAnalyticPlantFromTheTrialStart) {
       last_second_pitch = std::max(last_second_pitch, pitch);
     }
   }
-  EXPECT_LT(largest_pitch, 0.5236);  // never fails
+  EXPECT_LT(largest_pitch, 0.5236);    // never fails
   EXPECT_LT(last_second_pitch, 1e-3);  // and settles upright
   const auto state = log.sample(log.num_samples() - 1);
   EXPECT_LT(std::abs(state[plant::kThetaBDot]), 1e-2);

@@ -70,13 +70,14 @@ TEST(OmegaSchedule, ParsesItsModeAndRejectsInvalidParameters) {
                   StrEq("omega.mode must be schedule, zero or one; got 'half'")));
   OmegaParams zero_n3;
   zero_n3.n3 = 0.0;
-  EXPECT_THAT([&] { OmegaSchedule("omega", zero_n3, kPeriod); },
-              ThrowsMessage<std::invalid_argument>(StrEq("omega.n3 must be finite and > 0; got 0")));
+  EXPECT_THAT(
+      [&] { OmegaSchedule("omega", zero_n3, kPeriod); },
+      ThrowsMessage<std::invalid_argument>(StrEq("omega.n3 must be finite and > 0; got 0")));
   OmegaParams negative_n2;
   negative_n2.n2 = -1.0;
-  EXPECT_THAT([&] { OmegaSchedule("omega", negative_n2, kPeriod); },
-              ThrowsMessage<std::invalid_argument>(
-                  StrEq("omega.n2 must be finite and >= 0; got -1")));
+  EXPECT_THAT(
+      [&] { OmegaSchedule("omega", negative_n2, kPeriod); },
+      ThrowsMessage<std::invalid_argument>(StrEq("omega.n2 must be finite and >= 0; got -1")));
 }
 
 }  // namespace

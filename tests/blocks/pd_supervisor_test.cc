@@ -48,13 +48,14 @@ TEST(PdSupervisor, UsesConfiguredGains) {
 TEST(PdSupervisor, RejectsNonFiniteGains) {
   PdSupervisorParams infinite;
   infinite.k_dtheta = INFINITY;
-  EXPECT_THAT([&] { PdSupervisor("supervisor", infinite); },
-              ThrowsMessage<std::invalid_argument>(
-                  StrEq("supervisor.k_dtheta must be finite; got inf")));
+  EXPECT_THAT(
+      [&] { PdSupervisor("supervisor", infinite); },
+      ThrowsMessage<std::invalid_argument>(StrEq("supervisor.k_dtheta must be finite; got inf")));
   PdSupervisorParams nan;
   nan.k_phi = NAN;
-  EXPECT_THAT([&] { PdSupervisor("supervisor", nan); },
-              ThrowsMessage<std::invalid_argument>(StrEq("supervisor.k_phi must be finite; got nan")));
+  EXPECT_THAT(
+      [&] { PdSupervisor("supervisor", nan); },
+      ThrowsMessage<std::invalid_argument>(StrEq("supervisor.k_phi must be finite; got nan")));
 }
 
 }  // namespace

@@ -37,9 +37,9 @@ TEST(RbfFeatures, MatchesHandValuesOnTheDefaultGrid) {
   harness.set_input("x", point(0.0, 0.0));
   Vector phi = harness.output("features");
   EXPECT_EQ(phi[3 * 7 + 3], 1.0);
-  EXPECT_NEAR(phi[3 * 7 + 4], std::exp(-2.0), 1e-16);   // centre (0, 1)
-  EXPECT_NEAR(phi[4 * 7 + 4], std::exp(-4.0), 1e-16);   // centre (1, 1)
-  EXPECT_NEAR(phi[0], std::exp(-36.0), 1e-25);          // centre (-3, -3)
+  EXPECT_NEAR(phi[3 * 7 + 4], std::exp(-2.0), 1e-16);  // centre (0, 1)
+  EXPECT_NEAR(phi[4 * 7 + 4], std::exp(-4.0), 1e-16);  // centre (1, 1)
+  EXPECT_NEAR(phi[0], std::exp(-36.0), 1e-25);         // centre (-3, -3)
 
   // Pitch picks the row, rate the column: x = (0.5, -1) is 0.5 from (0, -1) and (1, -1).
   harness.set_input("x", point(0.5, -1.0));
@@ -64,8 +64,8 @@ TEST(RbfFeatures, MatchDirectEvaluationOnAnyGrid) {
     ASSERT_EQ(phi.size(), 16);
     for (int i = 0; i < 4; ++i) {
       for (int j = 0; j < 4; ++j) {
-        const Vector centre = point(params.centres[static_cast<size_t>(i)],
-                                    params.centres[static_cast<size_t>(j)]);
+        const Vector centre =
+            point(params.centres[static_cast<size_t>(i)], params.centres[static_cast<size_t>(j)]);
         const double expected =
             std::exp(-(x - centre).squaredNorm() / (2.0 * params.width * params.width));
         EXPECT_NEAR(phi[i * 4 + j], expected, 1e-15);
@@ -106,9 +106,9 @@ TEST(RbfFeatures, AreTheGradientOfTheValueWithRespectToTheWeights) {
 TEST(RbfFeatures, RejectsInvalidGrids) {
   RbfParams negative_width;
   negative_width.width = -0.5;
-  EXPECT_THAT([&] { RbfFeatures("rbf", negative_width); },
-              ThrowsMessage<std::invalid_argument>(
-                  StrEq("rbf.width must be finite and > 0; got -0.5")));
+  EXPECT_THAT(
+      [&] { RbfFeatures("rbf", negative_width); },
+      ThrowsMessage<std::invalid_argument>(StrEq("rbf.width must be finite and > 0; got -0.5")));
   RbfParams no_centres;
   no_centres.centres.clear();
   EXPECT_THAT([&] { RbfFeatures("rbf", no_centres); },
@@ -116,14 +116,14 @@ TEST(RbfFeatures, RejectsInvalidGrids) {
                   StrEq("rbf.centres must list at least one centre; got none")));
   RbfParams nan_centre;
   nan_centre.centres = {-1.0, NAN, 1.0};
-  EXPECT_THAT([&] { RbfFeatures("rbf", nan_centre); },
-              ThrowsMessage<std::invalid_argument>(
-                  StrEq("rbf.centres[1] must be finite; got nan")));
+  EXPECT_THAT(
+      [&] { RbfFeatures("rbf", nan_centre); },
+      ThrowsMessage<std::invalid_argument>(StrEq("rbf.centres[1] must be finite; got nan")));
   RbfParams unordered;
   unordered.centres = {0.0, 1.0, 1.0};
   EXPECT_THAT([&] { RbfFeatures("rbf", unordered); },
-              ThrowsMessage<std::invalid_argument>(StrEq(
-                  "rbf.centres[2] must be greater than the centre before it (1); got 1")));
+              ThrowsMessage<std::invalid_argument>(
+                  StrEq("rbf.centres[2] must be greater than the centre before it (1); got 1")));
 }
 
 }  // namespace

@@ -32,17 +32,17 @@ double reward_at(Harness& harness, double theta, double theta_dot, bool failed =
 
 TEST(Reward, PenalisesAGrowingSlidingSurfaceAsWorkedOutByHand) {
   Harness harness("reward", RewardParams{}, kPeriod);  // s = 10 theta + theta'
-  EXPECT_EQ(reward_at(harness, 0.1, -0.5), 0.0);    // s = 0.5; no transition yet
-  EXPECT_EQ(reward_at(harness, 0.05, 0.2), -1.0);   // s = 0.7: 0.49 > 0.25
-  EXPECT_EQ(reward_at(harness, 0.05, -0.2), 0.0);   // s = 0.3: 0.09 <= 0.49
-  EXPECT_EQ(reward_at(harness, -0.05, 0.2), 0.0);   // s = -0.3: equal squares count as no growth
-  EXPECT_EQ(reward_at(harness, 0.0, 0.31), -1.0);   // s = 0.31
+  EXPECT_EQ(reward_at(harness, 0.1, -0.5), 0.0);       // s = 0.5; no transition yet
+  EXPECT_EQ(reward_at(harness, 0.05, 0.2), -1.0);      // s = 0.7: 0.49 > 0.25
+  EXPECT_EQ(reward_at(harness, 0.05, -0.2), 0.0);      // s = 0.3: 0.09 <= 0.49
+  EXPECT_EQ(reward_at(harness, -0.05, 0.2), 0.0);      // s = -0.3: equal squares count as no growth
+  EXPECT_EQ(reward_at(harness, 0.0, 0.31), -1.0);      // s = 0.31
 }
 
 TEST(Reward, FailureIsPenalisedEvenWhenTheSurfaceShrinks) {
   Harness harness("reward", RewardParams{}, kPeriod);
-  EXPECT_EQ(reward_at(harness, 0.1, 0.0), 0.0);          // s = 1
-  EXPECT_EQ(reward_at(harness, 0.0, 0.0, true), -1.0);   // s = 0 would earn 0
+  EXPECT_EQ(reward_at(harness, 0.1, 0.0), 0.0);         // s = 1
+  EXPECT_EQ(reward_at(harness, 0.0, 0.0, true), -1.0);  // s = 0 would earn 0
   Harness first_tick("reward", RewardParams{}, kPeriod);
   EXPECT_EQ(reward_at(first_tick, 0.6, 0.0, true), -1.0);  // even on a trial's first tick
 }
@@ -52,9 +52,9 @@ TEST(Reward, UsesConfiguredSurfaceWeights) {
   params.a1 = 1.0;
   params.a2 = -2.0;
   Harness harness("reward", params, kPeriod);
-  EXPECT_EQ(reward_at(harness, 1.0, 0.25), 0.0);   // s = 0.5
-  EXPECT_EQ(reward_at(harness, 1.0, 0.0), -1.0);   // s = 1
-  EXPECT_EQ(reward_at(harness, 1.0, 1.0), 0.0);    // s = -1
+  EXPECT_EQ(reward_at(harness, 1.0, 0.25), 0.0);  // s = 0.5
+  EXPECT_EQ(reward_at(harness, 1.0, 0.0), -1.0);  // s = 1
+  EXPECT_EQ(reward_at(harness, 1.0, 1.0), 0.0);   // s = -1
 }
 
 TEST(Reward, StartTrialForgetsThePreviousSurface) {

@@ -44,12 +44,12 @@ TEST(Sensors, QuantisationRoundsToTheNearestStep) {
   harness.tick();
   const Vector measured = harness.output("measured");
   EXPECT_NEAR(measured[kMeasuredThetaB], 0.17, 1e-15);  // 17.44 steps -> 17
-  EXPECT_EQ(measured[kMeasuredPhiRight], 2.5);            // already on a step
-  EXPECT_EQ(measured[kMeasuredThetaBDot], -0.25);         // not quantised
+  EXPECT_EQ(measured[kMeasuredPhiRight], 2.5);          // already on a step
+  EXPECT_EQ(measured[kMeasuredThetaBDot], -0.25);       // not quantised
 
   Vector state = plant_state();
-  state[plant::kThetaB] = -0.0267;    // -2.67 steps -> -3
-  state[plant::kPhiRight] = 2.76;     // 5.52 steps -> 6
+  state[plant::kThetaB] = -0.0267;  // -2.67 steps -> -3
+  state[plant::kPhiRight] = 2.76;   // 5.52 steps -> 6
   harness.set_input("plant_state", state);
   const Vector next = harness.output("measured");
   EXPECT_NEAR(next[kMeasuredThetaB], -0.03, 1e-15);
@@ -106,9 +106,9 @@ TEST(Sensors, RejectsNegativeOrNonFiniteNoiseAndSteps) {
   EXPECT_THAT([&] { Sensors("sensors", infinite_step, kPeriod); },
               ThrowsMessage<std::invalid_argument>(
                   StrEq("sensors.quantisation[0] must be finite and >= 0; got inf")));
-  EXPECT_THAT([] { Sensors("sensors", SensorsParams{}, 0.0); },
-              ThrowsMessage<std::invalid_argument>(
-                  StrEq("trial.period must be finite and > 0; got 0")));
+  EXPECT_THAT(
+      [] { Sensors("sensors", SensorsParams{}, 0.0); },
+      ThrowsMessage<std::invalid_argument>(StrEq("trial.period must be finite and > 0; got 0")));
 }
 
 }  // namespace

@@ -48,16 +48,17 @@ TEST(Tropism, AnnealingChangesK1InTheContext) {
 TEST(Tropism, RejectsInvalidParameters) {
   TropismParams zero_k1;
   zero_k1.k1 = 0.0;
-  EXPECT_THAT([&] { Tropism("tropism", zero_k1); },
-              ThrowsMessage<std::invalid_argument>(StrEq("tropism.k1 must be finite and > 0; got 0")));
+  EXPECT_THAT(
+      [&] { Tropism("tropism", zero_k1); },
+      ThrowsMessage<std::invalid_argument>(StrEq("tropism.k1 must be finite and > 0; got 0")));
   TropismParams nan_k2;
   nan_k2.k2 = NAN;
   EXPECT_THAT([&] { Tropism("tropism", nan_k2); },
               ThrowsMessage<std::invalid_argument>(StrEq("tropism.k2 must be finite; got nan")));
   Harness harness("tropism", TropismParams{});
-  EXPECT_THAT([&] { harness.block().set_k1(harness.context(), -1.0); },
-              ThrowsMessage<std::invalid_argument>(
-                  StrEq("tropism.k1 must be finite and > 0; got -1")));
+  EXPECT_THAT(
+      [&] { harness.block().set_k1(harness.context(), -1.0); },
+      ThrowsMessage<std::invalid_argument>(StrEq("tropism.k1 must be finite and > 0; got -1")));
   EXPECT_EQ(harness.block().k1(harness.context()), 10.0);
 }
 

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 
 namespace cbbg::plant {
 namespace {
@@ -117,8 +117,7 @@ TEST(Linearization, PlanarModelIsTheHandDerivedStraightLineModel) {
     const Eigen::Matrix2d stiffness = t.transpose() * hand.stiffness * t;
     const Eigen::Vector2d input = t.transpose() * hand.input * Eigen::Vector2d::Ones();
     EXPECT_NEAR(input[0], -2.0, 0.0);
-    EXPECT_NEAR(mass(1, 1), (2 * p.wheel_mass + p.body_mass) * 0.0225 + 2 * p.wheel_inertia,
-                1e-12);
+    EXPECT_NEAR(mass(1, 1), (2 * p.wheel_mass + p.body_mass) * 0.0225 + 2 * p.wheel_inertia, 1e-12);
     Eigen::MatrixXd a = Eigen::MatrixXd::Zero(4, 4);
     a.topRightCorner<2, 2>().setIdentity();
     a.bottomLeftCorner<2, 2>() = -mass.inverse() * stiffness;

@@ -15,9 +15,9 @@
 namespace cbbg::plant::testing {
 namespace {
 
+using Eigen::Vector2d;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
-using Eigen::Vector2d;
 
 class PlantBlock : public ::testing::TestWithParam<PlantKind> {
  protected:
@@ -75,9 +75,8 @@ TEST_P(PlantBlock, UnequalTorquesTurnTheRobotLeftWhenTheRightWheelDrivesHarder) 
   EXPECT_GT(last[kPhiRightDot], last[kPhiLeftDot]);
   EXPECT_GT(last[kYawRate], 0.0);  // counter-clockwise seen from above
   EXPECT_GT(last[kYaw], 0.0);
-  EXPECT_NEAR(last[kYawRate], p.wheel_radius * (last[kPhiRightDot] - last[kPhiLeftDot]) /
-                                  p.track_width,
-              1e-9);
+  EXPECT_NEAR(last[kYawRate],
+              p.wheel_radius * (last[kPhiRightDot] - last[kPhiLeftDot]) / p.track_width, 1e-9);
 }
 
 // The Simbody plant restarts its integrator on a reset, so a trial repeats bit for bit. The
@@ -237,17 +236,16 @@ TEST_P(PlantBlock, RejectsInvalidParametersAndPitches) {
       builder.emplace<SimbodyPlant>("plant", params, pitch);
     }
   };
-  EXPECT_THAT([&] { make(bad, 0.1); },
-              ::testing::ThrowsMessage<std::invalid_argument>(
-                  "plant.body_mass must be positive and finite; got -1"));
-  EXPECT_THAT([&] { make(RobotParams{}, nan); },
-              ::testing::ThrowsMessage<std::invalid_argument>("trial.theta0 must be finite; got nan"));
+  EXPECT_THAT([&] { make(bad, 0.1); }, ::testing::ThrowsMessage<std::invalid_argument>(
+                                           "plant.body_mass must be positive and finite; got -1"));
+  EXPECT_THAT([&] { make(RobotParams{}, nan); }, ::testing::ThrowsMessage<std::invalid_argument>(
+                                                     "trial.theta0 must be finite; got nan"));
 
   const RobotParams p;
   const Rig rig = make_rig(kind(), p, kDefaultInitialPitch, Control::kFixedTorque);
   auto context = rig.diagram->create_context();
-  EXPECT_THAT([&] { rig.reset(*context, nan); },
-              ::testing::ThrowsMessage<std::invalid_argument>("trial.theta0 must be finite; got nan"));
+  EXPECT_THAT([&] { rig.reset(*context, nan); }, ::testing::ThrowsMessage<std::invalid_argument>(
+                                                     "trial.theta0 must be finite; got nan"));
   EXPECT_THAT([&] { rig.set_state(*context, Vector::Zero(3)); },
               ::testing::ThrowsMessage<std::invalid_argument>(
                   "block 'robot/plant': set_state needs 10 values; got 3"));

@@ -40,8 +40,8 @@ double energy_drift(PlantKind kind, const Vector& initial_state) {
   for (int half_seconds = 1; half_seconds <= 20; ++half_seconds) {
     simulator->advance_to(0.5 * half_seconds);
     if (kind == PlantKind::kSimbody) {
-      const double own = static_cast<const SimbodyPlant&>(*rig.plant)
-                             .multibody_energy(simulator->context());
+      const double own =
+          static_cast<const SimbodyPlant&>(*rig.plant).multibody_energy(simulator->context());
       drift = std::max(drift, std::abs(own - initial) / std::abs(initial));
     }
   }
@@ -114,8 +114,8 @@ TEST_P(PlantPhysics, PdLawWithItsSignFlippedMakesItFall) {
 double hand_unstable_pole(const RobotParams& p) {
   const double m11 = p.body_mass * p.com_height * p.com_height + p.body_pitch_inertia;
   const double m12 = p.body_mass * p.com_height * p.wheel_radius;
-  const double m22 = (2 * p.wheel_mass + p.body_mass) * p.wheel_radius * p.wheel_radius +
-                     2 * p.wheel_inertia;
+  const double m22 =
+      (2 * p.wheel_mass + p.body_mass) * p.wheel_radius * p.wheel_radius + 2 * p.wheel_inertia;
   return std::sqrt(p.body_mass * p.gravity * p.com_height * m22 / (m11 * m22 - m12 * m12));
 }
 

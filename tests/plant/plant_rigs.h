@@ -34,12 +34,11 @@ class PdLaw final : public Block {
  public:
   PdLaw(std::string name, double sign) : Block(std::move(name)) {
     const InputPort& state = declare_input_port("state", kStateSize);
-    declare_output_port(
-        "torque", kTorqueSize,
-        [&state, sign](const BlockContext& context, VectorRef torque) {
-          torque.setConstant(pd_action(context.input(state), sign));
-        },
-        {&state});
+    declare_output_port("torque", kTorqueSize,
+                        [&state, sign](const BlockContext& context, VectorRef torque) {
+                          torque.setConstant(pd_action(context.input(state), sign));
+                        },
+                        {&state});
   }
 };
 
@@ -54,15 +53,13 @@ class TurningPdLaw final : public Block {
         "torque", kTorqueSize,
         [](const BlockContext& context, VectorRef torque) { torque = context.discrete_state(); },
         {});
-    declare_periodic_update(kPeriod, 0.0,
-                            [&state, sigma](BlockContext& context, VectorRef next) {
-                              const double a = pd_action(context.input(state), 1.0);
-                              const double delta =
-                                  sigma * draw_standard_normal(context.random_generator());
-                              next[kTauLeft] = a + delta;
-                              next[kTauRight] = a - delta;
-                              return EventStatus::succeeded();
-                            });
+    declare_periodic_update(kPeriod, 0.0, [&state, sigma](BlockContext& context, VectorRef next) {
+      const double a = pd_action(context.input(state), 1.0);
+      const double delta = sigma * draw_standard_normal(context.random_generator());
+      next[kTauLeft] = a + delta;
+      next[kTauRight] = a - delta;
+      return EventStatus::succeeded();
+    });
   }
 };
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <random>
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 namespace cbbg::plant {
 namespace {
@@ -40,8 +40,8 @@ TEST(RobotDynamics, EnergyAtRestIsTheBodysHeightTimesItsWeight) {
               38.605368399993644, 1e-12);
   // Rolling straight at 1 rad/s with the body upright: (m22 + m33 + 2 m23) / 2 =
   // m_l R^2 + J_w + M R^2 / 2 = 0.0225 + 0.01125 + 0.1125.
-  EXPECT_NEAR(mechanical_energy(p, Coordinates::Zero(), Coordinates(0.0, 1.0, 1.0)) - 39.2,
-              0.14625, 1e-12);
+  EXPECT_NEAR(mechanical_energy(p, Coordinates::Zero(), Coordinates(0.0, 1.0, 1.0)) - 39.2, 0.14625,
+              1e-12);
 }
 
 TEST(RobotDynamics, TorquesPushTheWheelsForwardAndTheBodyBack) {
@@ -117,8 +117,8 @@ TEST(RobotDynamics, MatchesLagrangesEquationsWithTheRollingConstraints) {
       const Coordinates q_ddot(draw(generator), draw(generator), draw(generator));
 
       Velocities z;
-      z << q_dot[0], p.wheel_radius * (q_dot[1] + q_dot[2]) / 2.0, 0.0,
-          rho * (q_dot[2] - q_dot[1]), q_dot[1], q_dot[2];
+      z << q_dot[0], p.wheel_radius * (q_dot[1] + q_dot[2]) / 2.0, 0.0, rho * (q_dot[2] - q_dot[1]),
+          q_dot[1], q_dot[2];
       Velocities z_dot;
       z_dot << q_ddot[0], p.wheel_radius * (q_ddot[1] + q_ddot[2]) / 2.0, 0.0,
           rho * (q_ddot[2] - q_ddot[1]), q_ddot[1], q_ddot[2];

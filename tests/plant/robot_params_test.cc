@@ -73,17 +73,17 @@ TEST(RobotParams, RejectsANonPositiveOrNonFiniteValueNamingItsKey) {
   for (const Field& field : kPositiveFields) {
     RobotParams p;
     p.*field.member = -1.0;
-    EXPECT_EQ(validation_error(p), std::string("plant.") + field.key +
-                                       " must be positive and finite; got -1");
+    EXPECT_EQ(validation_error(p),
+              std::string("plant.") + field.key + " must be positive and finite; got -1");
     p.*field.member = 0.0;
-    EXPECT_EQ(validation_error(p), std::string("plant.") + field.key +
-                                       " must be positive and finite; got 0");
+    EXPECT_EQ(validation_error(p),
+              std::string("plant.") + field.key + " must be positive and finite; got 0");
     p.*field.member = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_EQ(validation_error(p), std::string("plant.") + field.key +
-                                       " must be positive and finite; got nan");
+    EXPECT_EQ(validation_error(p),
+              std::string("plant.") + field.key + " must be positive and finite; got nan");
     p.*field.member = std::numeric_limits<double>::infinity();
-    EXPECT_EQ(validation_error(p), std::string("plant.") + field.key +
-                                       " must be positive and finite; got inf");
+    EXPECT_EQ(validation_error(p),
+              std::string("plant.") + field.key + " must be positive and finite; got inf");
   }
 }
 
@@ -93,11 +93,11 @@ TEST(RobotParams, AllowsZeroFrictionAndGravityButNotNegativeOrNonFinite) {
     p.*field.member = 0.0;
     EXPECT_EQ(validation_error(p), "") << field.key;
     p.*field.member = -0.5;
-    EXPECT_EQ(validation_error(p), std::string("plant.") + field.key +
-                                       " must be non-negative and finite; got -0.5");
+    EXPECT_EQ(validation_error(p),
+              std::string("plant.") + field.key + " must be non-negative and finite; got -0.5");
     p.*field.member = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_EQ(validation_error(p), std::string("plant.") + field.key +
-                                       " must be non-negative and finite; got nan");
+    EXPECT_EQ(validation_error(p),
+              std::string("plant.") + field.key + " must be non-negative and finite; got nan");
   }
 }
 

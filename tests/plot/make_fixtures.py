@@ -114,7 +114,8 @@ def make_exp1(directory, with_steps=True):
             "min": ordered[0],
             "max": ordered[-1],
         }
-    summary = {"experiment": "exp1", "plant": "analytic", "seeds": EXP1_SEEDS,
+    summary = {"experiment": "exp1", "plant": "analytic", "max_trials": EXP1_MAX_TRIALS,
+               "seeds": EXP1_SEEDS,
                "arms": summary_arms, "paper": {"cbbg": 0, "bg_only": 8}}
     write(directory, "summary.json", json.dumps(summary, indent=2) + "\n")
     write(directory, "trials.csv", "\n".join([TRIALS_HEADER] + trial_rows) + "\n")

@@ -1,0 +1,85 @@
+// CPU time per trial tick of the cbbg diagram on the analytic plant, run by the
+// TrialRunner, against SPEC section 2 as one plain loop (tests/diagrams/plain_loop.h) that
+// tests/diagrams proves bit-identical to it. Each iteration is the first trial of a fresh
+// learner from the default theta0 and root seed 1, so both sides do exactly the same
+// arithmetic and tick count; building the learner is left out of the timing.
+
+#include <benchmark/benchmark.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "bench/ratio_reporter.h"
+#include "config/config.h"
+#include "diagrams/controller_diagram.h"
+#include "diagrams/trial_runner.h"
+#include "tests/diagrams/plain_loop.h"
+
+namespace cbbg::bench {
+namespace {
+
+constexpr std::uint64_t kSeed = 1;
+
+config::Config analytic_config() {
+  config::Config config;
+  config.set("plant.kind=analytic");
+  return config;
+}
+
+// Reports the trial's ticks and the CPU time per tick.
+void count_ticks(benchmark::State& state, long long ticks) {
+  state.counters["ticks"] = static_cast<double>(ticks);
+  state.counters["cpu_per_tick"] =
+      benchmark::Counter(static_cast<double>(ticks), benchmark::Counter::kIsIterationInvariantRate |
+                                                         benchmark::Counter::kInvert);
+}
+
+void BM_DiagramTrial(benchmark::State& state) {
+  const config::Config config = analytic_config();
+  const diagrams::ControllerDiagram controller = diagrams::build_controller_diagram("cbbg", config);
+  const double theta0 = config.number("trial.theta0");
+  const double duration = config.number("trial.duration");
+  long long ticks = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    diagrams::TrialRunner runner(controller, kSeed, config.number("trial.period"));
+    state.ResumeTiming();
+    const diagrams::TrialOutcome outcome = runner.run_trial(theta0, duration);
+    ticks = outcome.steps;
+    benchmark::DoNotOptimize(outcome.final_theta);
+  }
+  count_ticks(state, ticks);
+}
+
+void BM_PlainLoopTrial(benchmark::State& state) {
+  const config::Config config = analytic_config();
+  const double theta0 = config.number("trial.theta0");
+  const double duration = config.number("trial.duration");
+  long long ticks = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    tests::PlainLoop loop(config, kSeed, "cbbg");
+    state.ResumeTiming();
+    const tests::PlainLoopOutcome outcome = loop.run_trial(theta0, duration);
+    ticks = outcome.steps;
+    benchmark::DoNotOptimize(outcome.final_theta);
+  }
+  count_ticks(state, ticks);
+}
+
+BENCHMARK(BM_DiagramTrial)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlainLoopTrial)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace cbbg::bench
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  cbbg::bench::RatioReporter reporter([](const std::string& name) -> std::string {
+    return name == "BM_DiagramTrial" ? "BM_PlainLoopTrial" : "";
+  });
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,175 @@
+// Runs the real `cbbg` binary and checks what a user sees: exit code, message, files.
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "config/config.h"
+
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code;
+  std::string output;  // stdout and stderr together
+};
+
+Outcome cbbg(const std::string& arguments) {
+  const std::string command = std::string(CBBG_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  std::array<char, 4096> buffer{};
+  while (const std::size_t read = fread(buffer.data(), 1, buffer.size(), pipe)) {
+    output.append(buffer.data(), read);
+  }
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class CbbgCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    scratch_ = fs::temp_directory_path() /
+               ("cbbg_cli_" +
+                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(scratch_);
+    fs::create_directories(scratch_);
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+  fs::path scratch_;
+};
+
+// A quick run: the analytic plant, few seeds.
+constexpr const char* kQuick = "--set plant.kind=analytic --no-figures";
+
+TEST_F(CbbgCommand, UnknownKeyExitsTwoWithASuggestionAndWritesNothing) {
+  const fs::path out = scratch_ / "results";
+  const Outcome outcome = cbbg("run --set critic.gama=0.5 --out " + out.string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.output,
+            "cbbg: error: --set critic.gama=0.5: unknown key 'critic.gama'; did you mean "
+            "'critic.gamma'?\n");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(CbbgCommand, OutOfRangeAndNonFiniteValuesExitTwo) {
+  const fs::path out = scratch_ / "results";
+  Outcome outcome = cbbg("run --set critic.gamma=1.5 --out " + out.string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.output,
+            "cbbg: error: --set critic.gamma=1.5: critic.gamma must be in (0, 1]; got 1.5\n");
+  outcome = cbbg("run --set plant.body_mass=.nan --out " + out.string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_THAT(outcome.output, HasSubstr("plant.body_mass must be a finite number"));
+  outcome = cbbg("run --experiment exp3 --out " + out.string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.output,
+            "cbbg: error: --experiment exp3: experiment must be one of exp1, exp2, cbbg, "
+            "cbbg_weighted, bg_only, cb_only, pd_only; got 'exp3'\n");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(CbbgCommand, ABadConfigFileExitsTwoNamingTheFile) {
+  const fs::path config = scratch_ / "bad.yaml";
+  std::ofstream(config) << "critic:\n  gamma: [0.5\n";
+  const fs::path out = scratch_ / "results";
+  Outcome outcome = cbbg("run --config " + config.string() + " --out " + out.string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_THAT(outcome.output,
+              HasSubstr("cbbg: error: " + config.string() + ": malformed YAML at line"));
+  outcome = cbbg("run --config " + (scratch_ / "missing.yaml").string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_THAT(outcome.output, HasSubstr("missing.yaml"));
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(CbbgCommand, CommandLineMisuseExitsTwo) {
+  EXPECT_EQ(cbbg("frobnicate").exit_code, 2);
+  EXPECT_EQ(cbbg("run --jobs 0").exit_code, 2);
+  EXPECT_EQ(cbbg("run --jobs many").exit_code, 2);
+  EXPECT_EQ(cbbg("run --no-such-flag").exit_code, 2);
+  const Outcome help = cbbg("run --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_THAT(help.output, HasSubstr("--experiment"));
+}
+
+TEST_F(CbbgCommand, RunWritesTheResultsDirectory) {
+  const fs::path out = scratch_ / "results";
+  const Outcome outcome = cbbg(std::string("run ") + kQuick + " --seeds 2 --out " + out.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  for (const char* file : {"config.yaml", "summary.json", "trials.csv", "steps.csv"}) {
+    EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
+  }
+  EXPECT_THAT(read_file(out / "trials.csv"),
+              ::testing::StartsWith("arm,seed,trial,failed,steps,mean_temperature,mean_entropy,"
+                                    "final_theta,status\ncbbg,1,1,"));
+  EXPECT_THAT(read_file(out / "summary.json"), HasSubstr("\"bg_only\": {"));
+  // The resolved config loads back and names the overrides.
+  cbbg::config::Config resolved;
+  resolved.merge_file(out / "config.yaml");
+  EXPECT_EQ(resolved.text("plant.kind"), "analytic");
+  EXPECT_EQ(resolved.integer("seeds"), 2);
+  // No staging directory is left beside it.
+  for (const auto& entry : fs::directory_iterator(scratch_)) {
+    EXPECT_EQ(entry.path().filename(), "results");
+  }
+}
+
+TEST_F(CbbgCommand, ResultsAreByteIdenticalWhateverTheThreadCount) {
+  const std::string common = std::string("run ") + kQuick + " --seeds 3 --set log.decimation=7";
+  ASSERT_EQ(cbbg(common + " --jobs 1 --out " + (scratch_ / "one").string()).exit_code, 0);
+  ASSERT_EQ(cbbg(common + " --jobs 2 --out " + (scratch_ / "two").string()).exit_code, 0);
+  for (const char* file : {"config.yaml", "summary.json", "trials.csv", "steps.csv"}) {
+    const std::string one = read_file(scratch_ / "one" / file);
+    EXPECT_FALSE(one.empty()) << file;
+    EXPECT_EQ(one, read_file(scratch_ / "two" / file)) << file;
+  }
+}
+
+TEST_F(CbbgCommand, ListShowsEveryConfigKey) {
+  const Outcome outcome = cbbg("list");
+  EXPECT_EQ(outcome.exit_code, 0);
+  for (const auto& spec : cbbg::config::schema()) {
+    EXPECT_THAT(outcome.output, HasSubstr("  " + spec.path + " ")) << spec.path;
+  }
+  for (const auto& name : cbbg::config::diagram_names()) {
+    EXPECT_THAT(outcome.output, HasSubstr("  " + name + " ")) << name;
+  }
+}
+
+TEST_F(CbbgCommand, GraphDrawsANamedDiagram) {
+  const fs::path dot = scratch_ / "bg_only.dot";
+  const Outcome outcome = cbbg("graph --diagram bg_only -o " + dot.string());
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.output;
+  const std::string text = read_file(dot);
+  EXPECT_THAT(text, HasSubstr("digraph \"bg_only\""));
+  EXPECT_THAT(
+      text,
+      HasSubstr("\"bg_only/sampler\":out_action -> \"bg_only/mixer\":in_exploration_action;"));
+  EXPECT_THAT(text, ::testing::Not(HasSubstr("\"bg_only/supervisor\"")));
+  const Outcome unknown = cbbg("graph --diagram nope -o " + dot.string());
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_THAT(unknown.output, HasSubstr("experiment must be one of"));
+  const Outcome format = cbbg("graph --diagram cbbg -o " + (scratch_ / "x.pdf").string());
+  EXPECT_EQ(format.exit_code, 2);
+  EXPECT_THAT(format.output, HasSubstr("unknown extension '.pdf'"));
+}
+
+}  // namespace

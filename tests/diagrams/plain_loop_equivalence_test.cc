@@ -1,0 +1,223 @@
+// The diagram wiring test: the named diagrams, run by the TrialRunner, must give the same
+// doubles, tick by tick, as SPEC section 2 written as one plain loop (plain_loop.h) for the
+// same root seed. Any wiring slip (a wrong port, a signal a tick late, an update reading a
+// post-update value, a sampler on another stream) shows as a first differing signal.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "config/config.h"
+#include "diagrams/controller_diagram.h"
+#include "diagrams/trial_runner.h"
+#include "tests/diagrams/plain_loop.h"
+
+namespace cbbg::tests {
+namespace {
+
+using diagrams::TelemetryIndex;
+
+// Each telemetry signal, with its field in the plain loop's tick.
+struct Signal {
+  const char* name;
+  TelemetryIndex index;
+  double PlainLoopTick::*field;
+};
+
+constexpr std::array<Signal, diagrams::kTelemetrySize> kSignals = {{
+    {"theta_b", diagrams::kTelemetryThetaB, &PlainLoopTick::theta_b},
+    {"theta_b_dot", diagrams::kTelemetryThetaBDot, &PlainLoopTick::theta_b_dot},
+    {"phi_left", diagrams::kTelemetryPhiLeft, &PlainLoopTick::phi_left},
+    {"phi_right", diagrams::kTelemetryPhiRight, &PlainLoopTick::phi_right},
+    {"phi_left_dot", diagrams::kTelemetryPhiLeftDot, &PlainLoopTick::phi_left_dot},
+    {"phi_right_dot", diagrams::kTelemetryPhiRightDot, &PlainLoopTick::phi_right_dot},
+    {"supervisor_action", diagrams::kTelemetrySupervisorAction, &PlainLoopTick::supervisor_action},
+    {"actor_action", diagrams::kTelemetryActorAction, &PlainLoopTick::actor_action},
+    {"exploration_action", diagrams::kTelemetryExplorationAction,
+     &PlainLoopTick::exploration_action},
+    {"action", diagrams::kTelemetryAction, &PlainLoopTick::action},
+    {"omega", diagrams::kTelemetryOmega, &PlainLoopTick::omega},
+    {"value", diagrams::kTelemetryValue, &PlainLoopTick::value},
+    {"td_error", diagrams::kTelemetryTdError, &PlainLoopTick::td_error},
+    {"temperature", diagrams::kTelemetryTemperature, &PlainLoopTick::temperature},
+    {"reward", diagrams::kTelemetryReward, &PlainLoopTick::reward},
+    {"entropy", diagrams::kTelemetryEntropy, &PlainLoopTick::entropy},
+}};
+
+std::string exact(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+const char* to_string(PlainLoopStatus status) {
+  switch (status) {
+    case PlainLoopStatus::kSuccess:
+      return "success";
+    case PlainLoopStatus::kFailed:
+      return "failed";
+    case PlainLoopStatus::kDiverged:
+      return "diverged";
+  }
+  return "unknown";
+}
+
+// Success when the diagram's trial and the loop's have the same outcome, the same number
+// of ticks and equal doubles (operator==, as EXPECT_EQ compares) in every signal at every
+// tick; otherwise names the first differing signal and tick with both values.
+testing::AssertionResult SameTrial(const diagrams::TrialOutcome& diagram_outcome,
+                                   const SignalLog& telemetry, const PlainLoopOutcome& loop_outcome,
+                                   const std::vector<PlainLoopTick>& loop_ticks) {
+  const int ticks = telemetry.num_samples();
+  for (int k = 0; k < ticks && static_cast<size_t>(k) < loop_ticks.size(); ++k) {
+    const auto sample = telemetry.sample(k);
+    for (const Signal& signal : kSignals) {
+      const double from_diagram = sample[signal.index];
+      const double from_loop = loop_ticks[static_cast<size_t>(k)].*signal.field;
+      if (!(from_diagram == from_loop)) {
+        return testing::AssertionFailure()
+               << signal.name << " differs at tick " << k << ": diagram " << exact(from_diagram)
+               << ", plain loop " << exact(from_loop);
+      }
+    }
+  }
+  if (static_cast<size_t>(ticks) != loop_ticks.size() ||
+      diagram_outcome.steps != loop_outcome.steps) {
+    return testing::AssertionFailure()
+           << "the diagram ran " << ticks << " ticks (outcome: " << diagram_outcome.steps
+           << "), the plain loop " << loop_ticks.size() << " (outcome: " << loop_outcome.steps
+           << ")";
+  }
+  if (std::string(diagrams::to_string(diagram_outcome.status)) != to_string(loop_outcome.status)) {
+    return testing::AssertionFailure()
+           << "the diagram's trial ended " << diagrams::to_string(diagram_outcome.status)
+           << ", the plain loop's " << to_string(loop_outcome.status);
+  }
+  if (!(diagram_outcome.final_theta == loop_outcome.final_theta)) {
+    return testing::AssertionFailure()
+           << "final theta_b differs: diagram " << exact(diagram_outcome.final_theta)
+           << ", plain loop " << exact(loop_outcome.final_theta);
+  }
+  return testing::AssertionSuccess();
+}
+
+testing::AssertionResult SameWeights(const char* name, ConstVectorView diagram,
+                                     const Eigen::VectorXd& loop) {
+  for (Eigen::Index i = 0; i < loop.size(); ++i) {
+    if (!(diagram[i] == loop[i])) {
+      return testing::AssertionFailure() << name << "[" << i << "] differs: diagram "
+                                         << exact(diagram[i]) << ", plain loop " << exact(loop[i]);
+    }
+  }
+  return testing::AssertionSuccess();
+}
+
+config::Config analytic_config() {
+  config::Config config;
+  config.set("plant.kind=analytic");
+  return config;
+}
+
+// Runs `theta0s.size()` consecutive trials of diagram `arm` and of the plain loop under
+// `loop_config` (the diagram always uses `config`); expects every trial to match.
+struct Run {
+  std::vector<diagrams::TrialOutcome> outcomes;
+  testing::AssertionResult all_match = testing::AssertionSuccess();
+};
+
+Run run_both(const std::string& arm, const config::Config& config,
+             const config::Config& loop_config, std::uint64_t seed, std::uint64_t loop_seed,
+             const std::vector<double>& theta0s) {
+  const diagrams::ControllerDiagram controller = diagrams::build_controller_diagram(arm, config);
+  diagrams::TrialRunner runner(controller, seed, config.number("trial.period"));
+  PlainLoop loop(loop_config, loop_seed, arm);
+  const double duration = config.number("trial.duration");
+  Run run;
+  for (size_t trial = 0; trial < theta0s.size(); ++trial) {
+    run.outcomes.push_back(runner.run_trial(theta0s[trial], duration));
+    const PlainLoopOutcome loop_outcome = loop.run_trial(theta0s[trial], duration);
+    testing::AssertionResult same =
+        SameTrial(run.outcomes.back(), runner.telemetry(), loop_outcome, loop.ticks());
+    if (same)
+      same = SameWeights("w", controller.critic->weights(runner.context()), loop.critic_weights());
+    if (same)
+      same =
+          SameWeights("theta", controller.actor->weights(runner.context()), loop.actor_weights());
+    if (!same) {
+      run.all_match = testing::AssertionFailure() << arm << ", seed " << seed << ", trial "
+                                                  << trial + 1 << ": " << same.message();
+      return run;
+    }
+  }
+  return run;
+}
+
+TEST(PlainLoopEquivalence, CbbgTrialMatchesTheDiagramBitForBitForThreeSeeds) {
+  const config::Config config = analytic_config();
+  const double theta0 = config.number("trial.theta0");
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    const Run run = run_both("cbbg", config, config, seed, seed, {theta0});
+    EXPECT_TRUE(run.all_match);
+    ASSERT_EQ(run.outcomes.size(), 1u);
+    // A whole trial: the 20 s of a success (2000 ticks at 10 ms) or up to a failure.
+    const auto& outcome = run.outcomes.front();
+    if (outcome.status == diagrams::TrialStatus::kSuccess) {
+      EXPECT_EQ(outcome.steps, 2000) << "seed " << seed;
+    } else {
+      EXPECT_EQ(outcome.status, diagrams::TrialStatus::kFailed) << "seed " << seed;
+      EXPECT_GT(std::abs(outcome.final_theta), config.number("trial.failure_angle"));
+    }
+  }
+}
+
+TEST(PlainLoopEquivalence, ConsecutiveCbbgTrialsMatchAsWeightsAndOmegaCarryOver) {
+  // Trial 1 from a pitch the early supervisor cannot hold, so it fails mid-way; the others
+  // start where the experiments do. Weights, the omega counter, the sampler's stream and the
+  // integrator's step carry over; the trace, the previous tick and the plant reset.
+  const config::Config config = analytic_config();
+  const double theta0 = config.number("trial.theta0");
+  const Run run = run_both("cbbg", config, config, 7, 7, {0.45, theta0, theta0});
+  EXPECT_TRUE(run.all_match);
+  ASSERT_EQ(run.outcomes.size(), 3u);
+  EXPECT_EQ(run.outcomes[0].status, diagrams::TrialStatus::kFailed);
+}
+
+TEST(PlainLoopEquivalence, BgOnlyTrialsMatchTheDiagramThroughFailures) {
+  // The basal ganglia alone (omega = 1, no supervisor) fails its first trials.
+  const config::Config config = analytic_config();
+  const double theta0 = config.number("trial.theta0");
+  const Run run = run_both("bg_only", config, config, 3, 3, {theta0, theta0, theta0});
+  EXPECT_TRUE(run.all_match);
+  ASSERT_EQ(run.outcomes.size(), 3u);
+  EXPECT_EQ(run.outcomes[0].status, diagrams::TrialStatus::kFailed);
+}
+
+TEST(PlainLoopEquivalence, DetectsAnotherSamplerStream) {
+  // Another root seed gives the sampler another normal draw at the first tick: the first
+  // signal to differ is a_E at tick 0 (the features, values, a_S and a_A agree there).
+  const config::Config config = analytic_config();
+  const Run run = run_both("cbbg", config, config, 1, 2, {config.number("trial.theta0")});
+  EXPECT_FALSE(run.all_match);
+  EXPECT_THAT(run.all_match.message(), testing::HasSubstr("exploration_action differs at tick 0"));
+}
+
+TEST(PlainLoopEquivalence, DetectsAOneUlpChangeOfTheCriticRate) {
+  // The critic learns from tick 1 on; one ulp more beta changes w, so V differs first.
+  const config::Config config = analytic_config();
+  config::Config perturbed = config;
+  perturbed.set("critic.beta=" + exact(std::nextafter(config.number("critic.beta"), 1.0)));
+  ASSERT_NE(perturbed.number("critic.beta"), config.number("critic.beta"));
+  const Run run = run_both("cbbg", config, perturbed, 1, 1, {config.number("trial.theta0")});
+  EXPECT_FALSE(run.all_match);
+  EXPECT_THAT(run.all_match.message(), testing::HasSubstr("value differs at tick"));
+}
+
+}  // namespace
+}  // namespace cbbg::tests
