@@ -1,5 +1,7 @@
 #include "blocks/lqr_supervisor.h"
 
+#include <stdexcept>
+
 #include "blocks/measured_signals.h"
 #include "blocks/parameter_checks.h"
 #include "blocks/riccati.h"
@@ -23,7 +25,18 @@ LqrSupervisor::LqrSupervisor(std::string name, const plant::RobotParams& robot,
   const Eigen::Vector4d q(params.lqr_q[0], params.lqr_q[1], params.lqr_q[2], params.lqr_q[3]);
   const Eigen::MatrixXd Q = q.asDiagonal();
   const Eigen::MatrixXd R = Eigen::MatrixXd::Constant(1, 1, params.lqr_r);
-  const Eigen::MatrixXd X = solve_continuous_riccati(model.A, model.B, Q, R);
+  Eigen::MatrixXd X;
+  try {
+    X = solve_continuous_riccati(model.A, model.B, Q, R);
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(
+        "supervisor.lqr_q = [" + format_number(q[0]) + ", " + format_number(q[1]) + ", " +
+        format_number(q[2]) + ", " + format_number(q[3]) +
+        "] with supervisor.lqr_r = " + format_number(params.lqr_r) +
+        " give no stabilising LQR gain for this robot (a zero weight can leave a mode out of "
+        "the cost): " +
+        error.what());
+  }
   gain_ = (model.B.transpose() * X / params.lqr_r).row(0);
 
   const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");

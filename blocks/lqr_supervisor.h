@@ -23,10 +23,10 @@ struct LqrSupervisorParams {
 /// LqrSupervisor: a drop-in replacement of PdSupervisor whose gains come from linear-quadratic
 /// regulation of the linearised robot instead of from config.
 ///
-/// | port     | dir | size | meaning                                 |
-/// |----------|-----|------|-----------------------------------------|
-/// | measured | in  | 6    | the Sensors output (measured_signals.h)  |
-/// | action   | out | 1    | a_S, N m, both wheels (the plant saturates it) |
+/// | port     | dir | size | meaning                                         |
+/// |----------|-----|------|-------------------------------------------------|
+/// | measured | in  | 6    | the Sensors output (measured_signals.h)          |
+/// | action   | out | 1    | a_S, N m, both wheels (the plant saturates it)  |
 ///
 /// Equations: x = (theta_b, phi, theta_b', phi') with phi = (phi_l + phi_r) / 2,
 /// a_S = -K x, K = R^-1 B' X, X the stabilising solution of the continuous-time algebraic

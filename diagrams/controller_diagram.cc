@@ -24,7 +24,8 @@
 namespace cbbg::diagrams {
 namespace {
 
-enum class Arm { kCbbg, kCbbgWeighted, kBgOnly, kCbOnly, kPdOnly };
+// kLearntActor is not an arm: the policy a learning arm has learnt, evaluated alone.
+enum class Arm { kCbbg, kCbbgWeighted, kBgOnly, kCbOnly, kPdOnly, kLearntActor };
 
 Arm parse_arm(std::string_view name) {
   if (name == "cbbg") return Arm::kCbbg;
@@ -32,6 +33,7 @@ Arm parse_arm(std::string_view name) {
   if (name == "bg_only") return Arm::kBgOnly;
   if (name == "cb_only") return Arm::kCbOnly;
   if (name == "pd_only") return Arm::kPdOnly;
+  if (name == kLearntActorDiagram) return Arm::kLearntActor;
   throw std::invalid_argument("unknown diagram '" + std::string(name) +
                               "'; the diagrams are cbbg, cbbg_weighted, bg_only, cb_only, pd_only");
 }
@@ -90,7 +92,7 @@ ControllerDiagram build_controller_diagram(std::string_view name, const config::
 
   // The cerebellum: the supervisor's target action (a constant 0 where there is none).
   const OutputPort* supervisor_action = nullptr;
-  if (arm == Arm::kBgOnly) {
+  if (arm == Arm::kBgOnly || arm == Arm::kLearntActor) {
     supervisor_action = &constant(builder, "no_supervisor", 0.0);
   } else {
     const Block& supervisor =
@@ -114,6 +116,27 @@ ControllerDiagram build_controller_diagram(std::string_view name, const config::
   if (arm == Arm::kPdOnly) {
     omega = &constant(builder, "no_omega", 0.0);
     actor_action = exploration_action = value = td_error = temperature = entropy =
+        &constant(builder, "not_learning", nan);
+  } else if (arm == Arm::kLearntActor) {
+    // a = a_A = theta . phi and nothing else. A zero TD error with omega = 1 leaves both
+    // actor rules without a term: the weights stay as loaded.
+    auto& normaliser = builder.emplace<blocks::Normaliser>("normaliser", normaliser_params(config));
+    auto& rbf = builder.emplace<blocks::RbfFeatures>("rbf", rbf_params(config));
+    const int num_features = rbf.output_port("features").size();
+    auto& actor =
+        builder.emplace<blocks::Actor>("actor", num_features, actor_params(config), period);
+    result.actor = &actor;
+    builder.connect(measured, normaliser.input_port("measured"));
+    builder.connect(normaliser.output_port("x"), rbf.input_port("x"));
+    builder.connect(rbf.output_port("features"), actor.input_port("features"));
+    const OutputPort& zero = constant(builder, "frozen", 0.0);
+    builder.connect(zero, actor.input_port("td_error"));
+    builder.connect(zero, actor.input_port("exploration_action"));
+    builder.connect(*supervisor_action, actor.input_port("supervisor_action"));
+    omega = &constant(builder, "no_omega", 1.0);
+    builder.connect(*omega, actor.input_port("omega"));
+    action = actor_action = &actor.output_port("action");
+    exploration_action = value = td_error = temperature = entropy =
         &constant(builder, "not_learning", nan);
   } else {
     // The basal ganglia: features, critic, actor, tropism and Boltzmann exploration.

@@ -63,7 +63,12 @@ struct ControllerDiagram {
   bool learns() const { return actor != nullptr; }
 };
 
-// Builds the diagram `name` (one of config::diagram_names()) from `config`. Throws
+// The evaluation diagram of a learnt policy: the actor alone drives (a = a_A; omega = 1, no
+// exploration, no supervisor) and its weights do not change. Load them with
+// ControllerDiagram::actor->mutable_weights.
+inline constexpr const char* kLearntActorDiagram = "learnt_actor";
+
+// Builds the diagram `name` (one of config::diagram_names(), or kLearntActorDiagram). Throws
 // config::ConfigError for a value a block rejects, std::invalid_argument for an unknown name.
 ControllerDiagram build_controller_diagram(std::string_view name, const config::Config& config);
 

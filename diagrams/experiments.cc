@@ -54,6 +54,18 @@ double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial
   return k1;
 }
 
+// The policy learnt in `learnt` alone (no exploration, no supervisor, frozen) from each
+// evaluation angle, for a whole trial each.
+void evaluate_learnt_actor(const config::Config& config, const blocks::Actor& actor,
+                           const Context& learnt, SeedRun& run) {
+  const ControllerDiagram policy = build_controller_diagram(kLearntActorDiagram, config);
+  TrialRunner runner(policy, static_cast<std::uint64_t>(run.seed), config.number("trial.period"));
+  policy.actor->mutable_weights(runner.context()) = actor.weights(learnt);
+  for (const double theta0 : config.numbers("evaluation.angles")) {
+    run.evaluation.push_back({theta0, runner.run_trial(theta0, config.number("trial.duration"))});
+  }
+}
+
 void run_until_success(const config::Config& config, SeedRun& run) {
   const ControllerDiagram controller = build_controller_diagram(run.arm, config);
   const double period = config.number("trial.period");
@@ -72,6 +84,7 @@ void run_until_success(const config::Config& config, SeedRun& run) {
     }
     ++run.failures_before_success;
   }
+  if (controller.learns()) evaluate_learnt_actor(config, *controller.actor, runner.context(), run);
 }
 
 // exp2: trial 1 coordinated by the cerebellum, then operant learning alone with annealing.

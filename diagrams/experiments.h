@@ -3,7 +3,8 @@
 // task builds its own diagram and context, and results land in a slot fixed by the task's
 // index, so they are the same whatever the number of threads.
 //
-//   exp1             per arm and seed: trials until the first success (or max_trials)
+//   exp1             per arm and seed: trials until the first success (or max_trials);
+//                    then the learnt actor alone (learnt_actor) from each evaluation angle
 //   exp2             per seed: one trial of cbbg, then bg_only (omega = 1) with the weights
 //                    learnt so far and k1 from the annealing schedule, for exp2.trials trials
 //   <diagram name>   exp1's protocol for that one arm
@@ -23,6 +24,12 @@ struct TrialRecord {
   TrialOutcome outcome;
 };
 
+// The learnt actor alone from one initial pitch (exp1, learning arms).
+struct EvaluationRecord {
+  double theta0 = 0.0;
+  TrialOutcome outcome;
+};
+
 struct SeedRun {
   std::string arm;
   long long seed = 0;
@@ -32,6 +39,8 @@ struct SeedRun {
   bool succeeded = false;
   // Telemetry rows (steps.csv, without the header), every log.decimation-th tick.
   std::string steps_csv;
+  // exp1: the learnt actor evaluated from each of evaluation.angles (empty for pd_only).
+  std::vector<EvaluationRecord> evaluation;
 };
 
 struct ExperimentResults {

@@ -51,6 +51,20 @@ std::string trials_csv(const ExperimentResults& results) {
   return csv;
 }
 
+std::string evaluation_csv(const ExperimentResults& results) {
+  std::string csv = "arm,seed,theta0,balanced,steps,final_theta,status\n";
+  for (const SeedRun& run : results.runs) {
+    for (const EvaluationRecord& record : run.evaluation) {
+      const TrialOutcome& outcome = record.outcome;
+      csv += run.arm + "," + std::to_string(run.seed) + "," + number(record.theta0) + "," +
+             (outcome.status == TrialStatus::kSuccess ? "1" : "0") + "," +
+             std::to_string(outcome.steps) + "," + number(outcome.final_theta) + "," +
+             to_string(outcome.status) + "\n";
+    }
+  }
+  return csv;
+}
+
 std::string summary_json(const ExperimentResults& results, const config::Config& config) {
   std::ostringstream json;
   json << "{\n  \"experiment\": \"" << results.experiment << "\",\n";
@@ -77,7 +91,24 @@ std::string summary_json(const ExperimentResults& results, const config::Config&
     json << "      \"num_succeeded\": " << num_succeeded << ",\n";
     json << "      \"median\": " << json_number(median(failures)) << ",\n";
     json << "      \"min\": " << *std::min_element(failures.begin(), failures.end()) << ",\n";
-    json << "      \"max\": " << *std::max_element(failures.begin(), failures.end()) << "\n    }";
+    json << "      \"max\": " << *std::max_element(failures.begin(), failures.end());
+    // The learnt actor alone: per evaluation angle, the seeds whose policy balanced 20 s.
+    const auto& first = results.run(a, 0).evaluation;
+    if (!first.empty()) {
+      json << ",\n      \"evaluation\": {\"theta0\": [";
+      for (std::size_t e = 0; e < first.size(); ++e)
+        json << (e ? ", " : "") << number(first[e].theta0);
+      json << "], \"balanced\": [";
+      for (std::size_t e = 0; e < first.size(); ++e) {
+        int balanced = 0;
+        for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+          balanced += results.run(a, s).evaluation[e].outcome.status == TrialStatus::kSuccess;
+        }
+        json << (e ? ", " : "") << balanced;
+      }
+      json << "], \"of\": " << results.seeds.size() << "}";
+    }
+    json << "\n    }";
   }
   json << "\n  },\n  \"paper\": {";
   for (std::size_t p = 0; p < std::size(kPaper); ++p) {
@@ -93,6 +124,9 @@ void write_result_files(const ExperimentResults& results, const config::Config& 
   write_text(directory / "config.yaml", config.to_yaml());
   write_text(directory / "summary.json", summary_json(results, config));
   write_text(directory / "trials.csv", trials_csv(results));
+  if (results.experiment != "exp2") {
+    write_text(directory / "evaluation.csv", evaluation_csv(results));
+  }
   if (config.integer("log.decimation") > 0) {
     std::ofstream steps(directory / "steps.csv", std::ios::binary | std::ios::trunc);
     steps << steps_csv_header();

@@ -24,6 +24,7 @@ void write_result_files(const ExperimentResults& results, const config::Config& 
 
 std::string summary_json(const ExperimentResults& results, const config::Config& config);
 std::string trials_csv(const ExperimentResults& results);
+std::string evaluation_csv(const ExperimentResults& results);
 
 // A directory that becomes `target` only when commit() is called; destroyed uncommitted,
 // it is removed.

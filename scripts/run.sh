@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs the main job. Until the experiments land this is the demo
-# diagram of examples/: it writes results/demo/ (a CSV log and the block diagram).
+# Sets up, builds and runs the main job: the paper's experiment 1 with the built-in defaults
+# (`cbbg run`: arms cbbg and bg_only, 20 seeds, the Simbody plant), results in results/.
+# Extra arguments go to `cbbg run` (see `build/apps/cbbg run --help`).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/build.sh"
-"$root/build/examples/spring_mass" "$root/results/demo"
+cd "$root"
+exec "$root/build/apps/cbbg" run "$@"

@@ -171,6 +171,12 @@ TEST(LqrSupervisor, RejectsInvalidWeights) {
   EXPECT_THAT([&] { LqrSupervisor("supervisor", plant::RobotParams{}, zero_r); },
               ThrowsMessage<std::invalid_argument>(
                   StrEq("supervisor.lqr_r must be finite and > 0; got 0")));
+  LqrSupervisorParams blind_to_wheels;
+  blind_to_wheels.lqr_q = {100.0, 0.0, 1.0, 1.0};
+  EXPECT_THAT([&] { LqrSupervisor("supervisor", plant::RobotParams{}, blind_to_wheels); },
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("supervisor.lqr_q = [100, 0, 1, 1] with supervisor.lqr_r = 1 give "
+                            "no stabilising LQR gain for this robot")));
   LqrSupervisorParams nan_q;
   nan_q.lqr_q[0] = NAN;
   EXPECT_THAT([&] { LqrSupervisor("supervisor", plant::RobotParams{}, nan_q); },

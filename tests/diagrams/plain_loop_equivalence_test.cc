@@ -127,19 +127,19 @@ config::Config analytic_config() {
 
 // Runs `theta0s.size()` consecutive trials of diagram `arm` and of the plain loop under
 // `loop_config` (the diagram always uses `config`); expects every trial to match.
-struct Run {
+struct BothRuns {
   std::vector<diagrams::TrialOutcome> outcomes;
   testing::AssertionResult all_match = testing::AssertionSuccess();
 };
 
-Run run_both(const std::string& arm, const config::Config& config,
-             const config::Config& loop_config, std::uint64_t seed, std::uint64_t loop_seed,
-             const std::vector<double>& theta0s) {
+BothRuns run_both(const std::string& arm, const config::Config& config,
+                  const config::Config& loop_config, std::uint64_t seed, std::uint64_t loop_seed,
+                  const std::vector<double>& theta0s) {
   const diagrams::ControllerDiagram controller = diagrams::build_controller_diagram(arm, config);
   diagrams::TrialRunner runner(controller, seed, config.number("trial.period"));
   PlainLoop loop(loop_config, loop_seed, arm);
   const double duration = config.number("trial.duration");
-  Run run;
+  BothRuns run;
   for (size_t trial = 0; trial < theta0s.size(); ++trial) {
     run.outcomes.push_back(runner.run_trial(theta0s[trial], duration));
     const PlainLoopOutcome loop_outcome = loop.run_trial(theta0s[trial], duration);
@@ -163,7 +163,7 @@ TEST(PlainLoopEquivalence, CbbgTrialMatchesTheDiagramBitForBitForThreeSeeds) {
   const config::Config config = analytic_config();
   const double theta0 = config.number("trial.theta0");
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
-    const Run run = run_both("cbbg", config, config, seed, seed, {theta0});
+    const BothRuns run = run_both("cbbg", config, config, seed, seed, {theta0});
     EXPECT_TRUE(run.all_match);
     ASSERT_EQ(run.outcomes.size(), 1u);
     // A whole trial: the 20 s of a success (2000 ticks at 10 ms) or up to a failure.
@@ -183,7 +183,7 @@ TEST(PlainLoopEquivalence, ConsecutiveCbbgTrialsMatchAsWeightsAndOmegaCarryOver)
   // integrator's step carry over; the trace, the previous tick and the plant reset.
   const config::Config config = analytic_config();
   const double theta0 = config.number("trial.theta0");
-  const Run run = run_both("cbbg", config, config, 7, 7, {0.45, theta0, theta0});
+  const BothRuns run = run_both("cbbg", config, config, 7, 7, {0.45, theta0, theta0});
   EXPECT_TRUE(run.all_match);
   ASSERT_EQ(run.outcomes.size(), 3u);
   EXPECT_EQ(run.outcomes[0].status, diagrams::TrialStatus::kFailed);
@@ -193,7 +193,7 @@ TEST(PlainLoopEquivalence, BgOnlyTrialsMatchTheDiagramThroughFailures) {
   // The basal ganglia alone (omega = 1, no supervisor) fails its first trials.
   const config::Config config = analytic_config();
   const double theta0 = config.number("trial.theta0");
-  const Run run = run_both("bg_only", config, config, 3, 3, {theta0, theta0, theta0});
+  const BothRuns run = run_both("bg_only", config, config, 3, 3, {theta0, theta0, theta0});
   EXPECT_TRUE(run.all_match);
   ASSERT_EQ(run.outcomes.size(), 3u);
   EXPECT_EQ(run.outcomes[0].status, diagrams::TrialStatus::kFailed);
@@ -203,7 +203,7 @@ TEST(PlainLoopEquivalence, DetectsAnotherSamplerStream) {
   // Another root seed gives the sampler another normal draw at the first tick: the first
   // signal to differ is a_E at tick 0 (the features, values, a_S and a_A agree there).
   const config::Config config = analytic_config();
-  const Run run = run_both("cbbg", config, config, 1, 2, {config.number("trial.theta0")});
+  const BothRuns run = run_both("cbbg", config, config, 1, 2, {config.number("trial.theta0")});
   EXPECT_FALSE(run.all_match);
   EXPECT_THAT(run.all_match.message(), testing::HasSubstr("exploration_action differs at tick 0"));
 }
@@ -214,7 +214,7 @@ TEST(PlainLoopEquivalence, DetectsAOneUlpChangeOfTheCriticRate) {
   config::Config perturbed = config;
   perturbed.set("critic.beta=" + exact(std::nextafter(config.number("critic.beta"), 1.0)));
   ASSERT_NE(perturbed.number("critic.beta"), config.number("critic.beta"));
-  const Run run = run_both("cbbg", config, perturbed, 1, 1, {config.number("trial.theta0")});
+  const BothRuns run = run_both("cbbg", config, perturbed, 1, 1, {config.number("trial.theta0")});
   EXPECT_FALSE(run.all_match);
   EXPECT_THAT(run.all_match.message(), testing::HasSubstr("value differs at tick"));
 }
