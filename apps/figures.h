@@ -10,9 +10,10 @@ namespace cbbg::app {
 
 // Draws DIR/figures/. A missing Python/matplotlib or Graphviz is reported as a warning: the
 // data files stand on their own. Returns false when a figure could not be made.
-bool draw_figures(const std::filesystem::path& directory, const config::Config& config);
+// Quiet hides the script's list of files written.
+bool draw_figures(const std::filesystem::path& directory, const config::Config& config, bool quiet);
 
 // Runs the plotting script on DIR; returns its exit code.
-int run_plot_script(const std::filesystem::path& directory);
+int run_plot_script(const std::filesystem::path& directory, bool quiet);
 
 }  // namespace cbbg::app

@@ -26,16 +26,18 @@ std::string quoted(const std::string& text) {
 
 }  // namespace
 
-int run_plot_script(const std::filesystem::path& directory) {
-  const std::string command =
-      std::string(kPython) + " " + quoted(CBBG_PLOT_SCRIPT) + " " + quoted(directory.string());
+int run_plot_script(const std::filesystem::path& directory, bool quiet) {
+  // Quiet: the script's "wrote ..." lines would name the staging directory; errors still show.
+  const std::string command = std::string(kPython) + " " + quoted(CBBG_PLOT_SCRIPT) + " " +
+                              quoted(directory.string()) + (quiet ? " > /dev/null" : "");
   const int status = std::system(command.c_str());
   if (status == -1 || !WIFEXITED(status)) return 1;
   return WEXITSTATUS(status);
 }
 
-bool draw_figures(const std::filesystem::path& directory, const config::Config& config) {
-  bool complete = run_plot_script(directory) == 0;
+bool draw_figures(const std::filesystem::path& directory, const config::Config& config,
+                  bool quiet) {
+  bool complete = run_plot_script(directory, quiet) == 0;
   if (!complete) spdlog::warn("the plots could not be drawn (see the message above)");
   std::filesystem::create_directories(directory / "figures");
   const std::string experiment = config.text("experiment");
@@ -64,7 +66,7 @@ int plot_command(const std::filesystem::path& directory) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
     return 2;
   }
-  return draw_figures(directory, config) ? 0 : 1;
+  return draw_figures(directory, config, /*quiet=*/false) ? 0 : 1;
 }
 
 }  // namespace cbbg::app

@@ -31,7 +31,31 @@ config::Config resolve(const RunOptions& options) {
   return config;
 }
 
+// exp2: mean temperature, entropy and successes of the first and last trials, over seeds.
+void print_annealing_summary(const diagrams::ExperimentResults& results) {
+  const auto& first_run = results.runs.front();
+  std::printf("%-6s %6s %12s %12s %10s\n", "trial", "k1", "mean T", "mean E", "balanced");
+  for (std::size_t t = 0; t < first_run.trials.size(); ++t) {
+    double temperature = 0.0;
+    double entropy = 0.0;
+    int balanced = 0;
+    for (const auto& run : results.runs) {
+      temperature += run.trials[t].outcome.mean_temperature;
+      entropy += run.trials[t].outcome.mean_entropy;
+      balanced += run.trials[t].outcome.status == diagrams::TrialStatus::kSuccess ? 1 : 0;
+    }
+    const double n = static_cast<double>(results.runs.size());
+    std::printf("%-6d %6g %12.4f %12.4f %6d/%zu\n", first_run.trials[t].trial,
+                first_run.trials[t].k1, temperature / n, entropy / n, balanced,
+                results.runs.size());
+  }
+}
+
 void print_summary(const diagrams::ExperimentResults& results) {
+  if (results.experiment == "exp2") {
+    print_annealing_summary(results);
+    return;
+  }
   std::printf("%-14s %8s %10s %8s %s\n", "arm", "seeds", "succeeded", "median", "range");
   for (std::size_t a = 0; a < results.arms.size(); ++a) {
     int succeeded = 0;
@@ -81,7 +105,7 @@ int run_command(const RunOptions& options) {
     diagrams::StagingDirectory staging(options.out);
     diagrams::write_result_files(results, config, staging.path());
     if (options.figures) {
-      draw_figures(staging.path(), config);
+      draw_figures(staging.path(), config, /*quiet=*/true);
     }
     staging.commit();
     print_summary(results);

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <map>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -20,9 +21,10 @@ class RatioReporter : public benchmark::ConsoleReporter {
 
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const Run& run : runs) {
-      if (run.run_type == Run::RT_Iteration && run.error_occurred == false) {
+      if (run.run_type == Run::RT_Iteration && !run.error_occurred) {
+        // With repetitions the last one stands; each name is listed once.
+        if (cpu_ns_.count(run.benchmark_name()) == 0) order_.push_back(run.benchmark_name());
         cpu_ns_[run.benchmark_name()] = run.GetAdjustedCPUTime();
-        order_.push_back(run.benchmark_name());
       }
     }
     ConsoleReporter::ReportRuns(runs);

@@ -36,12 +36,23 @@ plant::RobotParams robot_params(const config::Config& c) {
   p.wheel_inertia = c.number("plant.wheel_inertia");
   p.body_pitch_inertia = c.number("plant.body_pitch_inertia");
   p.body_yaw_inertia = c.number("plant.body_yaw_inertia");
+  p.body_roll_inertia = c.number("plant.body_roll_inertia");
+  p.wheel_diametral_inertia = c.number("plant.wheel_diametral_inertia");
   p.gravity = c.number("plant.gravity");
   p.wheel_ground_friction = c.number("plant.wheel_ground_friction");
   p.axle_friction = c.number("plant.axle_friction");
   p.torque_limit = c.number("plant.torque_limit");
   p.accuracy = c.number("plant.accuracy");
-  return validated(p);
+  validated(p);
+  if (c.text("plant.kind") == "simbody") {
+    // A multibody model also needs inertias a rigid body can have.
+    try {
+      p.validate_rigid_bodies();
+    } catch (const std::invalid_argument& error) {
+      throw config::ConfigError(error.what());
+    }
+  }
+  return p;
 }
 
 blocks::SensorsParams sensors_params(const config::Config& c) {

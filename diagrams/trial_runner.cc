@@ -21,12 +21,15 @@ const char* to_string(TrialStatus status) {
 TrialRunner::TrialRunner(const ControllerDiagram& controller, std::uint64_t seed, double period)
     : controller_(&controller),
       simulator_(*controller.diagram, SimulatorOptions{.accuracy = controller.accuracy}, seed),
-      telemetry_(&simulator_.add_log(*controller.telemetry, period)) {}
+      telemetry_(&simulator_.add_log(*controller.telemetry, period)),
+      period_(period) {}
 
 TrialOutcome TrialRunner::run_trial(double theta0, double duration) {
   Context& context = simulator_.context();
   controller_->start_trial(context, theta0);
   telemetry_->clear();
+  // Room for every tick before the trial starts: logging never allocates while ticking.
+  telemetry_->reserve(static_cast<int>(std::ceil(duration / period_)) + 1);
   TrialOutcome outcome;
   try {
     simulator_.initialize();

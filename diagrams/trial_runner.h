@@ -40,6 +40,7 @@ class TrialRunner {
   const ControllerDiagram* controller_;
   Simulator simulator_;
   SignalLog* telemetry_;
+  double period_;
 };
 
 }  // namespace cbbg::diagrams

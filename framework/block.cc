@@ -67,10 +67,6 @@ const OutputPort& Block::output_port(std::string_view name) const {
                               "'; its output ports are: " + list_names(outputs_));
 }
 
-const OutputFunction& Block::output_function(int output_index) const {
-  return output_functions_.at(static_cast<std::size_t>(output_index));
-}
-
 const std::vector<int>& Block::output_reads(int output_index) const {
   return output_reads_.at(static_cast<std::size_t>(output_index));
 }

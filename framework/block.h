@@ -84,7 +84,9 @@ class Block {
   const OutputPort& output_port(std::string_view name) const;
 
   // What a leaf block declared (empty for a Diagram).
-  const OutputFunction& output_function(int output_index) const;
+  const OutputFunction& output_function(int output_index) const {
+    return output_functions_[static_cast<std::size_t>(output_index)];
+  }
   // Inputs that the output reads directly (direct feedthrough), by input index.
   const std::vector<int>& output_reads(int output_index) const;
   const Vector& initial_discrete_state() const { return initial_discrete_state_; }

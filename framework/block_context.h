@@ -16,10 +16,9 @@ class BlockContext {
   double time() const { return context_->time(); }
 
   ConstVectorView input(int index) const {
-    const InputPort& port = layout_->block->input_port(index);
-    return ConstVectorView(
-        context_->signals().data() + layout_->input_offsets[static_cast<size_t>(index)],
-        port.size());
+    const auto i = static_cast<size_t>(index);
+    return ConstVectorView(context_->signals().data() + layout_->input_offsets[i],
+                           layout_->input_sizes[i]);
   }
   ConstVectorView input(const InputPort& port) const { return input(port.index()); }
 

@@ -44,28 +44,21 @@ std::unique_ptr<Context> Diagram::create_context(std::uint64_t root_seed) const 
   return std::make_unique<Context>(*this, root_seed);
 }
 
-void Diagram::evaluate_outputs(Context& context) const {
+void Diagram::evaluate(Context& context, const std::vector<OutputSlot>& order) const {
   double* signals = context.signals().data();
-  for (const OutputSlot& slot : evaluation_order_) {
+  for (const OutputSlot& slot : order) {
     const LeafLayout& leaf = leaves_[static_cast<size_t>(slot.leaf)];
     const BlockContext view(context, leaf);
     const auto port = static_cast<size_t>(slot.port);
     leaf.block->output_function(slot.port)(
-        view,
-        VectorView(signals + leaf.output_offsets[port], leaf.block->output_port(slot.port).size()));
+        view, VectorView(signals + leaf.output_offsets[port], leaf.output_sizes[port]));
   }
 }
 
+void Diagram::evaluate_outputs(Context& context) const { evaluate(context, evaluation_order_); }
+
 void Diagram::evaluate_continuous_inputs(Context& context) const {
-  double* signals = context.signals().data();
-  for (const OutputSlot& slot : continuous_input_order_) {
-    const LeafLayout& leaf = leaves_[static_cast<size_t>(slot.leaf)];
-    const BlockContext view(context, leaf);
-    const auto port = static_cast<size_t>(slot.port);
-    leaf.block->output_function(slot.port)(
-        view,
-        VectorView(signals + leaf.output_offsets[port], leaf.block->output_port(slot.port).size()));
-  }
+  evaluate(context, continuous_input_order_);
 }
 
 ConstVectorView Diagram::eval_output(Context& context, const OutputPort& port) const {
@@ -133,9 +126,11 @@ void Diagram::assign_signal_offsets() {
     first_node_[static_cast<size_t>(leaf.index)] = num_nodes_;
     num_nodes_ += leaf.block->num_output_ports();
     leaf.output_offsets.clear();
+    leaf.output_sizes.clear();
     for (int port = 0; port < leaf.block->num_output_ports(); ++port) {
       leaf.output_offsets.push_back(size);
-      size += leaf.block->output_port(port).size();
+      leaf.output_sizes.push_back(leaf.block->output_port(port).size());
+      size += leaf.output_sizes.back();
     }
   }
   root_input_offsets_.clear();
@@ -149,7 +144,9 @@ void Diagram::assign_signal_offsets() {
   for (auto& leaf : leaves_) {
     auto& sources = input_sources_[static_cast<size_t>(leaf.index)];
     leaf.input_offsets.clear();
+    leaf.input_sizes.clear();
     for (int port = 0; port < leaf.block->num_input_ports(); ++port) {
+      leaf.input_sizes.push_back(leaf.block->input_port(port).size());
       const InputSource source = resolve_input(leaf.block->input_port(port));
       sources.push_back(source);
       if (source.output.leaf >= 0) {

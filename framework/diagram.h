@@ -84,6 +84,8 @@ class Diagram final : public Block {
   };
 
   void finalize();
+  // Computes the outputs of `order` into the context's signals.
+  void evaluate(Context& context, const std::vector<OutputSlot>& order) const;
   void collect_leaves(const Diagram& diagram);
   InputSource resolve_input(const InputPort& port) const;
   void assign_signal_offsets();

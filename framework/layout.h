@@ -12,7 +12,9 @@ struct LeafLayout {
   const Block* block = nullptr;
   int index = 0;                       // position among the leaves: its generator and scratch
   std::vector<int> input_offsets;      // into Context signals, per input port
+  std::vector<int> input_sizes;        // per input port (copied here: read on every tick)
   std::vector<int> output_offsets;     // into Context signals, per output port
+  std::vector<int> output_sizes;       // per output port
   int discrete_offset = 0;             // into Context discrete state
   int continuous_offset = 0;           // into Context continuous state
   std::vector<int> parameter_offsets;  // into Context parameters, per parameter

@@ -14,6 +14,7 @@ namespace odeint = boost::numeric::odeint;
 namespace {
 
 constexpr double kSimultaneous = 1e-9;  // relative tolerance for simultaneous events
+constexpr double kFirstStep = 1e-3;     // the integrator's first trial step, s
 
 bool same_instant(double a, double b) {
   return std::abs(a - b) <= kSimultaneous * std::max(1.0, std::abs(b));
@@ -34,7 +35,7 @@ struct Simulator::Integrator {
 
   Stepper stepper;
   State state;
-  double step = 1e-3;  // the step the controller proposed last
+  double step = kFirstStep;  // the step the controller proposed last
 };
 
 Simulator::Simulator(const Diagram& diagram, SimulatorOptions options, std::uint64_t root_seed)
@@ -130,6 +131,9 @@ SimulationStatus Simulator::run_updates(
 SimulationStatus Simulator::initialize() {
   check_root_inputs();
   terminated_ = false;
+  // The step size is integrator memory, not state: forgetting it makes a run a function of
+  // its context alone, so a restart from a stored context repeats bit for bit.
+  integrator_->step = kFirstStep;
   schedule_events();
   due_updates_.clear();
   for (const auto& leaf : diagram_->leaves()) {

@@ -2,7 +2,8 @@
 // Simulator: advances a Context of a root Diagram through time.
 //
 // Step semantics (tested in tests/framework/simulator_test.cc):
-//  1. initialize() runs every block's initialization updates once, then schedules periodic
+//  1. initialize() runs every block's initialization updates once, resets the integrator's
+//     step size (a run depends on its context alone), then schedules periodic
 //     events: an event of period p and offset o fires at t = o + k p, for the integers k with
 //     o + k p >= the context's time at initialize(). Events whose times agree within
 //     1e-9 * max(1, |t|) are simultaneous.

@@ -8,16 +8,16 @@ enum TorqueIndex : int { kTauLeft = 0, kTauRight = 1, kTorqueSize = 2 };
 
 // Output port "state" (size 10).
 enum StateIndex : int {
-  kThetaB = 0,    // body pitch, rad; > 0 leans forward (+x)
-  kThetaBDot,     // body pitch rate, rad/s
-  kPhiLeft,       // left wheel absolute angle, rad
-  kPhiRight,      // right wheel absolute angle, rad
-  kPhiLeftDot,    // left wheel rate, rad/s
-  kPhiRightDot,   // right wheel rate, rad/s
-  kX,             // axle midpoint x, m
-  kY,             // axle midpoint y, m
-  kYaw,           // heading, rad
-  kYawRate,       // heading rate, rad/s
+  kThetaB = 0,   // body pitch, rad; > 0 leans forward (+x)
+  kThetaBDot,    // body pitch rate, rad/s
+  kPhiLeft,      // left wheel absolute angle, rad
+  kPhiRight,     // right wheel absolute angle, rad
+  kPhiLeftDot,   // left wheel rate, rad/s
+  kPhiRightDot,  // right wheel rate, rad/s
+  kX,            // axle midpoint x, m
+  kY,            // axle midpoint y, m
+  kYaw,          // heading, rad
+  kYawRate,      // heading rate, rad/s
   kStateSize
 };
 

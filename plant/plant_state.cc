@@ -30,10 +30,14 @@ std::string list_state(const double* state, Eigen::Index size) {
 
 }  // namespace
 
-Vector initial_state_vector(double initial_pitch) {
+void check_initial_pitch(double initial_pitch) {
   if (!std::isfinite(initial_pitch)) {
     throw std::invalid_argument("trial.theta0 must be finite; got " + format_number(initial_pitch));
   }
+}
+
+Vector initial_state_vector(double initial_pitch) {
+  check_initial_pitch(initial_pitch);
   Vector state = Vector::Zero(kStateSize);
   state[kThetaB] = initial_pitch;
   return state;

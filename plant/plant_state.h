@@ -9,6 +9,8 @@ namespace cbbg::plant {
 
 // theta_b = initial_pitch (trial.theta0), everything else zero. A non-finite pitch throws
 // std::invalid_argument naming trial.theta0.
+// Throws naming trial.theta0 unless the initial pitch is finite.
+void check_initial_pitch(double initial_pitch);
 Vector initial_state_vector(double initial_pitch);
 
 // For set_state: 10 finite values, else std::invalid_argument naming the block.

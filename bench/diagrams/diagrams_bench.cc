@@ -6,7 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include <stdexcept>
+#include <ostream>  // before bench/ratio_reporter.h, which streams without including it
 #include <string>
 
 #include "bench/ratio_reporter.h"

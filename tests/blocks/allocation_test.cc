@@ -22,7 +22,7 @@
 #include "framework/primitives/constant_source.h"
 #include "framework/simulator.h"
 #include "plant/plant_ports.h"
-#include "tests/blocks/allocation_counter.h"
+#include "tests/support/allocation_counter.h"
 
 namespace cbbg::blocks {
 namespace {
@@ -83,21 +83,21 @@ TEST(BlocksAllocation, ATickOfEveryLearningBlockAllocatesNothing) {
   simulator.advance_to(0.105);  // initialisation and the first ticks
   ASSERT_FALSE(simulator.advance_to(0.105).terminated);
 
-  const long long before = testing::allocation_count();
+  const long long before = cbbg::testing::allocation_count();
   const auto status = simulator.advance_to(10.005);  // 990 more ticks
-  const long long during_ticks = testing::allocation_count() - before;
+  const long long during_ticks = cbbg::testing::allocation_count() - before;
   ASSERT_FALSE(status.terminated);
   EXPECT_EQ(during_ticks, 0);
 
   // The learning did happen, and a new trial's reset allocates nothing either.
   EXPECT_NE(critic.weights(simulator.context()).norm(), 0.0);
   EXPECT_NE(actor.weights(simulator.context()).norm(), 0.0);
-  const long long before_reset = testing::allocation_count();
+  const long long before_reset = cbbg::testing::allocation_count();
   sensors.start_trial(simulator.context());
   reward.start_trial(simulator.context());
   critic.start_trial(simulator.context());
   actor.start_trial(simulator.context());
-  EXPECT_EQ(testing::allocation_count() - before_reset, 0);
+  EXPECT_EQ(cbbg::testing::allocation_count() - before_reset, 0);
 }
 
 }  // namespace

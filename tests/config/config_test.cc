@@ -74,7 +74,8 @@ TEST(Config, RejectsWrongTypesNamingKeyAndAllowedValues) {
   EXPECT_EQ(error_of_yaml("plant: 3"),
             "my.yaml: plant is a section: give a map of its keys (kind, wheel_mass, body_mass, "
             "wheel_radius, track_width, com_height, wheel_inertia, body_pitch_inertia, "
-            "body_yaw_inertia, gravity, wheel_ground_friction, axle_friction, torque_limit, "
+            "body_yaw_inertia, body_roll_inertia, wheel_diametral_inertia, gravity, "
+            "wheel_ground_friction, axle_friction, torque_limit, "
             "accuracy); got '3'");
   EXPECT_EQ(error_of_yaml("- 1\n- 2\n"), "my.yaml: a config is a map of keys; got [1, 2]");
 }

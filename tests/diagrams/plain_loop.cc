@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <boost/numeric/odeint.hpp>
@@ -24,8 +27,10 @@ using OdeState = std::vector<double>;
 using Stepper = odeint::controlled_runge_kutta<odeint::runge_kutta_dopri5<OdeState>>;
 constexpr int kOdeSize = 9;
 
-// The Simulator's rule for two event times being one instant, and its smallest step.
+// The Simulator's rule for two event times being one instant, its first trial step (again
+// at each initialize(), so at each trial) and its smallest step.
 constexpr double kSimultaneous = 1e-9;
+constexpr double kFirstStep = 1e-3;
 constexpr double kMinStep = 1e-12;
 
 bool same_instant(double a, double b) {
@@ -80,17 +85,17 @@ struct PlainLoop::State {
   OmegaMode omega_mode;
   double n2, n3;
 
-  // Memory that lasts across trials: the learnt weights, the omega counter, the sampler's
-  // generator and the integrator (its step size carries over).
+  // Memory that lasts across trials: the learnt weights, the omega counter and the
+  // sampler's generator.
   Eigen::VectorXd critic_weights;
   Eigen::VectorXd actor_weights;
   double omega_ticks = 0.0;
   RandomGenerator generator;
   Stepper stepper;
-  double integrator_step = 1e-3;
   double held_torque = 0.0;
 
   // Memory of one trial.
+  double integrator_step = kFirstStep;  // the step the stepper proposed last
   OdeState x = OdeState(kOdeSize, 0.0);
   Eigen::VectorXd trace;              // z
   Eigen::VectorXd previous_features;  // phi(s_{t-1})
@@ -173,7 +178,9 @@ const Eigen::VectorXd& PlainLoop::actor_weights() const { return state_->actor_w
 
 PlainLoopOutcome PlainLoop::run_trial(double theta0, double duration) {
   State& s = *state_;
-  // A new trial: the robot at theta0, at rest; the trace and the previous tick forgotten.
+  // A new trial: the robot at theta0, at rest; the trace, the previous tick and the
+  // integrator's step size forgotten.
+  s.integrator_step = kFirstStep;
   std::fill(s.x.begin(), s.x.end(), 0.0);
   s.x[0] = theta0;
   s.trace.setZero();
@@ -258,7 +265,8 @@ bool PlainLoop::State::tick() {
     }
   }
 
-  // Critic: V(s_t) and delta_{t-1}, with the weights before this tick's update.
+  // Critic: V(s_t) and delta_{t-1}, with the weights before this tick's update. Dot
+  // products go through Eigen, as in the blocks: its vectorised sum has its own order.
   const double value = critic_weights.dot(features);
   const double td_error =
       has_previous ? reward + gamma * (failed ? 0.0 : value) - critic_weights.dot(previous_features)

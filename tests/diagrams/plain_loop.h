@@ -2,9 +2,10 @@
 // SPEC section 2 written as one plain C++ loop, without the framework: no Block, Diagram,
 // Context or Simulator. It drives the analytic plant (plant/robot_dynamics.h) through the
 // same Boost.Odeint stepper the Simulator uses and repeats each block's floating-point
-// operations in the blocks' order, so for the same root seed it must give bit-identical
-// numbers to the diagram diagrams::build_controller_diagram builds. It is the reference of
-// the diagram-wiring test and the baseline of the diagram overhead benchmark.
+// operations in the blocks' order (dot products through Eigen, as the blocks do), so for the same
+// root seed it must give bit-identical numbers to the diagram diagrams::build_controller_diagram
+// builds. It is the reference of the diagram-wiring test and the baseline of the diagram overhead
+// benchmark.
 //
 // One tick at t, as the Simulator's step semantics order it: every signal is computed from
 // the state at t (sensors, failure, reward, supervisor, normaliser, features, critic, actor,
@@ -66,7 +67,7 @@ class PlainLoop {
   PlainLoop& operator=(const PlainLoop&) = delete;
 
   // Runs one trial from `theta0` until failure or `duration`; learnt weights, the omega
-  // counter, the sampler's generator and the integrator's step size carry into the next.
+  // counter and the sampler's generator carry into the next.
   PlainLoopOutcome run_trial(double theta0, double duration);
 
   // Every tick of the last trial.

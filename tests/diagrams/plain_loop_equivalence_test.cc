@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -125,13 +126,15 @@ config::Config analytic_config() {
   return config;
 }
 
-// Runs `theta0s.size()` consecutive trials of diagram `arm` and of the plain loop under
-// `loop_config` (the diagram always uses `config`); expects every trial to match.
+// The diagram's trial outcomes, and whether every trial matched the plain loop's.
 struct BothRuns {
   std::vector<diagrams::TrialOutcome> outcomes;
   testing::AssertionResult all_match = testing::AssertionSuccess();
 };
 
+// Runs one trial from each of `theta0s` in turn with diagram `arm` under `config` and root
+// seed `seed`, and with the plain loop under `loop_config` and `loop_seed`; stops at the
+// first trial whose ticks, outcome or learnt weights differ and says where.
 BothRuns run_both(const std::string& arm, const config::Config& config,
                   const config::Config& loop_config, std::uint64_t seed, std::uint64_t loop_seed,
                   const std::vector<double>& theta0s) {
@@ -145,11 +148,13 @@ BothRuns run_both(const std::string& arm, const config::Config& config,
     const PlainLoopOutcome loop_outcome = loop.run_trial(theta0s[trial], duration);
     testing::AssertionResult same =
         SameTrial(run.outcomes.back(), runner.telemetry(), loop_outcome, loop.ticks());
-    if (same)
+    if (same) {
       same = SameWeights("w", controller.critic->weights(runner.context()), loop.critic_weights());
-    if (same)
+    }
+    if (same) {
       same =
           SameWeights("theta", controller.actor->weights(runner.context()), loop.actor_weights());
+    }
     if (!same) {
       run.all_match = testing::AssertionFailure() << arm << ", seed " << seed << ", trial "
                                                   << trial + 1 << ": " << same.message();
@@ -178,15 +183,17 @@ TEST(PlainLoopEquivalence, CbbgTrialMatchesTheDiagramBitForBitForThreeSeeds) {
 }
 
 TEST(PlainLoopEquivalence, ConsecutiveCbbgTrialsMatchAsWeightsAndOmegaCarryOver) {
-  // Trial 1 from a pitch the early supervisor cannot hold, so it fails mid-way; the others
-  // start where the experiments do. Weights, the omega counter, the sampler's stream and the
-  // integrator's step carry over; the trace, the previous tick and the plant reset.
+  // Weights, the omega counter and the sampler's stream carry over; the trace, the previous
+  // tick, the plant and the integrator's step size reset. With this seed trial 1 succeeds under
+  // the supervisor and the next ones, with omega near 1 after 2000 ticks, fail: both
+  // endings, and a reset after each, are exercised.
   const config::Config config = analytic_config();
   const double theta0 = config.number("trial.theta0");
-  const BothRuns run = run_both("cbbg", config, config, 7, 7, {0.45, theta0, theta0});
+  const BothRuns run = run_both("cbbg", config, config, 7, 7, {theta0, theta0, theta0, theta0});
   EXPECT_TRUE(run.all_match);
-  ASSERT_EQ(run.outcomes.size(), 3u);
-  EXPECT_EQ(run.outcomes[0].status, diagrams::TrialStatus::kFailed);
+  ASSERT_EQ(run.outcomes.size(), 4u);
+  EXPECT_EQ(run.outcomes[0].status, diagrams::TrialStatus::kSuccess);
+  EXPECT_EQ(run.outcomes[1].status, diagrams::TrialStatus::kFailed);
 }
 
 TEST(PlainLoopEquivalence, BgOnlyTrialsMatchTheDiagramThroughFailures) {
@@ -197,6 +204,16 @@ TEST(PlainLoopEquivalence, BgOnlyTrialsMatchTheDiagramThroughFailures) {
   EXPECT_TRUE(run.all_match);
   ASSERT_EQ(run.outcomes.size(), 3u);
   EXPECT_EQ(run.outcomes[0].status, diagrams::TrialStatus::kFailed);
+}
+
+TEST(PlainLoopEquivalence, WeightedRuleAndCbOnlyMatchTheDiagram) {
+  const config::Config config = analytic_config();
+  const double theta0 = config.number("trial.theta0");
+  for (const char* arm : {"cbbg_weighted", "cb_only"}) {
+    const BothRuns run = run_both(arm, config, config, 5, 5, {theta0, theta0});
+    EXPECT_TRUE(run.all_match);
+    EXPECT_EQ(run.outcomes.size(), 2u);
+  }
 }
 
 TEST(PlainLoopEquivalence, DetectsAnotherSamplerStream) {
@@ -217,6 +234,23 @@ TEST(PlainLoopEquivalence, DetectsAOneUlpChangeOfTheCriticRate) {
   const BothRuns run = run_both("cbbg", config, perturbed, 1, 1, {config.number("trial.theta0")});
   EXPECT_FALSE(run.all_match);
   EXPECT_THAT(run.all_match.message(), testing::HasSubstr("value differs at tick"));
+}
+
+TEST(PlainLoop, RejectsWhatItDoesNotWriteOut) {
+  const config::Config config = analytic_config();
+  EXPECT_THAT([&] { PlainLoop loop(config, 1, "pd_only"); },
+              testing::ThrowsMessage<std::invalid_argument>(testing::HasSubstr(
+                  "the arm must be cbbg, cbbg_weighted, bg_only or cb_only; got 'pd_only'")));
+  config::Config noisy = config;
+  noisy.set("sensors.noise_std=[0, 0.01, 0, 0, 0, 0]");
+  EXPECT_THAT([&] { PlainLoop loop(noisy, 1); },
+              testing::ThrowsMessage<std::invalid_argument>(
+                  testing::HasSubstr("sensors.noise_std must be all 0")));
+  config::Config lqr = config;
+  lqr.set("supervisor.kind=lqr");
+  EXPECT_THAT([&] { PlainLoop loop(lqr, 1); },
+              testing::ThrowsMessage<std::invalid_argument>(
+                  testing::HasSubstr("supervisor.kind must be pd; got 'lqr'")));
 }
 
 }  // namespace

@@ -1,9 +1,6 @@
 // One simulator tick allocates nothing on the heap after initialisation. This executable
-// replaces the global allocation functions to count calls.
-
-#include <atomic>
-#include <cstdlib>
-#include <new>
+// counts calls of the C allocator (tests/support/allocation_counter.h), which catches Eigen
+// and operator new alike.
 
 #include <gtest/gtest.h>
 
@@ -13,21 +10,7 @@
 #include "framework/primitives/zero_order_hold.h"
 #include "framework/simulator.h"
 #include "tests/framework/test_blocks.h"
-
-namespace {
-std::atomic<long> allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++allocations;
-  if (void* memory = std::malloc(size == 0 ? 1 : size)) return memory;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) { return operator new(size); }
-void operator delete(void* memory) noexcept { std::free(memory); }
-void operator delete[](void* memory) noexcept { std::free(memory); }
-void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
-void operator delete[](void* memory, std::size_t) noexcept { std::free(memory); }
+#include "tests/support/allocation_counter.h"
 
 namespace cbbg {
 namespace {
@@ -58,21 +41,24 @@ TEST(Allocation, ASimulatorTickAllocatesNothingAfterInitialisation) {
   log.reserve(1000);
   simulator.advance_to(0.05);  // initialisation and the first instants
 
-  const long before = allocations.load();
+  const long long before = testing::allocation_count();
   simulator.advance_to(5.0);
-  const long during = allocations.load() - before;
+  const long long during = testing::allocation_count() - before;
   EXPECT_EQ(during, 0) << "heap allocations in 495 ticks";
   EXPECT_EQ(simulator.num_event_instants(), 500);
   EXPECT_NEAR(simulator.context().continuous_state(integral)[0], 0.5 * 5.0, 1e-9);
   EXPECT_NEAR(simulator.context().continuous_state(self)[0], 0.5 * 5.0, 1e-9);
 }
 
-TEST(Allocation, TheCounterSeesAllocations) {
+TEST(Allocation, TheCounterSeesOperatorNewAndEigen) {
   // The test above could not fail if counting were broken.
-  const long before = allocations.load();
+  const long long before = testing::allocation_count();
   int* volatile observed = new int(3);  // volatile: the compiler may not elide the pair
   delete observed;
-  EXPECT_EQ(allocations.load() - before, 1);
+  EXPECT_EQ(testing::allocation_count() - before, 1);
+  const Vector grown = Vector::Ones(16) * 2.0;  // Eigen allocates with std::malloc
+  EXPECT_EQ(testing::allocation_count() - before, 2);
+  EXPECT_EQ(grown.sum(), 32.0);
 }
 
 }  // namespace

@@ -174,6 +174,25 @@ TEST(Simulator, RestartsFromAStoredInitialContext) {
   EXPECT_DOUBLE_EQ(status.time, 0.02);
 }
 
+TEST(Simulator, ARestartFromAStoredContextRepeatsBitForBit) {
+  DiagramBuilder builder("top");
+  auto& counter = builder.emplace<testing::Counter>("counter", 0.01);
+  auto& decay = builder.emplace<testing::Exponential>("decay", -3.0, 1.0);
+  auto& integral = builder.emplace<testing::Integrator>("integral");
+  builder.connect(counter, "y", integral, "u");
+  auto diagram = builder.build();
+  Simulator simulator(*diagram);
+  const auto initial = simulator.context().clone();
+  simulator.advance_to(1.0);
+  const Vector first = simulator.context().continuous_states();
+  simulator.context().assign_from(*initial);
+  simulator.initialize();
+  simulator.advance_to(1.0);
+  EXPECT_EQ(simulator.context().continuous_states(), first);
+  EXPECT_GT(simulator.context().continuous_state(decay)[0], 0.0);
+  EXPECT_GT(simulator.context().continuous_state(integral)[0], 0.0);
+}
+
 TEST(Simulator, InitializationUpdatesRunOnceBeforeTheFirstInstant) {
   class InitialisedCounter final : public Block {
    public:

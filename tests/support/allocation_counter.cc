@@ -2,7 +2,7 @@
 // to glibc's own implementation (glibc supports replacing malloc this way). This file
 // includes no header that declares malloc, so the definitions below are the declarations.
 
-#include "tests/blocks/allocation_counter.h"
+#include "tests/support/allocation_counter.h"
 
 #include <cstddef>
 
@@ -18,9 +18,9 @@ namespace {
 long long allocations = 0;
 }  // namespace
 
-namespace cbbg::blocks::testing {
+namespace cbbg::testing {
 long long allocation_count() { return allocations; }
-}  // namespace cbbg::blocks::testing
+}  // namespace cbbg::testing
 
 extern "C" {
 
