@@ -16,6 +16,7 @@ struct RunOptions {
   long long seed = -1;                // < 0: the config's
   int jobs = 1;
   std::filesystem::path out = "results";
+  std::filesystem::path resume;  // non-empty: continue the interrupted run into it
   bool figures = true;
 };
 int run_command(const RunOptions& options);

@@ -28,7 +28,13 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   run_app->add_option("--jobs,-j", run.jobs, "threads (results are the same for any count)")
       ->check(CLI::Range(1, 1024));
-  run_app->add_option("--out,-o", run.out, "results directory (replaced when the run ends)");
+  auto* out_option =
+      run_app->add_option("--out,-o", run.out, "results directory (replaced when the run ends)");
+  run_app
+      ->add_option("--resume", run.resume,
+                   "continue the interrupted run into DIR (its DIR.partial), redoing only the "
+                   "unfinished seeds")
+      ->excludes(out_option);
   run_app->add_flag("!--no-figures", run.figures, "skip the figures");
 
   GraphOptions graph;

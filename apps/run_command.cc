@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include <spdlog/spdlog.h>
 #include <unistd.h>
@@ -11,6 +12,7 @@
 #include "apps/progress.h"
 #include "diagrams/params_from_config.h"
 #include "diagrams/results_writer.h"
+#include "diagrams/task_store.h"
 
 namespace cbbg::app {
 namespace {
@@ -82,39 +84,47 @@ void print_summary(const diagrams::ExperimentResults& results) {
 
 int run_command(const RunOptions& options) {
   config::Config config;
+  std::optional<diagrams::RunDirectory> directory;
   try {
-    config = resolve(options);
+    if (!options.resume.empty()) {
+      if (!options.config_file.empty() || !options.sets.empty() || !options.experiment.empty() ||
+          options.seeds > 0 || options.seed >= 0) {
+        throw config::ConfigError(
+            "--resume continues with the config of the interrupted run; drop --config, --set, "
+            "--experiment, --seeds and --seed");
+      }
+      directory = diagrams::RunDirectory::resume(options.resume);
+      config = directory->config();
+      diagrams::validate_all(config);
+    } else {
+      config = resolve(options);
+      directory = diagrams::RunDirectory::create(options.out, config);
+    }
   } catch (const config::ConfigError& error) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
     return 2;
   }
-  const std::size_t tasks =
-      (config.text("experiment") == "exp1" ? config.names("arms").size() : 1) *
-      static_cast<std::size_t>(config.integer("seeds"));
-  spdlog::info("{}: {} seed(s) x {} arm(s) on the {} plant, {} thread(s)",
-               config.text("experiment"), config.integer("seeds"),
-               tasks / static_cast<std::size_t>(config.integer("seeds")), config.text("plant.kind"),
-               options.jobs);
+  const std::size_t arms = config.text("experiment") == "exp1" ? config.names("arms").size() : 1;
+  const std::size_t tasks = arms * static_cast<std::size_t>(config.integer("seeds"));
+  spdlog::info("{}: {} seed(s) x {} arm(s) on the {} plant, {} thread(s){}",
+               config.text("experiment"), config.integer("seeds"), arms, config.text("plant.kind"),
+               options.jobs, options.resume.empty() ? "" : ", resumed");
   try {
+    const diagrams::TaskStore store(directory->tasks());
     Progress progress(tasks, ::isatty(STDERR_FILENO) == 1);
     const diagrams::ExperimentResults results = diagrams::run_experiment(
-        config, options.jobs,
-        [&progress](const diagrams::SeedRun& run) { progress.finished(run); });
+        config, options.jobs, [&progress](const diagrams::SeedRun& run) { progress.finished(run); },
+        &store);
     progress.close();
-
-    diagrams::StagingDirectory staging(options.out);
-    diagrams::write_result_files(results, config, staging.path());
-    if (options.figures) {
-      draw_figures(staging.path(), config, /*quiet=*/true);
-    }
-    staging.commit();
+    diagrams::write_result_files(results, config, directory->work(), &store);
+    if (options.figures) draw_figures(directory->work(), config, /*quiet=*/true);
+    directory->commit();
     print_summary(results);
-    spdlog::info("results in {}", options.out.string());
-  } catch (const config::ConfigError& error) {
-    std::cerr << "cbbg: error: " << error.what() << "\n";
-    return 2;
+    spdlog::info("results in {}", directory->target().string());
   } catch (const std::exception& error) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
+    std::cerr << "cbbg: the finished seeds are kept in '" << directory->work().string()
+              << "'; continue with --resume " << directory->target().string() << "\n";
     return 1;
   }
   return 0;

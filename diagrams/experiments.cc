@@ -1,49 +1,17 @@
 #include "diagrams/experiments.h"
 
+#include "diagrams/task_store.h"
+
 #include <atomic>
 #include <charconv>
 #include <exception>
+#include <fstream>
 #include <mutex>
+#include <sstream>
 #include <thread>
 
 namespace cbbg::diagrams {
 namespace {
-
-void append_number(std::string& out, double value) {
-  char buffer[32];
-  out.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
-}
-
-// Appends the decimated telemetry of the trial just run to `out`.
-void append_steps(const SeedRun& run, int trial, const SignalLog& telemetry, long long decimation,
-                  std::string& out) {
-  if (decimation <= 0) return;
-  static constexpr int kColumns[] = {kTelemetryThetaB,
-                                     kTelemetryThetaBDot,
-                                     kTelemetryPhiLeft,
-                                     kTelemetryPhiRight,
-                                     kTelemetrySupervisorAction,
-                                     kTelemetryActorAction,
-                                     kTelemetryExplorationAction,
-                                     kTelemetryAction,
-                                     kTelemetryOmega,
-                                     kTelemetryValue,
-                                     kTelemetryTdError,
-                                     kTelemetryTemperature,
-                                     kTelemetryReward};
-  const std::string prefix =
-      run.arm + "," + std::to_string(run.seed) + "," + std::to_string(trial) + ",";
-  for (int k = 0; k < telemetry.num_samples(); k += static_cast<int>(decimation)) {
-    out += prefix;
-    append_number(out, telemetry.times()[static_cast<std::size_t>(k)]);
-    const auto sample = telemetry.sample(k);
-    for (const int column : kColumns) {
-      out += ',';
-      append_number(out, sample[column]);
-    }
-    out += '\n';
-  }
-}
 
 // k1 of `trial` under the annealing schedule (steps sorted by from_trial, the first at 1).
 double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial) {
@@ -59,24 +27,27 @@ double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial
 void evaluate_learnt_actor(const config::Config& config, const blocks::Actor& actor,
                            const Context& learnt, SeedRun& run) {
   const ControllerDiagram policy = build_controller_diagram(kLearntActorDiagram, config);
-  TrialRunner runner(policy, static_cast<std::uint64_t>(run.seed), config.number("trial.period"));
+  TelemetryOptions telemetry;
+  telemetry.keep_in_memory = false;
+  TrialRunner runner(policy, static_cast<std::uint64_t>(run.seed), config.number("trial.period"),
+                     telemetry);
   policy.actor->mutable_weights(runner.context()) = actor.weights(learnt);
   for (const double theta0 : config.numbers("evaluation.angles")) {
     run.evaluation.push_back({theta0, runner.run_trial(theta0, config.number("trial.duration"))});
   }
 }
 
-void run_until_success(const config::Config& config, SeedRun& run) {
+void run_until_success(const config::Config& config, const TelemetryOptions& telemetry,
+                       SeedRun& run) {
   const ControllerDiagram controller = build_controller_diagram(run.arm, config);
   const double period = config.number("trial.period");
-  TrialRunner runner(controller, static_cast<std::uint64_t>(run.seed), period);
+  TrialRunner runner(controller, static_cast<std::uint64_t>(run.seed), period, telemetry);
   const long long max_trials = config.integer("max_trials");
   const double k1 = config.number("tropism.k1");
   for (int trial = 1; trial <= max_trials; ++trial) {
-    TrialRecord record{
+    const TrialRecord record{
         trial, k1,
-        runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"))};
-    append_steps(run, trial, runner.telemetry(), config.integer("log.decimation"), run.steps_csv);
+        runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"), trial)};
     run.trials.push_back(record);
     if (record.outcome.status == TrialStatus::kSuccess) {
       run.succeeded = true;
@@ -88,29 +59,25 @@ void run_until_success(const config::Config& config, SeedRun& run) {
 }
 
 // exp2: trial 1 coordinated by the cerebellum, then operant learning alone with annealing.
-void run_annealing(const config::Config& config, SeedRun& run) {
+void run_annealing(const config::Config& config, const TelemetryOptions& telemetry, SeedRun& run) {
   const double period = config.number("trial.period");
   const double theta0 = config.number("trial.theta0");
   const double duration = config.number("trial.duration");
   const auto& schedule = config.annealing("annealing");
   const ControllerDiagram coordinated = build_controller_diagram("cbbg", config);
   const ControllerDiagram operant = build_controller_diagram("bg_only", config);
-  TrialRunner first(coordinated, static_cast<std::uint64_t>(run.seed), period);
+  TrialRunner first(coordinated, static_cast<std::uint64_t>(run.seed), period, telemetry);
   coordinated.tropism->set_k1(first.context(), annealed_k1(schedule, 1));
-  TrialRecord record{1, annealed_k1(schedule, 1), first.run_trial(theta0, duration)};
-  append_steps(run, 1, first.telemetry(), config.integer("log.decimation"), run.steps_csv);
-  run.trials.push_back(record);
+  run.trials.push_back({1, annealed_k1(schedule, 1), first.run_trial(theta0, duration, 1)});
 
   // Same seed, other diagram: the block paths differ, so the random streams do too.
-  TrialRunner later(operant, static_cast<std::uint64_t>(run.seed), period);
+  TrialRunner later(operant, static_cast<std::uint64_t>(run.seed), period, telemetry);
   operant.critic->mutable_weights(later.context()) = coordinated.critic->weights(first.context());
   operant.actor->mutable_weights(later.context()) = coordinated.actor->weights(first.context());
   for (int trial = 2; trial <= config.integer("exp2.trials"); ++trial) {
     const double k1 = annealed_k1(schedule, trial);
     operant.tropism->set_k1(later.context(), k1);
-    TrialRecord next{trial, k1, later.run_trial(theta0, duration)};
-    append_steps(run, trial, later.telemetry(), config.integer("log.decimation"), run.steps_csv);
-    run.trials.push_back(next);
+    run.trials.push_back({trial, k1, later.run_trial(theta0, duration, trial)});
   }
   for (const auto& trial : run.trials) {
     if (trial.outcome.status == TrialStatus::kSuccess && !run.succeeded) {
@@ -123,12 +90,40 @@ void run_annealing(const config::Config& config, SeedRun& run) {
 
 }  // namespace
 
-const char* steps_csv_header() {
-  return "arm,seed,trial,t,theta_b,dtheta_b,phi_l,phi_r,a_S,a_A,a_E,a,omega,V,delta,T,reward\n";
+// Runs one (arm, seed) task, its steps rows into the store's file or into run.steps_csv.
+void run_task(const config::Config& config, std::size_t task, const TaskStore* store,
+              SeedRun& run) {
+  std::ofstream file;
+  std::ostringstream memory;
+  TelemetryOptions telemetry{.keep_in_memory = false,
+                             .steps = nullptr,
+                             .decimation = config.integer("log.decimation"),
+                             .row_prefix = run.arm + "," + std::to_string(run.seed) + ","};
+  if (telemetry.decimation > 0) {
+    if (store != nullptr) {
+      file.open(store->pending_steps_path(task), std::ios::binary | std::ios::trunc);
+      telemetry.steps = &file;
+    } else {
+      telemetry.steps = &memory;
+    }
+  }
+  if (config.text("experiment") == "exp2") {
+    run_annealing(config, telemetry, run);
+  } else {
+    run_until_success(config, telemetry, run);
+  }
+  if (store == nullptr) {
+    run.steps_csv = memory.str();
+    return;
+  }
+  file.close();
+  if (!file)
+    throw std::runtime_error("cannot write '" + store->pending_steps_path(task).string() + "'");
+  store->save(task, run);
 }
 
 ExperimentResults run_experiment(const config::Config& config, int jobs,
-                                 const ProgressCallback& progress) {
+                                 const ProgressCallback& progress, const TaskStore* store) {
   ExperimentResults results;
   results.experiment = config.text("experiment");
   if (results.experiment == "exp1") {
@@ -158,11 +153,7 @@ ExperimentResults run_experiment(const config::Config& config, int jobs,
     for (std::size_t task = next++; task < results.runs.size(); task = next++) {
       try {
         SeedRun& run = results.runs[task];
-        if (results.experiment == "exp2") {
-          run_annealing(config, run);
-        } else {
-          run_until_success(config, run);
-        }
+        if (store == nullptr || !store->load(task, run)) run_task(config, task, store, run);
         if (progress) progress(run);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(failure_mutex);

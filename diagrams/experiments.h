@@ -37,7 +37,7 @@ struct SeedRun {
   // exp1: failed or diverged trials before the first success; all of them if none succeeded.
   int failures_before_success = 0;
   bool succeeded = false;
-  // Telemetry rows (steps.csv, without the header), every log.decimation-th tick.
+  // steps.csv rows (no header), every log.decimation-th tick, when no TaskStore keeps them.
   std::string steps_csv;
   // exp1: the learnt actor evaluated from each of evaluation.angles (empty for pd_only).
   std::vector<EvaluationRecord> evaluation;
@@ -56,11 +56,13 @@ struct ExperimentResults {
 // Called after each finished (arm, seed), from the worker thread that ran it.
 using ProgressCallback = std::function<void(const SeedRun&)>;
 
-// Runs the experiment the config names with `jobs` threads (>= 1).
-ExperimentResults run_experiment(const config::Config& config, int jobs,
-                                 const ProgressCallback& progress = {});
+class TaskStore;
 
-// The header of steps.csv.
-const char* steps_csv_header();
+// Runs the experiment the config names with `jobs` threads (>= 1). With a store, each task
+// found finished there is loaded instead of run, each task run is saved there, and its steps
+// rows go to the store's files; without, they go to SeedRun::steps_csv.
+ExperimentResults run_experiment(const config::Config& config, int jobs,
+                                 const ProgressCallback& progress = {},
+                                 const TaskStore* store = nullptr);
 
 }  // namespace cbbg::diagrams

@@ -1,16 +1,21 @@
 #include "diagrams/results_writer.h"
 
+#include "diagrams/task_store.h"
+
 #include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include <unistd.h>
-
 namespace cbbg::diagrams {
 namespace {
 
+// The paper's failures before the first success (Fig. 11), for summary.json.
+struct PaperReference {
+  const char* arm;
+  int failures;
+};
 constexpr PaperReference kPaper[] = {{"cbbg", 0}, {"bg_only", 8}};
 
 std::string number(double value) {
@@ -120,47 +125,71 @@ std::string summary_json(const ExperimentResults& results, const config::Config&
 }
 
 void write_result_files(const ExperimentResults& results, const config::Config& config,
-                        const std::filesystem::path& directory) {
+                        const std::filesystem::path& directory, const TaskStore* store) {
   write_text(directory / "config.yaml", config.to_yaml());
   write_text(directory / "summary.json", summary_json(results, config));
   write_text(directory / "trials.csv", trials_csv(results));
   if (results.experiment != "exp2") {
     write_text(directory / "evaluation.csv", evaluation_csv(results));
   }
-  if (config.integer("log.decimation") > 0) {
-    std::ofstream steps(directory / "steps.csv", std::ios::binary | std::ios::trunc);
-    steps << steps_csv_header();
-    for (const SeedRun& run : results.runs) steps << run.steps_csv;
-    if (!steps)
-      throw std::runtime_error("cannot write '" + (directory / "steps.csv").string() + "'");
+  if (config.integer("log.decimation") <= 0) return;
+  const std::filesystem::path path = directory / "steps.csv";
+  std::ofstream steps(path, std::ios::binary | std::ios::trunc);
+  steps << steps_csv_header();
+  for (std::size_t task = 0; task < results.runs.size(); ++task) {
+    if (store == nullptr) {
+      steps << results.runs[task].steps_csv;
+      continue;
+    }
+    std::ifstream rows(store->steps_path(task), std::ios::binary);
+    if (!rows) throw std::runtime_error("missing '" + store->steps_path(task).string() + "'");
+    if (rows.peek() != std::ifstream::traits_type::eof()) steps << rows.rdbuf();
   }
+  if (!steps) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
 
-StagingDirectory::StagingDirectory(std::filesystem::path target) : target_(std::move(target)) {
+RunDirectory::RunDirectory(std::filesystem::path target, config::Config config)
+    : target_(std::move(target)), config_(std::move(config)) {
   if (target_.filename().empty()) target_ = target_.parent_path();
-  staging_ = target_;
-  staging_ += ".partial-" + std::to_string(::getpid());
-  std::filesystem::remove_all(staging_);
-  if (!target_.parent_path().empty()) std::filesystem::create_directories(target_.parent_path());
-  std::filesystem::create_directory(staging_);
+  work_ = target_;
+  work_ += ".partial";
 }
 
-StagingDirectory::~StagingDirectory() {
-  if (!committed_) {
-    std::error_code ignored;
-    std::filesystem::remove_all(staging_, ignored);
+RunDirectory RunDirectory::create(const std::filesystem::path& target,
+                                  const config::Config& config) {
+  RunDirectory directory(target, config);
+  if (std::filesystem::exists(directory.work_)) {
+    throw config::ConfigError("'" + directory.work_.string() +
+                              "' holds an interrupted run: continue it with --resume " +
+                              directory.target_.string() + ", or delete it");
   }
+  std::filesystem::create_directories(directory.tasks());
+  write_text(directory.work_ / "config.yaml", config.to_yaml());
+  return directory;
 }
 
-void StagingDirectory::commit() {
+RunDirectory RunDirectory::resume(const std::filesystem::path& target) {
+  RunDirectory directory(target, config::Config());
+  const std::filesystem::path config_file = directory.work_ / "config.yaml";
+  if (!std::filesystem::exists(config_file)) {
+    throw config::ConfigError("nothing to resume: '" + directory.work_.string() +
+                              "' does not hold an interrupted run");
+  }
+  directory.config_.merge_file(config_file);
+  std::filesystem::create_directories(directory.tasks());
+  return directory;
+}
+
+void RunDirectory::commit() {
+  std::filesystem::remove_all(tasks());
   std::filesystem::path previous;
   if (std::filesystem::exists(target_)) {
     previous = target_;
-    previous += ".previous-" + std::to_string(::getpid());
+    previous += ".previous";
+    std::filesystem::remove_all(previous);
     std::filesystem::rename(target_, previous);
   }
-  std::filesystem::rename(staging_, target_);
-  committed_ = true;
+  std::filesystem::rename(work_, target_);
   if (!previous.empty()) std::filesystem::remove_all(previous);
 }
 

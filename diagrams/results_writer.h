@@ -1,8 +1,8 @@
 #pragma once
 // Writes a results directory (README "Results directory"): config.yaml, summary.json,
-// trials.csv, steps.csv, figures/. Everything goes into a staging directory beside the
-// target, renamed onto it at the end, so an interrupted run never leaves a directory that
-// looks finished.
+// trials.csv, evaluation.csv, steps.csv, figures/. Everything goes into a work directory
+// beside the target, renamed onto it at the end, so an interrupted run never leaves a
+// directory that looks finished.
 
 #include <filesystem>
 #include <string>
@@ -12,37 +12,42 @@
 
 namespace cbbg::diagrams {
 
-// The paper's failures before the first success (Fig. 11), for summary.json.
-struct PaperReference {
-  const char* arm;
-  int failures;
-};
+class TaskStore;
 
-// Writes every data file of `results` into `directory` (which must exist).
+// Writes every data file of `results` into `directory` (which must exist). steps.csv comes
+// from the store's files when one is given, else from each run's steps_csv.
 void write_result_files(const ExperimentResults& results, const config::Config& config,
-                        const std::filesystem::path& directory);
+                        const std::filesystem::path& directory, const TaskStore* store = nullptr);
 
 std::string summary_json(const ExperimentResults& results, const config::Config& config);
 std::string trials_csv(const ExperimentResults& results);
 std::string evaluation_csv(const ExperimentResults& results);
 
-// A directory that becomes `target` only when commit() is called; destroyed uncommitted,
-// it is removed.
-class StagingDirectory {
+// Where a run works before its results are final: "<target>.partial", holding the resolved
+// config (config.yaml) and the finished tasks (tasks/). commit() renames it onto `target`.
+// A run killed midway leaves only the .partial directory, which --resume continues.
+class RunDirectory {
  public:
-  explicit StagingDirectory(std::filesystem::path target);
-  ~StagingDirectory();
-  StagingDirectory(const StagingDirectory&) = delete;
-  StagingDirectory& operator=(const StagingDirectory&) = delete;
+  // Starts a run into `target`, writing `config` into the work directory. Throws
+  // config::ConfigError when an interrupted run's work directory is in the way.
+  static RunDirectory create(const std::filesystem::path& target, const config::Config& config);
+  // Continues the interrupted run into `target`; its config comes from the work directory.
+  // Throws config::ConfigError when there is nothing to resume.
+  static RunDirectory resume(const std::filesystem::path& target);
 
-  const std::filesystem::path& path() const { return staging_; }
-  // Replaces `target` (and whatever was there) with the staging directory.
+  const std::filesystem::path& work() const { return work_; }
+  const std::filesystem::path& target() const { return target_; }
+  std::filesystem::path tasks() const { return work_ / "tasks"; }
+  const config::Config& config() const { return config_; }
+  // Removes the task files and replaces `target` (and whatever was there) with the results.
   void commit();
 
  private:
+  RunDirectory(std::filesystem::path target, config::Config config);
+
   std::filesystem::path target_;
-  std::filesystem::path staging_;
-  bool committed_ = false;
+  std::filesystem::path work_;
+  config::Config config_;
 };
 
 }  // namespace cbbg::diagrams

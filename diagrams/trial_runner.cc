@@ -1,10 +1,37 @@
 #include "diagrams/trial_runner.h"
 
+#include <charconv>
 #include <cmath>
+#include <limits>
 
 #include "plant/plant_ports.h"
 
 namespace cbbg::diagrams {
+namespace {
+
+// steps.csv's signal columns, after arm, seed, trial and t.
+constexpr int kStepsColumns[] = {kTelemetryThetaB,
+                                 kTelemetryThetaBDot,
+                                 kTelemetryPhiLeft,
+                                 kTelemetryPhiRight,
+                                 kTelemetrySupervisorAction,
+                                 kTelemetryActorAction,
+                                 kTelemetryExplorationAction,
+                                 kTelemetryAction,
+                                 kTelemetryOmega,
+                                 kTelemetryValue,
+                                 kTelemetryTdError,
+                                 kTelemetryTemperature,
+                                 kTelemetryReward};
+
+// Writes `value` in its shortest round-trip form, without allocating.
+void write_number(std::ostream& out, double value) {
+  char buffer[32];
+  const char* end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  out.write(buffer, end - buffer);
+}
+
+}  // namespace
 
 const char* to_string(TrialStatus status) {
   switch (status) {
@@ -18,18 +45,50 @@ const char* to_string(TrialStatus status) {
   return "unknown";
 }
 
-TrialRunner::TrialRunner(const ControllerDiagram& controller, std::uint64_t seed, double period)
+const char* steps_csv_header() {
+  return "arm,seed,trial,t,theta_b,dtheta_b,phi_l,phi_r,a_S,a_A,a_E,a,omega,V,delta,T,reward\n";
+}
+
+TrialRunner::TrialRunner(const ControllerDiagram& controller, std::uint64_t seed, double period,
+                         TelemetryOptions telemetry)
     : controller_(&controller),
       simulator_(*controller.diagram, SimulatorOptions{.accuracy = controller.accuracy}, seed),
       telemetry_(&simulator_.add_log(*controller.telemetry, period)),
-      period_(period) {}
+      period_(period),
+      options_(std::move(telemetry)) {
+  telemetry_->keep_in_memory(options_.keep_in_memory);
+  telemetry_->set_sink([this](double time, const double* values) { record(time, values); });
+}
 
-TrialOutcome TrialRunner::run_trial(double theta0, double duration) {
+void TrialRunner::record(double time, const double* values) {
+  temperature_sum_ += values[kTelemetryTemperature];
+  entropy_sum_ += values[kTelemetryEntropy];
+  if (options_.steps != nullptr && options_.decimation > 0 && ticks_ % options_.decimation == 0) {
+    std::ostream& out = *options_.steps;
+    out.write(trial_prefix_.data(), static_cast<std::streamsize>(trial_prefix_.size()));
+    write_number(out, time);
+    for (const int column : kStepsColumns) {
+      out.put(',');
+      write_number(out, values[column]);
+    }
+    out.put('\n');
+  }
+  ++ticks_;
+}
+
+TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
   Context& context = simulator_.context();
   controller_->start_trial(context, theta0);
   telemetry_->clear();
-  // Room for every tick before the trial starts: logging never allocates while ticking.
-  telemetry_->reserve(static_cast<int>(std::ceil(duration / period_)) + 1);
+  if (options_.keep_in_memory) {
+    // Room for every tick before the trial starts: logging never allocates while ticking.
+    telemetry_->reserve(static_cast<int>(std::ceil(duration / period_)) + 1);
+  }
+  ticks_ = 0;
+  temperature_sum_ = 0.0;
+  entropy_sum_ = 0.0;
+  trial_prefix_ = options_.row_prefix + std::to_string(trial) + ",";
+
   TrialOutcome outcome;
   try {
     simulator_.initialize();
@@ -42,16 +101,10 @@ TrialOutcome TrialRunner::run_trial(double theta0, double duration) {
     outcome.message = error.what();
     outcome.final_theta = std::numeric_limits<double>::quiet_NaN();
   }
-  outcome.steps = telemetry_->num_samples();
-  double temperature = 0.0;
-  double entropy = 0.0;
-  for (int k = 0; k < telemetry_->num_samples(); ++k) {
-    temperature += telemetry_->sample(k)[kTelemetryTemperature];
-    entropy += telemetry_->sample(k)[kTelemetryEntropy];
-  }
-  const double ticks = static_cast<double>(std::max<long long>(outcome.steps, 1));
-  outcome.mean_temperature = temperature / ticks;
-  outcome.mean_entropy = entropy / ticks;
+  outcome.steps = ticks_;
+  const double ticks = static_cast<double>(std::max<long long>(ticks_, 1));
+  outcome.mean_temperature = temperature_sum_ / ticks;
+  outcome.mean_entropy = entropy_sum_ / ticks;
   return outcome;
 }
 

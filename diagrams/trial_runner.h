@@ -1,9 +1,11 @@
 #pragma once
 // Runs trials of a controller diagram in one context: the weights learnt in one trial carry
-// into the next. Records the telemetry of every tick of the current trial.
+// into the next. Each tick's telemetry feeds the trial's statistics, and optionally the rows
+// of steps.csv and an in-memory log, so memory stays flat however long a trial runs.
 
 #include <cstdint>
 #include <memory>
+#include <ostream>
 #include <string>
 
 #include "diagrams/controller_diagram.h"
@@ -23,24 +25,47 @@ struct TrialOutcome {
   std::string message;       // why it diverged
 };
 
+struct TelemetryOptions {
+  // Keep every tick in telemetry() (tests, analysis); memory then grows with the trial.
+  bool keep_in_memory = true;
+  // steps.csv rows are written here as the trial runs: every `decimation`-th tick, each row
+  // starting with `row_prefix` ("arm,seed,") and the trial number.
+  std::ostream* steps = nullptr;
+  long long decimation = 1;
+  std::string row_prefix;
+};
+
+// The header of steps.csv.
+const char* steps_csv_header();
+
 class TrialRunner {
  public:
-  TrialRunner(const ControllerDiagram& controller, std::uint64_t seed, double period);
+  TrialRunner(const ControllerDiagram& controller, std::uint64_t seed, double period,
+              TelemetryOptions telemetry = {});
 
-  // Runs one trial from `theta0` until failure or `duration`. A non-finite state or an
-  // integrator failure ends the trial as diverged; the next trial starts clean.
-  TrialOutcome run_trial(double theta0, double duration);
+  // Runs trial number `trial` from `theta0` until failure or `duration`. A non-finite state
+  // or an integrator failure ends the trial as diverged; the next trial starts clean.
+  TrialOutcome run_trial(double theta0, double duration, int trial = 1);
 
   Context& context() { return simulator_.context(); }
   const ControllerDiagram& controller() const { return *controller_; }
-  // The telemetry of the last trial: one sample per tick (diagrams::TelemetryIndex).
+  // The telemetry of the last trial, one sample per tick (diagrams::TelemetryIndex), when
+  // kept in memory.
   const SignalLog& telemetry() const { return *telemetry_; }
 
  private:
+  void record(double time, const double* values);
+
   const ControllerDiagram* controller_;
   Simulator simulator_;
   SignalLog* telemetry_;
   double period_;
+  TelemetryOptions options_;
+  // The current trial's running sums and its row prefix.
+  long long ticks_ = 0;
+  double temperature_sum_ = 0.0;
+  double entropy_sum_ = 0.0;
+  std::string trial_prefix_;
 };
 
 }  // namespace cbbg::diagrams

@@ -116,6 +116,7 @@ void SignalLog::record(double time, const double* values) {
     }
     stream_.put('\n');
   }
+  if (sink_) sink_(time, values);
 }
 
 }  // namespace cbbg

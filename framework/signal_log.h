@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ class SignalLog {
   // Writes every later sample to `path` as it is recorded (header first); with
   // keep_in_memory false, nothing grows in memory however long the run.
   void stream_to_csv(const std::filesystem::path& path, bool keep_in_memory = false);
+  // Hands every later sample to `sink` as it is recorded: running statistics or a custom
+  // format, in constant memory with keep_in_memory(false).
+  using Sink = std::function<void(double time, const double* values)>;
+  void set_sink(Sink sink) { sink_ = std::move(sink); }
+  void keep_in_memory(bool keep) { keep_in_memory_ = keep; }
   void write_csv(std::ostream& out) const;
   void clear();
 
@@ -52,6 +58,7 @@ class SignalLog {
   std::vector<double> times_;
   std::vector<double> values_;
   std::ofstream stream_;
+  Sink sink_;
   bool keep_in_memory_ = true;
 };
 

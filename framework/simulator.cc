@@ -125,7 +125,21 @@ SimulationStatus Simulator::run_updates(
     }
   }
   context.discrete_states().swap(context.next_discrete_states());
+  check_discrete_state_finite(updates);
   return status;
+}
+
+void Simulator::check_discrete_state_finite(
+    const std::vector<std::pair<int, const UpdateFunction*>>& updates) const {
+  for (const auto& [leaf_index, update] : updates) {
+    const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(leaf_index)];
+    const auto size = leaf.block->initial_discrete_state().size();
+    if (!context_->discrete_states().segment(leaf.discrete_offset, size).allFinite()) {
+      throw SimulationError(
+          "block '" + leaf.block->path() +
+          "': discrete state became non-finite at t = " + std::to_string(context_->time()));
+    }
+  }
 }
 
 SimulationStatus Simulator::initialize() {

@@ -20,8 +20,8 @@
 //  4. advance_to(t_end) fires the events at instants before t_end and integrates up to
 //     t_end; events at exactly t_end fire at the start of the next advance_to, so
 //     advance_to(a); advance_to(b) equals advance_to(b).
-// A non-finite continuous state, or an integrator that cannot meet its accuracy, throws
-// SimulationError naming the block.
+// A non-finite state (continuous after an interval, discrete after an update), or an
+// integrator that cannot meet its accuracy, throws SimulationError naming the block.
 
 #include <deque>
 #include <memory>
@@ -103,6 +103,8 @@ class Simulator {
   void integrate_to(double end_time);
   void integrate_ode(double start_time, double end_time);
   void check_continuous_state_finite() const;
+  void check_discrete_state_finite(
+      const std::vector<std::pair<int, const UpdateFunction*>>& updates) const;
   SimulationStatus run_updates(const std::vector<std::pair<int, const UpdateFunction*>>& updates);
 
   const Diagram* diagram_;

@@ -7,7 +7,7 @@ packages=(
   libsimbody-dev libeigen3-dev libspdlog-dev libboost-dev
   libcli11-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  clang clang-format libclang-rt-14-dev
+  clang clang-format libclang-rt-14-dev libfuzzer-14-dev time
   graphviz python3 python3-matplotlib python3-numpy
 )
 

@@ -1,13 +1,17 @@
 // Runs the real `cbbg` binary and checks what a user sees: exit code, message, files.
 
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -136,7 +140,8 @@ TEST_F(CbbgCommand, ResultsAreByteIdenticalWhateverTheThreadCount) {
   const std::string common = std::string("run ") + kQuick + " --seeds 3 --set log.decimation=7";
   ASSERT_EQ(cbbg(common + " --jobs 1 --out " + (scratch_ / "one").string()).exit_code, 0);
   ASSERT_EQ(cbbg(common + " --jobs 2 --out " + (scratch_ / "two").string()).exit_code, 0);
-  for (const char* file : {"config.yaml", "summary.json", "trials.csv", "steps.csv"}) {
+  for (const char* file :
+       {"config.yaml", "summary.json", "trials.csv", "evaluation.csv", "steps.csv"}) {
     const std::string one = read_file(scratch_ / "one" / file);
     EXPECT_FALSE(one.empty()) << file;
     EXPECT_EQ(one, read_file(scratch_ / "two" / file)) << file;
@@ -170,6 +175,72 @@ TEST_F(CbbgCommand, GraphDrawsANamedDiagram) {
   const Outcome format = cbbg("graph --diagram cbbg -o " + (scratch_ / "x.pdf").string());
   EXPECT_EQ(format.exit_code, 2);
   EXPECT_THAT(format.output, HasSubstr("unknown extension '.pdf'"));
+}
+
+// Starts `cbbg` with `arguments` (split on spaces) without waiting; returns its pid.
+pid_t start_cbbg(const std::string& arguments) {
+  std::vector<std::string> words{CBBG_BINARY};
+  std::istringstream split(arguments);
+  for (std::string word; split >> word;) words.push_back(word);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::vector<char*> argv;
+    for (auto& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+TEST_F(CbbgCommand, AKilledRunLeavesNoResultsAndResumesToTheSameBytes) {
+  // The Simbody plant makes each seed take long enough to be killed between seeds.
+  const std::string common = "run --no-figures --seeds 4 --jobs 1 --set log.decimation=5";
+  ASSERT_EQ(cbbg(common + " --out " + (scratch_ / "whole").string()).exit_code, 0);
+
+  const fs::path out = scratch_ / "killed";
+  const fs::path tasks = scratch_ / "killed.partial" / "tasks";
+  const pid_t pid = start_cbbg(common + " --out " + out.string());
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  auto finished_tasks = [&tasks] {
+    int records = 0;
+    if (fs::exists(tasks)) {
+      for (const auto& entry : fs::directory_iterator(tasks)) {
+        records += entry.path().extension() == ".run" ? 1 : 0;
+      }
+    }
+    return records;
+  };
+  while (finished_tasks() < 2 && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
+  const int done_before_kill = finished_tasks();
+  EXPECT_GE(done_before_kill, 2);
+  EXPECT_LT(done_before_kill, 8);
+  EXPECT_FALSE(fs::exists(out)) << "a killed run must not leave a results directory";
+
+  // A new run into the same place refuses to overwrite the interrupted one.
+  const Outcome blocked = cbbg(common + " --out " + out.string());
+  EXPECT_EQ(blocked.exit_code, 2);
+  EXPECT_THAT(blocked.output, HasSubstr("holds an interrupted run: continue it with --resume"));
+  EXPECT_EQ(cbbg("run --resume " + out.string() + " --seeds 3").exit_code, 2);
+
+  const Outcome resumed = cbbg("run --no-figures --jobs 2 --resume " + out.string());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_FALSE(fs::exists(scratch_ / "killed.partial"));
+  for (const char* file :
+       {"config.yaml", "summary.json", "trials.csv", "evaluation.csv", "steps.csv"}) {
+    const std::string whole = read_file(scratch_ / "whole" / file);
+    EXPECT_FALSE(whole.empty()) << file;
+    EXPECT_EQ(read_file(out / file), whole) << file;
+  }
+  EXPECT_EQ(cbbg("run --resume " + out.string()).exit_code, 2);  // nothing left to resume
 }
 
 }  // namespace

@@ -135,6 +135,25 @@ TEST(Experiments, ASeedThatNeverSucceedsCountsAllItsTrials) {
   EXPECT_THAT(summary_json(results, config), HasSubstr("\"succeeded\": [false]"));
 }
 
+TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
+  config::Config config = quick_config();
+  config.set("experiment=bg_only");
+  config.set("seeds=1");
+  config.set("max_trials=3");
+  config.set("critic.beta=1e300");  // the critic's weights overflow within a few ticks
+  const ExperimentResults results = run_experiment(config, 1);
+  const auto& trials = results.runs.at(0).trials;
+  ASSERT_EQ(trials.size(), 3u);
+  for (const TrialRecord& record : trials) {
+    EXPECT_EQ(record.outcome.status, TrialStatus::kDiverged) << "trial " << record.trial;
+    EXPECT_THAT(record.outcome.message,
+                HasSubstr("'bg_only/critic': discrete state became non-finite"));
+  }
+  EXPECT_FALSE(results.runs[0].succeeded);
+  EXPECT_THAT(trials_csv(results), HasSubstr("bg_only,1,3,1,1,"));
+  EXPECT_THAT(trials_csv(results), HasSubstr(",nan,diverged\n"));
+}
+
 TEST(Experiments, Exp2AnnealsK1TrialByTrial) {
   config::Config config = quick_config();
   config.set("experiment=exp2");

@@ -262,14 +262,30 @@ TEST(Simulator, RejectsAnUnsetRootInput) {
   EXPECT_EQ(simulator.context().discrete_state(hold)[0], 8.0);
 }
 
-TEST(Simulator, ReportsANonFiniteStateNamingTheBlock) {
+TEST(Simulator, ReportsANonFiniteDiscreteStateNamingTheBlock) {
   DiagramBuilder builder("top");
   auto& source = builder.emplace<ConstantSource>(
       "source", Vector::Constant(1, std::numeric_limits<double>::quiet_NaN()));
   auto& hold = builder.emplace<ZeroOrderHold>("hold", 1, 0.1);
-  auto& integral = builder.emplace<testing::Integrator>("integral");
   builder.connect(source, "y", hold, "u");
-  builder.connect(hold, "y", integral, "u");
+  auto diagram = builder.build();
+  Simulator simulator(*diagram);
+  try {
+    simulator.advance_to(1.0);
+    ADD_FAILURE() << "no exception";
+  } catch (const SimulationError& error) {
+    EXPECT_STREQ(error.what(),
+                 "block 'top/hold': discrete state became non-finite at t = 0.000000");
+  }
+}
+
+TEST(Simulator, ReportsANonFiniteContinuousStateNamingTheBlock) {
+  DiagramBuilder builder("top");
+  auto& source = builder.emplace<ConstantSource>(
+      "source", Vector::Constant(1, std::numeric_limits<double>::infinity()));
+  auto& integral = builder.emplace<testing::Integrator>("integral");
+  builder.connect(source, "y", integral, "u");
+  builder.emplace<testing::Counter>("counter", 0.1);
   auto diagram = builder.build();
   Simulator simulator(*diagram);
   try {

@@ -1,0 +1,169 @@
+// cbbg eval: load learnt weights, check them against the config, run the policy alone.
+
+#include "apps/eval_command.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include "config/config.h"
+#include "diagrams/params_from_config.h"
+#include "diagrams/policy_evaluation.h"
+#include "diagrams/weights_file.h"
+
+namespace cbbg::app {
+namespace {
+
+std::string format_number(double value) {
+  if (std::isnan(value)) return "nan";
+  char buffer[32];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+// The push of --push-time, --push-torque and --push-duration: all three or none.
+std::optional<diagrams::PushParams> push_from(const EvalOptions& options) {
+  const int given =
+      (options.push_time ? 1 : 0) + (options.push_torque ? 1 : 0) + (options.push_duration ? 1 : 0);
+  if (given == 0) return std::nullopt;
+  if (given < 3) {
+    std::string missing;
+    for (const auto& [name, value] :
+         {std::pair<const char*, const std::optional<double>*>{"--push-time", &options.push_time},
+          {"--push-torque", &options.push_torque},
+          {"--push-duration", &options.push_duration}}) {
+      if (!*value) missing += (missing.empty() ? "" : " and ") + std::string(name);
+    }
+    throw config::ConfigError(
+        "--push-time, --push-torque and --push-duration go together; missing " + missing);
+  }
+  auto require = [](const char* name, double value, bool ok, const char* range) {
+    if (!std::isfinite(value) || !ok) {
+      throw config::ConfigError(std::string(name) + " must be a finite number " + range + "; got " +
+                                format_number(value));
+    }
+  };
+  require("--push-time", *options.push_time, *options.push_time >= 0.0, ">= 0 (s)");
+  require("--push-torque", *options.push_torque, true, "(N m)");
+  require("--push-duration", *options.push_duration, *options.push_duration > 0.0, "> 0 (s)");
+  return diagrams::PushParams{*options.push_time, *options.push_torque, *options.push_duration};
+}
+
+// The config of the file, the overrides and --angles, validated.
+config::Config resolve(const EvalOptions& options) {
+  config::Config config;
+  if (!options.config_file.empty()) config.merge_file(options.config_file);
+  for (const auto& assignment : options.sets) config.set(assignment);
+  if (!options.angles.empty()) {
+    std::string list = "[";
+    for (const double angle : options.angles) {
+      if (!std::isfinite(angle)) {
+        throw config::ConfigError("--angles: every angle must be a finite number; got " +
+                                  format_number(angle));
+      }
+      list += (list.size() > 1 ? ", " : "") + format_number(angle);
+    }
+    config.set("evaluation.angles=" + list + "]", "--angles");
+  }
+  if (config.numbers("evaluation.angles").empty()) {
+    throw config::ConfigError("evaluation.angles is empty: give --angles or set some");
+  }
+  diagrams::validate_all(config);
+  return config;
+}
+
+std::string evaluation_csv(const diagrams::PolicyEvaluation& evaluation) {
+  std::string csv = "theta0,seed,balanced,steps,final_theta,status\n";
+  for (const auto& angle : evaluation.angles) {
+    for (std::size_t r = 0; r < angle.runs.size(); ++r) {
+      const diagrams::TrialOutcome& run = angle.runs[r];
+      csv += format_number(angle.theta0) + "," +
+             std::to_string(evaluation.first_seed + static_cast<long long>(r)) + "," +
+             (run.status == diagrams::TrialStatus::kSuccess ? "1" : "0") + "," +
+             std::to_string(run.steps) + "," + format_number(run.final_theta) + "," +
+             diagrams::to_string(run.status) + "\n";
+    }
+  }
+  return csv;
+}
+
+// Writes `text` to directory/name through a temporary file and a rename.
+void write_atomically(const std::filesystem::path& directory, const std::string& name,
+                      const std::string& text) {
+  std::filesystem::create_directories(directory);
+  const std::filesystem::path target = directory / name;
+  std::filesystem::path temporary = target;
+  temporary += ".partial-" + std::to_string(::getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) {
+      std::filesystem::remove(temporary);
+      throw std::runtime_error("cannot write '" + target.string() + "'");
+    }
+  }
+  std::filesystem::rename(temporary, target);
+}
+
+void print_table(const diagrams::PolicyEvaluation& evaluation, const config::Config& config,
+                 const diagrams::LearntWeights& weights, const EvalOptions& options) {
+  const diagrams::WeightsProvenance& from = weights.provenance;
+  std::printf("weights %s: %s, seed %lld, %lld trial(s) on the %s plant\n",
+              options.weights_file.string().c_str(), from.arm.c_str(), from.seed, from.trials,
+              from.plant.c_str());
+  std::printf("policy alone on the %s plant for %g s, seeds %lld..%lld",
+              config.text("plant.kind").c_str(), config.number("trial.duration"),
+              evaluation.first_seed, evaluation.first_seed + options.repeats - 1);
+  if (options.push_time) {
+    std::printf("; push %g N m on each wheel from %g s for %g s", *options.push_torque,
+                *options.push_time, *options.push_duration);
+  }
+  std::printf("\n%10s %10s\n", "theta0", "balanced");
+  for (const auto& angle : evaluation.angles) {
+    const std::string ratio =
+        std::to_string(angle.balanced()) + "/" + std::to_string(angle.runs.size());
+    std::printf("%10g %10s\n", angle.theta0, ratio.c_str());
+  }
+}
+
+}  // namespace
+
+int eval_command(const EvalOptions& options) {
+  config::Config config;
+  diagrams::LearntWeights weights;
+  diagrams::EvaluationSettings settings;
+  try {
+    if (options.weights_file.empty()) throw config::ConfigError("--load-weights FILE is required");
+    if (options.repeats < 1) {
+      throw config::ConfigError("--repeats must be >= 1; got " + std::to_string(options.repeats));
+    }
+    settings.push = push_from(options);
+    config = resolve(options);
+    weights = diagrams::load_weights(options.weights_file);
+    diagrams::check_layout(weights, config, options.weights_file);
+    settings.angles = config.numbers("evaluation.angles");
+    settings.repeats = static_cast<int>(options.repeats);
+  } catch (const config::ConfigError& error) {
+    std::cerr << "cbbg: error: " << error.what() << "\n";
+    return 2;
+  }
+  try {
+    const diagrams::PolicyEvaluation evaluation =
+        diagrams::evaluate_policy(config, weights, settings);
+    if (!options.out.empty()) {
+      write_atomically(options.out, "evaluation.csv", evaluation_csv(evaluation));
+    }
+    print_table(evaluation, config, weights, options);
+  } catch (const std::exception& error) {
+    std::cerr << "cbbg: error: " << error.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace cbbg::app

@@ -1,0 +1,35 @@
+#pragma once
+// cbbg eval: measures a learnt policy. Loads a weights file (docs/weights-format.md), runs
+// the actor alone with frozen weights from each initial pitch, `repeats` times with seeds
+// seed, seed + 1, ... (they differ only with sensor noise), optionally pushed, and prints how
+// many runs balanced for the whole trial.duration.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cbbg::app {
+
+struct EvalOptions {
+  std::filesystem::path weights_file;  // --load-weights (required)
+  std::filesystem::path config_file;   // --config; empty: defaults only
+  std::vector<std::string> sets;       // --set key.path=value overrides, in order
+  std::vector<double> angles;          // --angles, rad; empty: the config's evaluation.angles
+  int repeats = 1;                     // --repeats: runs per angle, >= 1
+  // --push-time (s, >= 0), --push-torque (N m, added to both wheels), --push-duration (s, > 0):
+  // all three or none.
+  std::optional<double> push_time;
+  std::optional<double> push_torque;
+  std::optional<double> push_duration;
+  // --out: a directory that receives evaluation.csv (theta0, seed, balanced, steps,
+  // final_theta, status: one row per run); empty: no file.
+  std::filesystem::path out;
+};
+
+// Returns 0 when the evaluation ran (whatever the policy did), 2 for bad input (options,
+// config, weights file, a layout the config does not share), 1 when it failed otherwise
+// (writing --out). Errors go to stderr as one line "cbbg: error: ...".
+int eval_command(const EvalOptions& options);
+
+}  // namespace cbbg::app

@@ -1,0 +1,169 @@
+#include "diagrams/task_store.h"
+
+#include <charconv>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace cbbg::diagrams {
+namespace {
+
+constexpr const char* kRecordFormat = "cbbg-task 1";
+
+std::string number(double value) {
+  char buffer[32];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+double parse_double(const std::string& text, const std::string& source) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) {
+    throw std::runtime_error(source + ": '" + text + "' is not a number");
+  }
+  return value;
+}
+
+TrialStatus parse_status(const std::string& text, const std::string& source) {
+  for (const TrialStatus status :
+       {TrialStatus::kSuccess, TrialStatus::kFailed, TrialStatus::kDiverged}) {
+    if (text == to_string(status)) return status;
+  }
+  throw std::runtime_error(source + ": unknown trial status '" + text + "'");
+}
+
+void write_outcome(std::ostringstream& out, const TrialOutcome& outcome) {
+  out << ' ' << to_string(outcome.status) << ' ' << outcome.steps << ' '
+      << number(outcome.mean_temperature) << ' ' << number(outcome.mean_entropy) << ' '
+      << number(outcome.final_theta);
+}
+
+TrialOutcome read_outcome(std::istringstream& in, const std::string& source) {
+  std::string status;
+  std::string temperature;
+  std::string entropy;
+  std::string theta;
+  TrialOutcome outcome;
+  in >> status >> outcome.steps >> temperature >> entropy >> theta;
+  if (!in) throw std::runtime_error(source + ": truncated trial line");
+  outcome.status = parse_status(status, source);
+  outcome.mean_temperature = parse_double(temperature, source);
+  outcome.mean_entropy = parse_double(entropy, source);
+  outcome.final_theta = parse_double(theta, source);
+  return outcome;
+}
+
+}  // namespace
+
+std::string serialize_run(const SeedRun& run) {
+  std::ostringstream out;
+  out << kRecordFormat << "\narm " << run.arm << "\nseed " << run.seed << "\nsucceeded "
+      << (run.succeeded ? 1 : 0) << "\nfailures_before_success " << run.failures_before_success
+      << "\n";
+  for (const TrialRecord& record : run.trials) {
+    out << "trial " << record.trial << ' ' << number(record.k1);
+    write_outcome(out, record.outcome);
+    out << "\n";
+  }
+  for (const EvaluationRecord& record : run.evaluation) {
+    out << "evaluation " << number(record.theta0);
+    write_outcome(out, record.outcome);
+    out << "\n";
+  }
+  out << "end\n";
+  return out.str();
+}
+
+SeedRun parse_run(const std::string& text, const std::string& source) {
+  std::istringstream lines(text);
+  std::string line;
+  if (!std::getline(lines, line) || line != kRecordFormat) {
+    throw std::runtime_error(source + ": not a " + std::string(kRecordFormat) + " record");
+  }
+  SeedRun run;
+  bool ended = false;
+  while (std::getline(lines, line)) {
+    std::istringstream in(line);
+    std::string key;
+    in >> key;
+    if (key == "arm") {
+      in >> run.arm;
+    } else if (key == "seed") {
+      in >> run.seed;
+    } else if (key == "succeeded") {
+      int succeeded = 0;
+      in >> succeeded;
+      run.succeeded = succeeded != 0;
+    } else if (key == "failures_before_success") {
+      in >> run.failures_before_success;
+    } else if (key == "trial") {
+      TrialRecord record;
+      std::string k1;
+      in >> record.trial >> k1;
+      record.k1 = parse_double(k1, source);
+      record.outcome = read_outcome(in, source);
+      run.trials.push_back(record);
+    } else if (key == "evaluation") {
+      EvaluationRecord record;
+      std::string theta0;
+      in >> theta0;
+      record.theta0 = parse_double(theta0, source);
+      record.outcome = read_outcome(in, source);
+      run.evaluation.push_back(record);
+    } else if (key == "end") {
+      ended = true;
+    } else {
+      throw std::runtime_error(source + ": unknown line '" + line + "'");
+    }
+    if (!in && key != "end") throw std::runtime_error(source + ": malformed line '" + line + "'");
+  }
+  if (!ended) throw std::runtime_error(source + ": the record is incomplete");
+  return run;
+}
+
+TaskStore::TaskStore(std::filesystem::path directory) : directory_(std::move(directory)) {
+  std::filesystem::create_directories(directory_);
+}
+
+std::filesystem::path TaskStore::record_path(std::size_t task) const {
+  return directory_ / (std::to_string(task) + ".run");
+}
+
+std::filesystem::path TaskStore::pending_steps_path(std::size_t task) const {
+  return directory_ / (std::to_string(task) + ".steps.csv.pending");
+}
+
+std::filesystem::path TaskStore::steps_path(std::size_t task) const {
+  return directory_ / (std::to_string(task) + ".steps.csv");
+}
+
+bool TaskStore::load(std::size_t task, SeedRun& run) const {
+  const std::filesystem::path path = record_path(task);
+  if (!std::filesystem::exists(path)) return false;
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  SeedRun loaded = parse_run(text.str(), path.string());
+  if (loaded.arm != run.arm || loaded.seed != run.seed) {
+    throw std::runtime_error(path.string() + ": holds " + loaded.arm + " seed " +
+                             std::to_string(loaded.seed) + ", expected " + run.arm + " seed " +
+                             std::to_string(run.seed));
+  }
+  run = std::move(loaded);
+  return true;
+}
+
+void TaskStore::save(std::size_t task, const SeedRun& run) const {
+  if (std::filesystem::exists(pending_steps_path(task))) {
+    std::filesystem::rename(pending_steps_path(task), steps_path(task));
+  }
+  const std::filesystem::path temporary = record_path(task).string() + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << serialize_run(run);
+    if (!out) throw std::runtime_error("cannot write '" + temporary.string() + "'");
+  }
+  std::filesystem::rename(temporary, record_path(task));
+}
+
+}  // namespace cbbg::diagrams

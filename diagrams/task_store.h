@@ -1,0 +1,41 @@
+#pragma once
+// Where a run keeps each finished (arm, seed) task, so a killed run can resume: per task a
+// record of its trials (index.run) and its steps.csv rows (index.steps.csv). A task's record
+// is written last and atomically (temporary file, then rename), so a record that exists is
+// complete, and so are its rows.
+
+#include <filesystem>
+#include <string>
+
+#include "diagrams/experiments.h"
+
+namespace cbbg::diagrams {
+
+class TaskStore {
+ public:
+  // Keeps tasks in `directory`, created if missing.
+  explicit TaskStore(std::filesystem::path directory);
+
+  // Fills `run` from a task finished earlier; false when the task has no record.
+  bool load(std::size_t task, SeedRun& run) const;
+  // Where the task's rows are written while it runs, and where they stay once it is saved.
+  std::filesystem::path pending_steps_path(std::size_t task) const;
+  std::filesystem::path steps_path(std::size_t task) const;
+  // Keeps the task's rows and writes its record.
+  void save(std::size_t task, const SeedRun& run) const;
+
+  const std::filesystem::path& directory() const { return directory_; }
+
+ private:
+  std::filesystem::path record_path(std::size_t task) const;
+
+  std::filesystem::path directory_;
+};
+
+// A task's record as text; every number in shortest round-trip form, so it reads back to the
+// same bits. The steps rows are not part of it.
+std::string serialize_run(const SeedRun& run);
+// Throws std::runtime_error naming `source` for a record that is not one.
+SeedRun parse_run(const std::string& text, const std::string& source);
+
+}  // namespace cbbg::diagrams

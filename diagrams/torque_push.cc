@@ -1,0 +1,45 @@
+#include "diagrams/torque_push.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "blocks/parameter_checks.h"
+#include "framework/block_context.h"
+
+namespace cbbg::diagrams {
+
+void PushParams::validate() const {
+  blocks::check_non_negative("push.start", start);
+  blocks::check_finite("push.torque", torque);
+  blocks::check_positive("push.duration", duration);
+}
+
+TorquePush::TorquePush(std::string name, const PushParams& params, double period)
+    : Block(std::move(name)), params_(params) {
+  params_.validate();
+  blocks::check_period(period);
+  const InputPort& action = declare_input_port("action", 1, "the held action a, N m");
+  declare_discrete_state(Vector::Zero(1));
+  declare_output_port(
+      "torque", 1,
+      [this, &action](const BlockContext& context, VectorRef torque) {
+        const double t = context.time();
+        torque[0] =
+            context.input(action)[0] +
+            (t >= params_.start && t < params_.start + params_.duration ? params_.torque : 0.0) +
+            0.0 * context.discrete_state()[0];
+      },
+      {&action}, "a + p, each wheel's torque, N m");
+  declare_periodic_update(period, 0.0, [this](BlockContext& context, VectorRef next) {
+    // The simulator's tolerance for simultaneous instants, so that k Ts rounding never moves
+    // the push by a tick.
+    const double t = context.time();
+    const double tolerance = 1e-9 * std::max(1.0, std::abs(t));
+    const bool on =
+        t >= params_.start - tolerance && t < params_.start + params_.duration - tolerance;
+    next[0] = on ? params_.torque : 0.0;
+    return EventStatus::succeeded();
+  });
+}
+
+}  // namespace cbbg::diagrams

@@ -1,0 +1,451 @@
+#include "diagrams/weights_file.h"
+
+#include <atomic>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+
+#include <unistd.h>
+
+#include "diagrams/params_from_config.h"
+
+namespace cbbg::diagrams {
+namespace {
+
+std::string format_header() {
+  return std::string(kWeightsFormat) + " " + std::to_string(kWeightsFormatVersion);
+}
+
+// The shortest text that reads back to the same double.
+std::string format_number(double value) {
+  char buffer[32];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+std::string format_list(const std::vector<double>& values) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    text += (i == 0 ? "" : ", ") + format_number(values[i]);
+  }
+  return text + "]";
+}
+
+bool is_one_word(const std::string& text) {
+  return !text.empty() && text.find_first_of(" \t\r\n#") == std::string::npos;
+}
+
+// A line of the file as messages show it: at most 60 characters, printable ones only.
+std::string shown(std::string_view text) {
+  constexpr std::size_t kMaxShown = 60;
+  std::string result;
+  for (const char c : text.substr(0, kMaxShown)) {
+    result += (c >= ' ' && c <= '~') ? c : '?';
+  }
+  if (text.size() > kMaxShown) result += "...";
+  return result;
+}
+
+std::string_view trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r");
+  return text.substr(first, last - first + 1);
+}
+
+std::vector<std::string_view> split_words(std::string_view text) {
+  std::vector<std::string_view> words;
+  std::size_t position = 0;
+  while (true) {
+    const auto start = text.find_first_not_of(" \t", position);
+    if (start == std::string_view::npos) break;
+    const auto end = text.find_first_of(" \t", start);
+    words.push_back(text.substr(start, end == std::string_view::npos ? end : end - start));
+    if (end == std::string_view::npos) break;
+    position = end;
+  }
+  return words;
+}
+
+struct Line {
+  int number = 0;
+  std::string_view text;
+  std::vector<std::string_view> words;
+};
+
+// Reads a weights file line by line, skipping blank lines and '#' comments, and words every
+// error as "weights file '<path>' line <n>: <what>".
+class Reader {
+ public:
+  Reader(const std::filesystem::path& path, std::string_view text) : path_(path), text_(text) {}
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw config::ConfigError("weights file '" + path_.string() + "' " + what);
+  }
+  [[noreturn]] void fail(const Line& line, const std::string& what) const {
+    fail("line " + std::to_string(line.number) + ": " + what);
+  }
+
+  // The next line, blank or not; nullopt at the end of the file.
+  std::optional<Line> next_raw() {
+    if (position_ >= text_.size()) return std::nullopt;
+    const auto end = text_.find('\n', position_);
+    const std::string_view raw =
+        text_.substr(position_, end == std::string_view::npos ? end : end - position_);
+    position_ = end == std::string_view::npos ? text_.size() : end + 1;
+    Line line{++line_number_, trim(raw), {}};
+    line.words = split_words(line.text);
+    return line;
+  }
+
+  // The next line that is neither blank nor a comment; nullopt at the end of the file.
+  std::optional<Line> next() {
+    for (auto line = next_raw(); line; line = next_raw()) {
+      if (!line->text.empty() && line->text.front() != '#') return line;
+    }
+    return std::nullopt;
+  }
+
+  // The next significant line, which must exist: `expected` says what it should hold.
+  Line expect(const std::string& expected) {
+    auto line = next();
+    if (!line) fail("ends after line " + std::to_string(line_number_) + "; expected " + expected);
+    return *line;
+  }
+
+  // A line "key value": the value, after checking the key and that there is one value.
+  std::string_view keyed(std::string_view key, std::string_view shape) {
+    std::string expected = "'";
+    expected.append(key).append(" ").append(shape).append("'");
+    const Line line = expect(expected);
+    if (line.words.size() != 2 || line.words[0] != key) {
+      fail(line, "expected " + expected + ", got '" + shown(line.text) + "'");
+    }
+    last_ = line;
+    return line.words[1];
+  }
+
+  double number(const Line& line, std::string_view word, const std::string& what) const {
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (error != std::errc() || end != word.data() + word.size()) {
+      fail(line, what + " '" + shown(word) + "' is not a number");
+    }
+    if (!std::isfinite(value)) {
+      fail(line, what + " is " + std::string(word) + "; numbers must be finite");
+    }
+    return value;
+  }
+
+  long long integer(const Line& line, std::string_view word, const std::string& what) const {
+    long long value = 0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (error != std::errc() || end != word.data() + word.size()) {
+      fail(line, what + " '" + shown(word) + "' is not an integer");
+    }
+    return value;
+  }
+
+  double keyed_number(std::string_view key) {
+    const std::string_view word = keyed(key, "<number>");
+    return number(last_, word, std::string(key));
+  }
+  long long keyed_integer(std::string_view key) {
+    const std::string_view word = keyed(key, "<integer>");
+    return integer(last_, word, std::string(key));
+  }
+  const Line& last() const { return last_; }
+  int line_number() const { return line_number_; }
+
+ private:
+  const std::filesystem::path& path_;
+  std::string_view text_;
+  std::size_t position_ = 0;
+  int line_number_ = 0;
+  Line last_;
+};
+
+std::string read_file(const std::filesystem::path& path) {
+  const std::string name = "weights file '" + path.string() + "'";
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) throw config::ConfigError(name + " does not exist");
+  if (std::filesystem::is_directory(status)) {
+    throw config::ConfigError(name + " is a directory, not a file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw config::ConfigError(name + " cannot be read");
+  return text.str();
+}
+
+void check_format_line(const Reader& reader, const std::optional<Line>& first) {
+  const std::string expected = format_header();
+  if (!first) reader.fail("is empty; a weights file starts with the line '" + expected + "'");
+  if (first->words.size() == 2 && first->words[0] == kWeightsFormat) {
+    if (first->words[1] == std::to_string(kWeightsFormatVersion)) return;
+    reader.fail("is format '" + shown(first->text) + "'; this cbbg reads '" + expected + "'");
+  }
+  reader.fail("is not a cbbg weights file: its first line is '" + shown(first->text) +
+              "', expected '" + expected + "'");
+}
+
+// "actor <count>" and one weight per line.
+Vector read_weights(Reader& reader, const std::string& name, long long features) {
+  const std::string_view count_word = reader.keyed(name, "<count>");
+  const long long count = reader.integer(reader.last(), count_word, name + " count");
+  if (count != features) {
+    reader.fail(reader.last(), name + " has " + std::to_string(count) +
+                                   " weights, but features is " + std::to_string(features));
+  }
+  Vector weights(count);
+  for (long long k = 0; k < count; ++k) {
+    const std::string what = name + " weight [" + std::to_string(k) + "]";
+    const auto line = reader.next();
+    if (!line) {
+      reader.fail("ends after line " + std::to_string(reader.line_number()) + " with " +
+                  std::to_string(k) + " of " + std::to_string(count) + " " + name + " weights");
+    }
+    if (line->words.size() != 1) {
+      reader.fail(*line,
+                  "expected " + what + " alone on its line, got '" + shown(line->text) + "'");
+    }
+    weights[k] = reader.number(*line, line->words[0], what);
+  }
+  return weights;
+}
+
+LearntWeights parse(const std::filesystem::path& path, std::string_view text) {
+  Reader reader(path, text);
+  check_format_line(reader, reader.next_raw());
+
+  LearntWeights weights;
+  WeightsProvenance& provenance = weights.provenance;
+  provenance.arm = std::string(reader.keyed("arm", "<diagram name>"));
+  provenance.seed = reader.keyed_integer("seed");
+  provenance.trials = reader.keyed_integer("trials");
+  if (provenance.trials < 0) {
+    reader.fail(reader.last(), "trials must be >= 0; got " + std::to_string(provenance.trials));
+  }
+  provenance.plant = std::string(reader.keyed("plant.kind", "<plant kind>"));
+
+  auto positive = [&reader](std::string_view key) {
+    const double value = reader.keyed_number(key);
+    if (!(value > 0.0)) {
+      reader.fail(reader.last(), std::string(key) + " must be > 0; got " + format_number(value));
+    }
+    return value;
+  };
+  weights.normaliser.scale_theta = positive("normaliser.scale_theta");
+  weights.normaliser.scale_dtheta = positive("normaliser.scale_dtheta");
+  weights.normaliser.saturation = positive("normaliser.saturation");
+
+  const Line centres = reader.expect("'rbf.centres <numbers>'");
+  if (centres.words.size() < 2 || centres.words[0] != "rbf.centres") {
+    reader.fail(centres, "expected 'rbf.centres <numbers>', got '" + shown(centres.text) + "'");
+  }
+  for (std::size_t i = 1; i < centres.words.size(); ++i) {
+    weights.centres.push_back(
+        reader.number(centres, centres.words[i], "rbf.centres[" + std::to_string(i - 1) + "]"));
+    if (i > 1 && !(weights.centres[i - 1] > weights.centres[i - 2])) {
+      reader.fail(centres, "rbf.centres must be strictly increasing; got " +
+                               format_number(weights.centres[i - 2]) + " then " +
+                               format_number(weights.centres[i - 1]));
+    }
+  }
+  weights.width = positive("rbf.width");
+
+  const long long features = reader.keyed_integer("features");
+  if (features != weights.num_features()) {
+    reader.fail(reader.last(), "features is " + std::to_string(features) + ", but " +
+                                   std::to_string(weights.centres.size()) + " rbf.centres make " +
+                                   std::to_string(weights.num_features()));
+  }
+  weights.actor = read_weights(reader, "actor", features);
+  weights.critic = read_weights(reader, "critic", features);
+  if (const auto extra = reader.next()) {
+    reader.fail(*extra, "unexpected '" + shown(extra->text) + "' after the critic weights");
+  }
+  return weights;
+}
+
+void check_savable(const LearntWeights& weights) {
+  auto fail = [](const std::string& what) { throw std::invalid_argument("save_weights: " + what); };
+  if (weights.centres.empty()) fail("the weights have no rbf.centres");
+  if (!is_one_word(weights.provenance.arm) || !is_one_word(weights.provenance.plant)) {
+    fail("arm '" + weights.provenance.arm + "' and plant '" + weights.provenance.plant +
+         "' must be single words");
+  }
+  for (const auto& [name, vector] : {std::pair<const char*, const Vector*>{"actor", &weights.actor},
+                                     {"critic", &weights.critic}}) {
+    if (vector->size() != weights.num_features()) {
+      fail(std::string(name) + " has " + std::to_string(vector->size()) +
+           " weights; the layout has " + std::to_string(weights.num_features()) + " features");
+    }
+    for (Eigen::Index k = 0; k < vector->size(); ++k) {
+      if (!std::isfinite((*vector)[k])) {
+        fail(std::string(name) + " weight [" + std::to_string(k) + "] is " +
+             format_number((*vector)[k]) + "; numbers must be finite");
+      }
+    }
+  }
+}
+
+std::string format_weights(const LearntWeights& weights) {
+  const WeightsProvenance& provenance = weights.provenance;
+  // Appended piece by piece: one line per key, then one weight per line.
+  std::string text;
+  auto line = [&text](std::string_view key, const std::string& value) {
+    text.append(key).append(" ").append(value).append("\n");
+  };
+  text.append(format_header()).append("\n");
+  text.append("# Learnt cbbg weights (docs/weights-format.md).\n");
+  line("arm", provenance.arm);
+  line("seed", std::to_string(provenance.seed));
+  line("trials", std::to_string(provenance.trials));
+  line("plant.kind", provenance.plant);
+  line("normaliser.scale_theta", format_number(weights.normaliser.scale_theta));
+  line("normaliser.scale_dtheta", format_number(weights.normaliser.scale_dtheta));
+  line("normaliser.saturation", format_number(weights.normaliser.saturation));
+  text.append("rbf.centres");
+  for (const double centre : weights.centres) text.append(" ").append(format_number(centre));
+  text.append("\n");
+  line("rbf.width", format_number(weights.width));
+  line("features", std::to_string(weights.num_features()));
+  text.append("# Weight k belongs to the unit at (rbf.centres[k / m], rbf.centres[k % m]), m = ")
+      .append(std::to_string(weights.centres.size()))
+      .append(".\n");
+  for (const auto& [name, vector] : {std::pair<const char*, const Vector*>{"actor", &weights.actor},
+                                     {"critic", &weights.critic}}) {
+    line(name, std::to_string(vector->size()));
+    for (const double weight : *vector) text.append(format_number(weight)).append("\n");
+  }
+  return text;
+}
+
+std::string layout_text(const std::vector<double>& centres, double width) {
+  const std::size_t m = centres.size();
+  return "rbf.centres " + format_list(centres) + " and rbf.width " + format_number(width) + " (" +
+         std::to_string(m * m) + " features)";
+}
+
+std::string normaliser_text(const blocks::NormaliserParams& normaliser) {
+  return "normaliser.scale_theta " + format_number(normaliser.scale_theta) +
+         ", normaliser.scale_dtheta " + format_number(normaliser.scale_dtheta) +
+         " and normaliser.saturation " + format_number(normaliser.saturation);
+}
+
+}  // namespace
+
+int LearntWeights::num_features() const {
+  return static_cast<int>(centres.size() * centres.size());
+}
+
+bool LearntWeights::operator==(const LearntWeights& other) const {
+  auto same = [](const Vector& a, const Vector& b) {
+    return a.size() == b.size() && (a.size() == 0 || (a.array() == b.array()).all());
+  };
+  return centres == other.centres && width == other.width &&
+         normaliser.scale_theta == other.normaliser.scale_theta &&
+         normaliser.scale_dtheta == other.normaliser.scale_dtheta &&
+         normaliser.saturation == other.normaliser.saturation && same(actor, other.actor) &&
+         same(critic, other.critic) && provenance == other.provenance;
+}
+
+void save_weights(const std::filesystem::path& path, const LearntWeights& weights) {
+  check_savable(weights);
+  const std::string text = format_weights(weights);
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  // Unique per process and call, so threads saving at once never share a temporary file.
+  static std::atomic<int> counter{0};
+  std::filesystem::path temporary = path;
+  temporary += ".partial-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw std::runtime_error("cannot write weights file '" + path.string() + "'");
+    }
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error("cannot write weights file '" + path.string() +
+                             "': " + error.message());
+  }
+}
+
+LearntWeights load_weights(const std::filesystem::path& path) {
+  const std::string text = read_file(path);
+  return parse(path, text);
+}
+
+void check_layout(const LearntWeights& weights, const config::Config& config,
+                  const std::filesystem::path& source) {
+  const std::vector<double>& centres = config.numbers("rbf.centres");
+  const double width = config.number("rbf.width");
+  const std::string file = "weights file '" + source.string() + "' was made for ";
+  if (weights.centres != centres || weights.width != width) {
+    throw config::ConfigError(file + layout_text(weights.centres, weights.width) +
+                              "; this config has " + layout_text(centres, width));
+  }
+  const blocks::NormaliserParams normaliser{config.number("normaliser.scale_theta"),
+                                            config.number("normaliser.scale_dtheta"),
+                                            config.number("normaliser.saturation")};
+  if (weights.normaliser.scale_theta != normaliser.scale_theta ||
+      weights.normaliser.scale_dtheta != normaliser.scale_dtheta ||
+      weights.normaliser.saturation != normaliser.saturation) {
+    throw config::ConfigError(file + normaliser_text(weights.normaliser) + "; this config has " +
+                              normaliser_text(normaliser));
+  }
+}
+
+LearntWeights learnt_weights(const ControllerDiagram& controller, const Context& context,
+                             const config::Config& config, const WeightsProvenance& provenance) {
+  if (controller.actor == nullptr || controller.critic == nullptr) {
+    throw std::invalid_argument("diagram '" + controller.name +
+                                "' has no critic and actor: it learns no weights");
+  }
+  LearntWeights weights;
+  const blocks::RbfParams rbf = rbf_params(config);
+  weights.centres = rbf.centres;
+  weights.width = rbf.width;
+  weights.normaliser = normaliser_params(config);
+  weights.actor = controller.actor->weights(context);
+  weights.critic = controller.critic->weights(context);
+  weights.provenance = provenance;
+  return weights;
+}
+
+void load_learnt_weights(const ControllerDiagram& controller, Context& context,
+                         const LearntWeights& weights) {
+  if (controller.actor == nullptr) {
+    throw std::invalid_argument("diagram '" + controller.name +
+                                "' has no actor to load weights into");
+  }
+  auto check = [&controller](const char* name, Eigen::Index size, int features) {
+    if (size != features) {
+      throw std::invalid_argument("the weights have " + std::to_string(size) + " " + name +
+                                  " weights; diagram '" + controller.name + "' has " +
+                                  std::to_string(features) + " features");
+    }
+  };
+  check("actor", weights.actor.size(), controller.actor->num_features());
+  if (controller.critic != nullptr) {
+    check("critic", weights.critic.size(), controller.critic->num_features());
+  }
+  controller.actor->mutable_weights(context) = weights.actor;
+  if (controller.critic != nullptr) controller.critic->mutable_weights(context) = weights.critic;
+}
+
+}  // namespace cbbg::diagrams

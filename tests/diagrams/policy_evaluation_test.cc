@@ -1,0 +1,360 @@
+#include "diagrams/policy_evaluation.h"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "apps/eval_command.h"
+#include "diagrams/controller_diagram.h"
+#include "diagrams/torque_push.h"
+#include "diagrams/trial_runner.h"
+#include "diagrams/weights_file.h"
+#include "framework/diagram_builder.h"
+#include "framework/primitives/constant_source.h"
+#include "framework/simulator.h"
+
+namespace cbbg::diagrams {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+// The analytic plant keeps these tests quick.
+config::Config analytic_config() {
+  config::Config config;
+  config.set("plant.kind=analytic");
+  return config;
+}
+
+// Weights learnt by bg_only (seed 1, analytic plant) up to its first balanced trial.
+const LearntWeights& bg_only_weights() {
+  static const LearntWeights weights = [] {
+    const config::Config config = analytic_config();
+    const ControllerDiagram learner = build_controller_diagram("bg_only", config);
+    TrialRunner runner(learner, 1, config.number("trial.period"));
+    int trials = 0;
+    bool balanced = false;
+    while (!balanced && trials < 30) {
+      ++trials;
+      balanced =
+          runner.run_trial(config.number("trial.theta0"), config.number("trial.duration")).status ==
+          TrialStatus::kSuccess;
+    }
+    EXPECT_TRUE(balanced) << "bg_only did not balance within 30 trials";
+    return learnt_weights(learner, runner.context(), config, {"bg_only", 1, trials, "analytic"});
+  }();
+  return weights;
+}
+
+LearntWeights zero_weights() {
+  LearntWeights weights = bg_only_weights();
+  weights.actor.setZero();
+  weights.critic.setZero();
+  return weights;
+}
+
+EvaluationSettings from(std::vector<double> angles, int repeats = 1,
+                        std::optional<PushParams> push = std::nullopt) {
+  return EvaluationSettings{std::move(angles), repeats, push};
+}
+
+bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+TEST(TorquePush, AddsThePushOverTheTicksOfItsInterval) {
+  // The push applied over [t_k, t_k+1) is the one the update at t_k set: sample half-way.
+  for (const double start : {0.03, 0.025}) {  // on a tick, and between ticks (0.03 is next)
+    DiagramBuilder builder("pushed");
+    auto& action = builder.emplace<ConstantSource>("action", Vector::Constant(1, 1.5));
+    auto& push = builder.emplace<TorquePush>("push", PushParams{start, 2.0, 0.02}, 0.01);
+    builder.connect(action.output_port("y"), push.input_port("action"));
+    const auto diagram = builder.build();
+    Simulator simulator(*diagram);
+    const SignalLog& log = simulator.add_log(push.output_port("torque"), 0.01, 0.005);
+    simulator.advance_to(0.06);
+    ASSERT_EQ(log.num_samples(), 6);
+    const double expected[] = {1.5, 1.5, 1.5, 3.5, 3.5, 1.5};  // ticks 0.03 and 0.04 pushed
+    for (int k = 0; k < 6; ++k) {
+      EXPECT_EQ(log.sample(k)[0], expected[k]) << "start " << start << ", t " << log.times()[k];
+    }
+  }
+}
+
+TEST(TorquePush, RefusesPushesOutOfRange) {
+  EXPECT_THAT(([] {
+                PushParams{-0.5, 1.0, 0.1}.validate();
+              }),
+              ::testing::ThrowsMessage<std::invalid_argument>(
+                  "push.start must be finite and >= 0; got -0.5"));
+  EXPECT_THAT(
+      ([] {
+        PushParams{0.0, std::numeric_limits<double>::infinity(), 0.1}.validate();
+      }),
+      ::testing::ThrowsMessage<std::invalid_argument>("push.torque must be finite; got inf"));
+  EXPECT_THAT(([] {
+                PushParams{0.0, 1.0, 0.0}.validate();
+              }),
+              ::testing::ThrowsMessage<std::invalid_argument>(
+                  "push.duration must be finite and > 0; got 0"));
+}
+
+TEST(PolicyEvaluation, ZeroWeightsFallFromTheTrialAngle) {
+  const PolicyEvaluation evaluation =
+      evaluate_policy(analytic_config(), zero_weights(), from({0.1744}));
+  ASSERT_EQ(evaluation.angles.size(), 1u);
+  const TrialOutcome& run = evaluation.angles[0].runs.at(0);
+  EXPECT_EQ(run.status, TrialStatus::kFailed);
+  EXPECT_EQ(evaluation.angles[0].balanced(), 0);
+  // No torque at all: the body falls past pi/6 well within two seconds.
+  EXPECT_LT(run.steps, 200);
+  EXPECT_GT(std::abs(run.final_theta), 0.5236);
+}
+
+TEST(PolicyEvaluation, WeightsLearntByAShortBgOnlyRunBalanceFromSmallAngles) {
+  const PolicyEvaluation evaluation =
+      evaluate_policy(analytic_config(), bg_only_weights(), from({0.05, 0.1}));
+  for (const AngleEvaluation& angle : evaluation.angles) {
+    EXPECT_EQ(angle.balanced(), 1) << "from " << angle.theta0;
+    EXPECT_EQ(angle.runs.at(0).steps, 2000);  // 20 s at 10 ms
+  }
+}
+
+TEST(PolicyEvaluation, MatchesTheLearntActorDiagramRunByTrialRunner) {
+  config::Config config = analytic_config();
+  config.set("sensors.noise_std=[0.002, 0.01, 0, 0, 0, 0]");
+  config.set("seed=5");
+  for (const double theta0 : {0.05, 0.2}) {
+    const ControllerDiagram policy = build_controller_diagram(kLearntActorDiagram, config);
+    TrialRunner runner(policy, 5, config.number("trial.period"));
+    load_learnt_weights(policy, runner.context(), bg_only_weights());
+    const TrialOutcome expected = runner.run_trial(theta0, config.number("trial.duration"));
+    const TrialOutcome got =
+        evaluate_policy(config, bg_only_weights(), from({theta0})).angles[0].runs[0];
+    EXPECT_EQ(got.status, expected.status) << "from " << theta0;
+    EXPECT_EQ(got.steps, expected.steps) << "from " << theta0;
+    EXPECT_TRUE(same_bits(got.final_theta, expected.final_theta))
+        << "from " << theta0 << ": " << got.final_theta << " vs " << expected.final_theta;
+  }
+}
+
+TEST(PolicyEvaluation, RepeatsDifferOnlyWithSensorNoise) {
+  config::Config config = analytic_config();
+  const AngleEvaluation quiet =
+      evaluate_policy(config, bg_only_weights(), from({0.1}, 3)).angles[0];
+  ASSERT_EQ(quiet.runs.size(), 3u);
+  for (const TrialOutcome& run : quiet.runs) {
+    EXPECT_TRUE(same_bits(run.final_theta, quiet.runs[0].final_theta));
+    EXPECT_EQ(run.steps, quiet.runs[0].steps);
+  }
+
+  config.set("sensors.noise_std=[0.002, 0.01, 0, 0, 0, 0]");
+  const AngleEvaluation noisy =
+      evaluate_policy(config, bg_only_weights(), from({0.1}, 3)).angles[0];
+  EXPECT_NE(noisy.runs[0].final_theta, noisy.runs[1].final_theta);
+  EXPECT_NE(noisy.runs[1].final_theta, noisy.runs[2].final_theta);
+  EXPECT_NE(noisy.runs[0].final_theta, noisy.runs[2].final_theta);
+  // Repeat r is seed + r, whatever ran before it.
+  config.set("seed=2");
+  const TrialOutcome second =
+      evaluate_policy(config, bg_only_weights(), from({0.1})).angles[0].runs[0];
+  EXPECT_TRUE(same_bits(second.final_theta, noisy.runs[1].final_theta));
+  EXPECT_EQ(second.steps, noisy.runs[1].steps);
+}
+
+TEST(PolicyEvaluation, AStrongPushFellsABalancingPolicy) {
+  const config::Config config = analytic_config();
+  const TrialOutcome still =
+      evaluate_policy(config, bg_only_weights(), from({0.05})).angles[0].runs[0];
+  ASSERT_EQ(still.status, TrialStatus::kSuccess);
+
+  // A push of nothing changes nothing, bit for bit.
+  const TrialOutcome nothing =
+      evaluate_policy(config, bg_only_weights(), from({0.05}, 1, PushParams{1.0, 0.0, 1.0}))
+          .angles[0]
+          .runs[0];
+  EXPECT_EQ(nothing.steps, still.steps);
+  EXPECT_TRUE(same_bits(nothing.final_theta, still.final_theta));
+
+  // The full torque limit on both wheels for a second, from t = 1 s.
+  const TrialOutcome pushed =
+      evaluate_policy(config, bg_only_weights(), from({0.05}, 1, PushParams{1.0, 5.0, 1.0}))
+          .angles[0]
+          .runs[0];
+  EXPECT_EQ(pushed.status, TrialStatus::kFailed);
+  EXPECT_GT(pushed.steps, 100);  // it stood until the push began
+}
+
+TEST(PolicyEvaluation, APushActsTheSameOnBothPlants) {
+  // The push switches at ticks only, so both plants integrate the same piecewise-constant
+  // torque: they agree as closely as without a push (SPEC 1: 1e-6 rad over 3 s).
+  config::Config config = analytic_config();
+  config.set("trial.duration=1.0");
+  const EvaluationSettings settings = from({0.05}, 1, PushParams{0.305, 1.5, 0.2});
+  const TrialOutcome analytic =
+      evaluate_policy(config, bg_only_weights(), settings).angles[0].runs[0];
+  config.set("plant.kind=simbody");
+  const TrialOutcome simbody =
+      evaluate_policy(config, bg_only_weights(), settings).angles[0].runs[0];
+  ASSERT_EQ(analytic.status, TrialStatus::kSuccess);
+  ASSERT_EQ(simbody.status, TrialStatus::kSuccess);
+  EXPECT_NEAR(simbody.final_theta, analytic.final_theta, 1e-6);
+  const TrialOutcome unpushed =
+      evaluate_policy(config, bg_only_weights(), from({0.05})).angles[0].runs[0];
+  EXPECT_GT(std::abs(unpushed.final_theta - simbody.final_theta), 1e-3);  // the push mattered
+}
+
+TEST(PolicyEvaluation, RefusesWeightsOfAnotherGrid) {
+  config::Config config = analytic_config();
+  config.set("rbf.centres=[-1, 0, 1]");
+  EXPECT_THAT(([&] { evaluate_policy(config, bg_only_weights(), from({0.1})); }),
+              ::testing::ThrowsMessage<std::invalid_argument>(
+                  "the weights have 49 actor weights; the config's RBF grid has 9 features"));
+  EXPECT_THAT(
+      ([&] { evaluate_policy(analytic_config(), bg_only_weights(), from({})); }),
+      ::testing::ThrowsMessage<std::invalid_argument>("evaluation angles: at least one is needed"));
+  EXPECT_THAT(
+      ([&] { evaluate_policy(analytic_config(), bg_only_weights(), from({0.1}, 0)); }),
+      ::testing::ThrowsMessage<std::invalid_argument>("evaluation repeats must be >= 1; got 0"));
+}
+
+// cbbg eval, called as the command line calls it.
+class EvalCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() /
+                 ("cbbg_eval_" +
+                  std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(directory_);
+    fs::create_directories(directory_);
+    weights_file_ = directory_ / "w.txt";
+    save_weights(weights_file_, bg_only_weights());
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  app::EvalOptions options() const {
+    app::EvalOptions result;
+    result.weights_file = weights_file_;
+    result.sets = {"plant.kind=analytic"};
+    result.angles = {0.05};
+    return result;
+  }
+
+  struct Outcome {
+    int exit_code;
+    std::string out;
+    std::string err;
+  };
+  static Outcome run(const app::EvalOptions& options) {
+    ::testing::internal::CaptureStdout();
+    ::testing::internal::CaptureStderr();
+    const int code = app::eval_command(options);
+    std::string out = ::testing::internal::GetCapturedStdout();
+    return {code, std::move(out), ::testing::internal::GetCapturedStderr()};
+  }
+  // Runs options that must be refused: exit 2, nothing on stdout; returns stderr.
+  static std::string refused(const app::EvalOptions& options) {
+    const Outcome outcome = run(options);
+    EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+    EXPECT_EQ(outcome.out, "");
+    return outcome.err;
+  }
+
+  fs::path directory_;
+  fs::path weights_file_;
+};
+
+TEST_F(EvalCommand, BadWeightsOrConfigExitTwoWithOneLine) {
+  app::EvalOptions bad = options();
+  bad.weights_file.clear();
+  EXPECT_EQ(refused(bad), "cbbg: error: --load-weights FILE is required\n");
+  bad = options();
+  bad.weights_file = directory_ / "missing.txt";
+  EXPECT_EQ(refused(bad),
+            "cbbg: error: weights file '" + bad.weights_file.string() + "' does not exist\n");
+  std::ofstream(directory_ / "broken.txt") << "cbbg-weights 1\narm bg_only\nseed one\n";
+  bad.weights_file = directory_ / "broken.txt";
+  EXPECT_EQ(refused(bad), "cbbg: error: weights file '" + bad.weights_file.string() +
+                              "' line 3: seed 'one' is not an integer\n");
+  bad = options();
+  bad.sets.push_back("rbf.centres=[-2, -1, 0, 1, 2]");
+  EXPECT_EQ(refused(bad), "cbbg: error: weights file '" + weights_file_.string() +
+                              "' was made for rbf.centres [-3, -2, -1, 0, 1, 2, 3] and rbf.width "
+                              "0.5 (49 features); this config has rbf.centres [-2, -1, 0, 1, 2] "
+                              "and rbf.width 0.5 (25 features)\n");
+  bad = options();
+  bad.sets.push_back("critic.gama=0.5");
+  EXPECT_THAT(refused(bad), HasSubstr("unknown key 'critic.gama'; did you mean 'critic.gamma'?"));
+}
+
+TEST_F(EvalCommand, BadOptionsExitTwoWithOneLine) {
+  app::EvalOptions bad = options();
+  bad.repeats = 0;
+  EXPECT_EQ(refused(bad), "cbbg: error: --repeats must be >= 1; got 0\n");
+  bad = options();
+  bad.angles = {0.05, std::numeric_limits<double>::infinity()};
+  EXPECT_EQ(refused(bad), "cbbg: error: --angles: every angle must be a finite number; got inf\n");
+  bad = options();
+  bad.push_time = 1.0;
+  EXPECT_EQ(refused(bad),
+            "cbbg: error: --push-time, --push-torque and --push-duration go together; missing "
+            "--push-torque and --push-duration\n");
+  bad.push_torque = 2.0;
+  bad.push_duration = 0.0;
+  EXPECT_EQ(refused(bad), "cbbg: error: --push-duration must be a finite number > 0 (s); got 0\n");
+  bad.push_duration = 0.5;
+  bad.push_time = -1.0;
+  EXPECT_EQ(refused(bad), "cbbg: error: --push-time must be a finite number >= 0 (s); got -1\n");
+  bad.push_time = 1.0;
+  bad.push_torque = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(refused(bad), "cbbg: error: --push-torque must be a finite number (N m); got nan\n");
+}
+
+TEST_F(EvalCommand, PrintsBalancedRunsPerAngleAndWritesTheCsv) {
+  app::EvalOptions good = options();
+  good.angles = {0.05, 0.1};
+  good.repeats = 2;
+  good.out = directory_ / "eval";
+  const Outcome outcome = run(good);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_EQ(outcome.err, "");
+  EXPECT_THAT(outcome.out, HasSubstr("    theta0   balanced\n"
+                                     "      0.05        2/2\n"
+                                     "       0.1        2/2\n"));
+  std::ifstream csv(good.out / "evaluation.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "theta0,seed,balanced,steps,final_theta,status");
+  std::vector<std::string> rows;
+  for (std::string row; std::getline(csv, row);) rows.push_back(row);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_THAT(rows[0], ::testing::StartsWith("0.05,1,1,2000,"));
+  EXPECT_THAT(rows[1], ::testing::StartsWith("0.05,2,1,2000,"));
+  EXPECT_THAT(rows[3], ::testing::StartsWith("0.1,2,1,2000,"));
+  EXPECT_THAT(rows[3], ::testing::EndsWith(",success"));
+  int files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(good.out)) ++files;
+  EXPECT_EQ(files, 1);  // evaluation.csv alone: no temporary file left
+}
+
+TEST_F(EvalCommand, AFallIsAResultNotAnError) {
+  app::EvalOptions pushed = options();
+  pushed.push_time = 1.0;
+  pushed.push_torque = 5.0;
+  pushed.push_duration = 1.0;
+  const Outcome outcome = run(pushed);
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_THAT(outcome.out, HasSubstr("push 5 N m on each wheel from 1 s for 1 s"));
+  EXPECT_THAT(outcome.out, HasSubstr("      0.05        0/1\n"));
+}
+
+}  // namespace
+}  // namespace cbbg::diagrams

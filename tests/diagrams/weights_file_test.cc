@@ -1,0 +1,395 @@
+#include "diagrams/weights_file.h"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "diagrams/controller_diagram.h"
+
+namespace cbbg::diagrams {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+class WeightsFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() /
+                 ("cbbg_weights_" +
+                  std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(directory_);
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  fs::path write(const std::string& name, const std::string& text) const {
+    const fs::path path = directory_ / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  // The message load_weights throws for a file holding `text`.
+  std::string load_error(const std::string& text) const {
+    const fs::path path = write("w.txt", text);
+    try {
+      load_weights(path);
+    } catch (const config::ConfigError& error) {
+      return error.what();
+    }
+    return "(loaded without an error)";
+  }
+
+  std::string prefix() const { return "weights file '" + (directory_ / "w.txt").string() + "' "; }
+
+  fs::path directory_;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A file written by hand: a 3 x 3 grid (9 features). Line numbers: 1 format, 2 comment,
+// 3 arm, 4 seed, 5 trials, 6 plant.kind, 7-9 normaliser, 10 centres, 11 width, 12 features,
+// 13 "actor 9", 14-22 actor, 23 "critic 9", 24-32 critic.
+std::string small_file() {
+  std::string text =
+      "cbbg-weights 1\n"
+      "# written by hand\n"
+      "arm bg_only\n"
+      "seed 7\n"
+      "trials 3\n"
+      "plant.kind analytic\n"
+      "normaliser.scale_theta 0.05817764\n"
+      "normaliser.scale_dtheta 0.05817764\n"
+      "normaliser.saturation 3\n"
+      "rbf.centres -1 0 1\n"
+      "rbf.width 0.5\n"
+      "features 9\n"
+      "actor 9\n";
+  for (int k = 0; k < 9; ++k) text += std::to_string(k) + ".5\n";
+  text += "critic 9\n";
+  for (int k = 0; k < 9; ++k) text.append("-").append(std::to_string(k)).append("\n");
+  return text;
+}
+
+// Replaces line `number` (from 1) of `text`.
+std::string with_line(const std::string& text, int number, const std::string& line) {
+  std::istringstream in(text);
+  std::string result;
+  std::string current;
+  for (int n = 1; std::getline(in, current); ++n) result += (n == number ? line : current) + "\n";
+  return result;
+}
+
+// The first `lines` lines of `text`.
+std::string first_lines(const std::string& text, int lines) {
+  std::istringstream in(text);
+  std::string result;
+  std::string current;
+  for (int n = 1; n <= lines && std::getline(in, current); ++n) result += current + "\n";
+  return result;
+}
+
+bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+LearntWeights default_layout_weights() {
+  LearntWeights weights;
+  weights.centres = {-3, -2, -1, 0, 1, 2, 3};
+  weights.width = 0.5;
+  weights.actor = Vector::Zero(49);
+  weights.critic = Vector::Zero(49);
+  return weights;
+}
+
+TEST_F(WeightsFile, ReadsAFileWrittenByHand) {
+  const LearntWeights weights = load_weights(write("w.txt", small_file()));
+  EXPECT_EQ(weights.provenance, (WeightsProvenance{"bg_only", 7, 3, "analytic"}));
+  EXPECT_EQ(weights.centres, (std::vector<double>{-1, 0, 1}));
+  EXPECT_EQ(weights.width, 0.5);
+  EXPECT_EQ(weights.normaliser.scale_theta, 0.05817764);
+  EXPECT_EQ(weights.normaliser.saturation, 3.0);
+  ASSERT_EQ(weights.actor.size(), 9);
+  ASSERT_EQ(weights.critic.size(), 9);
+  EXPECT_EQ(weights.actor[0], 0.5);
+  EXPECT_EQ(weights.actor[8], 8.5);
+  EXPECT_EQ(weights.critic[8], -8.0);
+}
+
+TEST_F(WeightsFile, SaveThenLoadGivesEveryDoubleBackBitForBit) {
+  LearntWeights weights;
+  weights.centres = {-3.0, -1.0 / 3.0, 0.1, 0.2 + 0.1, 2.0 / 3.0, 1e-300, 7.25};
+  std::sort(weights.centres.begin(), weights.centres.end());
+  weights.width = 0.1 + 0.2;
+  weights.normaliser = {3.14159265358979 / 54.0, 1.0 / 7.0, 2.9999999999999996};
+  weights.provenance = {"cbbg_weighted", 123456789012LL, 42, "simbody"};
+  // Awkward values first, then random bit patterns (every finite double is allowed).
+  const double awkward[] = {-0.0,  5e-324,    -2.2250738585072014e-308, 1.7976931348623157e308,
+                            0.1,   1.0 / 3.0, std::nextafter(1.0, 2.0), 123456789.123456789,
+                            -1e-17};
+  std::mt19937_64 bits(2011);
+  weights.actor.resize(49);
+  weights.critic.resize(49);
+  for (int k = 0; k < 98; ++k) {
+    double value = 0.0;
+    if (k < static_cast<int>(std::size(awkward))) {
+      value = awkward[k];
+    } else {
+      do value = std::bit_cast<double>(bits());
+      while (!std::isfinite(value));
+    }
+    (k < 49 ? weights.actor[k] : weights.critic[k - 49]) = value;
+  }
+
+  const fs::path path = directory_ / "nested" / "w.txt";  // the directory is created
+  save_weights(path, weights);
+  const LearntWeights loaded = load_weights(path);
+  EXPECT_EQ(loaded.provenance, weights.provenance);
+  ASSERT_EQ(loaded.centres.size(), weights.centres.size());
+  for (std::size_t i = 0; i < weights.centres.size(); ++i) {
+    EXPECT_TRUE(same_bits(loaded.centres[i], weights.centres[i])) << "centre " << i;
+  }
+  EXPECT_TRUE(same_bits(loaded.width, weights.width));
+  EXPECT_TRUE(same_bits(loaded.normaliser.scale_theta, weights.normaliser.scale_theta));
+  EXPECT_TRUE(same_bits(loaded.normaliser.scale_dtheta, weights.normaliser.scale_dtheta));
+  EXPECT_TRUE(same_bits(loaded.normaliser.saturation, weights.normaliser.saturation));
+  ASSERT_EQ(loaded.actor.size(), 49);
+  ASSERT_EQ(loaded.critic.size(), 49);
+  for (int k = 0; k < 49; ++k) {
+    EXPECT_TRUE(same_bits(loaded.actor[k], weights.actor[k])) << "actor " << k;
+    EXPECT_TRUE(same_bits(loaded.critic[k], weights.critic[k])) << "critic " << k;
+  }
+  EXPECT_TRUE(loaded == weights);
+
+  const std::string text = read_text(path);
+  EXPECT_EQ(text.substr(0, text.find('\n')), "cbbg-weights 1");
+  EXPECT_THAT(text, HasSubstr("\n-0\n5e-324\n-2.2250738585072014e-308\n1.7976931348623157e+308\n"
+                              "0.1\n0.3333333333333333\n"));
+}
+
+TEST_F(WeightsFile, SavingReplacesTheFileWholeAndLeavesNothingElse) {
+  LearntWeights first = default_layout_weights();
+  first.actor[3] = 1.0;
+  LearntWeights second = default_layout_weights();
+  second.actor[3] = 2.0;
+  const fs::path path = directory_ / "w.txt";
+  save_weights(path, first);
+  save_weights(path, second);
+  EXPECT_EQ(load_weights(path).actor[3], 2.0);
+  int files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(directory_)) ++files;
+  EXPECT_EQ(files, 1);  // no temporary file left beside it
+}
+
+TEST_F(WeightsFile, SavingRefusesWhatTheFormatCannotHold) {
+  auto save_error = [this](const LearntWeights& weights) -> std::string {
+    try {
+      save_weights(directory_ / "w.txt", weights);
+    } catch (const std::invalid_argument& error) {
+      return error.what();
+    }
+    return "(saved)";
+  };
+  LearntWeights weights = default_layout_weights();
+  weights.actor = Vector::Zero(48);
+  EXPECT_EQ(save_error(weights), "save_weights: actor has 48 weights; the layout has 49 features");
+  weights = default_layout_weights();
+  weights.critic[5] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(save_error(weights), "save_weights: critic weight [5] is nan; numbers must be finite");
+  weights = default_layout_weights();
+  weights.provenance.arm = "bg only";
+  EXPECT_EQ(save_error(weights),
+            "save_weights: arm 'bg only' and plant 'unknown' must be single words");
+  EXPECT_FALSE(fs::exists(directory_ / "w.txt"));
+}
+
+TEST_F(WeightsFile, MissingFileAndDirectoryAreNamed) {
+  const fs::path missing = directory_ / "nothing.txt";
+  try {
+    load_weights(missing);
+    FAIL() << "loaded a missing file";
+  } catch (const config::ConfigError& error) {
+    EXPECT_EQ(std::string(error.what()), "weights file '" + missing.string() + "' does not exist");
+  }
+  try {
+    load_weights(directory_);
+    FAIL() << "loaded a directory";
+  } catch (const config::ConfigError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "weights file '" + directory_.string() + "' is a directory, not a file");
+  }
+}
+
+TEST_F(WeightsFile, OtherFormatsAndVersionsAreNamed) {
+  EXPECT_EQ(load_error(""),
+            prefix() + "is empty; a weights file starts with the line 'cbbg-weights 1'");
+  EXPECT_EQ(load_error(with_line(small_file(), 1, "cbbg-weights 2")),
+            prefix() + "is format 'cbbg-weights 2'; this cbbg reads 'cbbg-weights 1'");
+  EXPECT_EQ(load_error("experiment: exp1\nseeds: 20\n"),
+            prefix() +
+                "is not a cbbg weights file: its first line is 'experiment: exp1', expected "
+                "'cbbg-weights 1'");
+  EXPECT_EQ(load_error(std::string("\x7f"
+                                   "ELF\x02\x01",
+                                   6)),
+            prefix() +
+                "is not a cbbg weights file: its first line is '?ELF?"
+                "?', expected "
+                "'cbbg-weights 1'");
+}
+
+TEST_F(WeightsFile, MalformedLinesAreNamedWithTheirNumber) {
+  const std::string file = small_file();
+  EXPECT_EQ(load_error(with_line(file, 4, "sed 7")),
+            prefix() + "line 4: expected 'seed <integer>', got 'sed 7'");
+  EXPECT_EQ(load_error(with_line(file, 4, "seed seven")),
+            prefix() + "line 4: seed 'seven' is not an integer");
+  EXPECT_EQ(load_error(with_line(file, 3, "arm bg_only extra")),
+            prefix() + "line 3: expected 'arm <diagram name>', got 'arm bg_only extra'");
+  EXPECT_EQ(load_error(with_line(file, 5, "trials -1")),
+            prefix() + "line 5: trials must be >= 0; got -1");
+  EXPECT_EQ(load_error(with_line(file, 11, "rbf.width wide")),
+            prefix() + "line 11: rbf.width 'wide' is not a number");
+  EXPECT_EQ(load_error(with_line(file, 11, "rbf.width -0.5")),
+            prefix() + "line 11: rbf.width must be > 0; got -0.5");
+  EXPECT_EQ(load_error(with_line(file, 7, "normaliser.scale_theta 0")),
+            prefix() + "line 7: normaliser.scale_theta must be > 0; got 0");
+  EXPECT_EQ(load_error(with_line(file, 10, "rbf.centres -1 1 0")),
+            prefix() + "line 10: rbf.centres must be strictly increasing; got 1 then 0");
+  EXPECT_EQ(load_error(with_line(file, 10, "centres -1 0 1")),
+            prefix() + "line 10: expected 'rbf.centres <numbers>', got 'centres -1 0 1'");
+  EXPECT_EQ(load_error(with_line(file, 15, "1 2")),
+            prefix() + "line 15: expected actor weight [1] alone on its line, got '1 2'");
+  // Blank lines and comments are skipped but counted.
+  EXPECT_EQ(load_error(with_line(with_line(file, 2, ""), 24, "# a comment\nwhat")),
+            prefix() + "line 25: critic weight [0] 'what' is not a number");
+}
+
+TEST_F(WeightsFile, NonFiniteNumbersAreRefused) {
+  const std::string file = small_file();
+  EXPECT_EQ(load_error(with_line(file, 11, "rbf.width inf")),
+            prefix() + "line 11: rbf.width is inf; numbers must be finite");
+  EXPECT_EQ(load_error(with_line(file, 17, "nan")),
+            prefix() + "line 17: actor weight [3] is nan; numbers must be finite");
+  EXPECT_EQ(load_error(with_line(file, 32, "-inf")),
+            prefix() + "line 32: critic weight [8] is -inf; numbers must be finite");
+  EXPECT_EQ(load_error(with_line(file, 10, "rbf.centres -1 0 nan")),
+            prefix() + "line 10: rbf.centres[2] is nan; numbers must be finite");
+}
+
+TEST_F(WeightsFile, WrongCountsAndMissingLinesAreNamed) {
+  const std::string file = small_file();
+  EXPECT_EQ(load_error(with_line(file, 12, "features 8")),
+            prefix() + "line 12: features is 8, but 3 rbf.centres make 9");
+  EXPECT_EQ(load_error(with_line(file, 13, "actor 8")),
+            prefix() + "line 13: actor has 8 weights, but features is 9");
+  EXPECT_EQ(load_error(first_lines(file, 27)),
+            prefix() + "ends after line 27 with 4 of 9 critic weights");
+  EXPECT_EQ(load_error(first_lines(file, 22)),
+            prefix() + "ends after line 22; expected 'critic <count>'");
+  EXPECT_EQ(load_error(first_lines(file, 6)),
+            prefix() + "ends after line 6; expected 'normaliser.scale_theta <number>'");
+  EXPECT_EQ(load_error(file + "\n# fine\n1.5\n"),
+            prefix() + "line 35: unexpected '1.5' after the critic weights");
+}
+
+TEST_F(WeightsFile, LayoutMismatchNamesBothLayouts) {
+  const LearntWeights weights = default_layout_weights();
+  config::Config config;
+  EXPECT_NO_THROW(check_layout(weights, config, "w.txt"));
+
+  config.set("rbf.centres=[-2, -1, 0, 1, 2]");
+  try {
+    check_layout(weights, config, "w.txt");
+    FAIL() << "accepted another grid";
+  } catch (const config::ConfigError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "weights file 'w.txt' was made for rbf.centres [-3, -2, -1, 0, 1, 2, 3] and "
+              "rbf.width 0.5 (49 features); this config has rbf.centres [-2, -1, 0, 1, 2] and "
+              "rbf.width 0.5 (25 features)");
+  }
+  config = config::Config();
+  config.set("rbf.width=0.75");
+  EXPECT_THROW(
+      {
+        try {
+          check_layout(weights, config, "w.txt");
+        } catch (const config::ConfigError& error) {
+          EXPECT_THAT(error.what(), HasSubstr("this config has rbf.centres [-3, -2, -1, 0, 1, 2, "
+                                              "3] and rbf.width 0.75 (49 features)"));
+          throw;
+        }
+      },
+      config::ConfigError);
+  config = config::Config();
+  config.set("normaliser.scale_theta=0.1");
+  try {
+    check_layout(weights, config, "w.txt");
+    FAIL() << "accepted another normaliser";
+  } catch (const config::ConfigError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "weights file 'w.txt' was made for normaliser.scale_theta 0.05817764, "
+              "normaliser.scale_dtheta 0.05817764 and normaliser.saturation 3; this config has "
+              "normaliser.scale_theta 0.1, normaliser.scale_dtheta 0.05817764 and "
+              "normaliser.saturation 3");
+  }
+}
+
+TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
+  config::Config config;
+  config.set("plant.kind=analytic");
+  config.set("rbf.centres=[-1, 0, 1]");
+  const ControllerDiagram learner = build_controller_diagram("bg_only", config);
+  auto learnt = learner.diagram->create_context(1);
+  for (int k = 0; k < 9; ++k) {
+    learner.actor->mutable_weights(*learnt)[k] = 0.5 * k;
+    learner.critic->mutable_weights(*learnt)[k] = -1.0 * k;
+  }
+  const LearntWeights weights =
+      learnt_weights(learner, *learnt, config, {"bg_only", 4, 9, "analytic"});
+  EXPECT_EQ(weights.centres, (std::vector<double>{-1, 0, 1}));
+  EXPECT_EQ(weights.width, 0.5);
+  EXPECT_EQ(weights.normaliser.scale_dtheta, 0.05817764);
+  EXPECT_EQ(weights.actor[4], 2.0);
+  EXPECT_EQ(weights.critic[8], -8.0);
+  EXPECT_EQ(weights.provenance.trials, 9);
+
+  const ControllerDiagram policy = build_controller_diagram(kLearntActorDiagram, config);
+  auto evaluated = policy.diagram->create_context(1);
+  load_learnt_weights(policy, *evaluated, weights);
+  EXPECT_EQ(policy.actor->weights(*evaluated)[4], 2.0);
+
+  config::Config grid_of_49;
+  grid_of_49.set("plant.kind=analytic");
+  const ControllerDiagram other = build_controller_diagram("cbbg", grid_of_49);
+  auto other_context = other.diagram->create_context(1);
+  try {
+    load_learnt_weights(other, *other_context, weights);
+    FAIL() << "loaded 9 weights into 49 features";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "the weights have 9 actor weights; diagram 'cbbg' has 49 features");
+  }
+  const ControllerDiagram supervisor = build_controller_diagram("pd_only", config);
+  auto supervisor_context = supervisor.diagram->create_context(1);
+  EXPECT_THAT(([&] { learnt_weights(supervisor, *supervisor_context, config, {}); }),
+              ::testing::ThrowsMessage<std::invalid_argument>(
+                  "diagram 'pd_only' has no critic and actor: it learns no weights"));
+}
+
+}  // namespace
+}  // namespace cbbg::diagrams
