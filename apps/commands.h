@@ -16,7 +16,9 @@ struct RunOptions {
   long long seed = -1;                // < 0: the config's
   int jobs = 1;
   std::filesystem::path out = "results";
-  std::filesystem::path resume;  // non-empty: continue the interrupted run into it
+  std::filesystem::path resume;        // non-empty: continue the interrupted run into it
+  std::filesystem::path load_weights;  // non-empty: learning starts from these weights
+  std::filesystem::path save_weights;  // non-empty: the one learning run's weights go here
   bool figures = true;
 };
 int run_command(const RunOptions& options);

@@ -142,12 +142,16 @@ int eval_command(const EvalOptions& options) {
     if (options.repeats < 1) {
       throw config::ConfigError("--repeats must be >= 1; got " + std::to_string(options.repeats));
     }
+    if (!options.out.empty() && std::filesystem::exists(options.out) &&
+        !std::filesystem::is_directory(options.out)) {
+      throw config::ConfigError("--out '" + options.out.string() + "' is a file, not a directory");
+    }
     settings.push = push_from(options);
     config = resolve(options);
     weights = diagrams::load_weights(options.weights_file);
     diagrams::check_layout(weights, config, options.weights_file);
     settings.angles = config.numbers("evaluation.angles");
-    settings.repeats = static_cast<int>(options.repeats);
+    settings.repeats = options.repeats;
   } catch (const config::ConfigError& error) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
     return 2;

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/commands.h"
+#include "apps/eval_command.h"
 
 int main(int argc, char** argv) {
   using namespace cbbg::app;
@@ -36,6 +37,10 @@ int main(int argc, char** argv) {
                    "unfinished seeds")
       ->excludes(out_option);
   run_app->add_flag("!--no-figures", run.figures, "skip the figures");
+  run_app->add_option("--load-weights", run.load_weights,
+                      "start learning from a weights file (docs/weights-format.md)");
+  run_app->add_option("--save-weights", run.save_weights,
+                      "write the learnt weights (a run with one learning arm and one seed)");
 
   GraphOptions graph;
   CLI::App* graph_app = app.add_subcommand("graph", "draw a diagram (.dot, .svg or .png)");
@@ -51,6 +56,25 @@ int main(int argc, char** argv) {
   std::filesystem::path plot_directory;
   CLI::App* plot_app = app.add_subcommand("plot", "draw the figures of a results directory");
   plot_app->add_option("DIR", plot_directory, "a results directory")->required();
+
+  EvalOptions eval;
+  CLI::App* eval_app =
+      app.add_subcommand("eval", "evaluate learnt weights: the actor alone, frozen, per angle");
+  eval_app
+      ->add_option("--load-weights", eval.weights_file, "a weights file (cbbg run --save-weights)")
+      ->required();
+  eval_app->add_option("--config", eval.config_file, "a YAML config (keys: `cbbg list`)")
+      ->check(CLI::ExistingFile);
+  eval_app->add_option("--set", eval.sets,
+                       "override one key: --set plant.kind=analytic (repeatable)");
+  eval_app->add_option("--angles", eval.angles, "initial pitches, rad (default: evaluation.angles)")
+      ->delimiter(',');
+  eval_app->add_option("--repeats", eval.repeats, "runs per angle, seeds seed, seed + 1, ...");
+  eval_app->add_option("--push-time", eval.push_time,
+                       "push start, s (with --push-torque, --push-duration)");
+  eval_app->add_option("--push-torque", eval.push_torque, "push torque added to both wheels, N m");
+  eval_app->add_option("--push-duration", eval.push_duration, "push length, s");
+  eval_app->add_option("--out,-o", eval.out, "write DIR/evaluation.csv");
 
   CLI::App* list_app =
       app.add_subcommand("list", "list the diagrams, the blocks and every config key");
@@ -68,6 +92,7 @@ int main(int argc, char** argv) {
   spdlog::set_level(spdlog::level::from_str(log_level));
   spdlog::set_pattern("[%H:%M:%S] %^%l%$ %v");
 
+  if (eval_app->parsed()) return eval_command(eval);
   if (graph_app->parsed()) return graph_command(graph);
   if (plot_app->parsed()) return plot_command(plot_directory);
   if (list_app->parsed()) return list_command();

@@ -1,5 +1,6 @@
 // cbbg run: resolve the config, run the experiment, write the results directory.
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "diagrams/params_from_config.h"
 #include "diagrams/results_writer.h"
 #include "diagrams/task_store.h"
+#include "diagrams/weights_file.h"
 
 namespace cbbg::app {
 namespace {
@@ -82,23 +84,50 @@ void print_summary(const diagrams::ExperimentResults& results) {
 
 }  // namespace
 
+// Learning runs of the experiment: every (arm, seed) except pd_only's.
+long long learning_runs(const config::Config& config) {
+  const std::string& experiment = config.text("experiment");
+  std::vector<std::string> arms{experiment};
+  if (experiment == "exp1") arms = config.names("arms");
+  if (experiment == "exp2") arms = {"cbbg"};
+  const auto learning = std::count_if(arms.begin(), arms.end(),
+                                      [](const std::string& arm) { return arm != "pd_only"; });
+  return learning * config.integer("seeds");
+}
+
 int run_command(const RunOptions& options) {
   config::Config config;
   std::optional<diagrams::RunDirectory> directory;
+  std::optional<diagrams::LearntWeights> initial_weights;
   try {
     if (!options.resume.empty()) {
       if (!options.config_file.empty() || !options.sets.empty() || !options.experiment.empty() ||
-          options.seeds > 0 || options.seed >= 0) {
+          options.seeds > 0 || options.seed >= 0 || !options.load_weights.empty()) {
         throw config::ConfigError(
-            "--resume continues with the config of the interrupted run; drop --config, --set, "
-            "--experiment, --seeds and --seed");
+            "--resume continues with the config and weights of the interrupted run; drop "
+            "--config, --set, --experiment, --seeds, --seed and --load-weights");
       }
       directory = diagrams::RunDirectory::resume(options.resume);
       config = directory->config();
       diagrams::validate_all(config);
     } else {
       config = resolve(options);
+    }
+    if (!options.save_weights.empty() && learning_runs(config) != 1) {
+      throw config::ConfigError(
+          "--save-weights keeps the weights of one learning run; this run has " +
+          std::to_string(learning_runs(config)) +
+          " (use --experiment ARM --seeds 1; every run's weights are in DIR/weights/)");
+    }
+    if (!options.load_weights.empty()) {
+      initial_weights = diagrams::load_weights(options.load_weights);
+      diagrams::check_layout(*initial_weights, config, options.load_weights);
+    }
+    if (!directory) {
       directory = diagrams::RunDirectory::create(options.out, config);
+      if (initial_weights) diagrams::save_weights(directory->initial_weights(), *initial_weights);
+    } else if (std::filesystem::exists(directory->initial_weights())) {
+      initial_weights = diagrams::load_weights(directory->initial_weights());
     }
   } catch (const config::ConfigError& error) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
@@ -112,19 +141,30 @@ int run_command(const RunOptions& options) {
   try {
     const diagrams::TaskStore store(directory->tasks());
     Progress progress(tasks, ::isatty(STDERR_FILENO) == 1);
-    const diagrams::ExperimentResults results = diagrams::run_experiment(
-        config, options.jobs, [&progress](const diagrams::SeedRun& run) { progress.finished(run); },
-        &store);
+    diagrams::ExperimentOptions experiment;
+    experiment.jobs = options.jobs;
+    experiment.progress = [&progress](const diagrams::SeedRun& run) { progress.finished(run); };
+    experiment.store = &store;
+    if (initial_weights) experiment.initial_weights = &*initial_weights;
+    const diagrams::ExperimentResults results = diagrams::run_experiment(config, experiment);
     progress.close();
     diagrams::write_result_files(results, config, directory->work(), &store);
     if (options.figures) draw_figures(directory->work(), config, /*quiet=*/true);
     directory->commit();
     print_summary(results);
+    if (!options.save_weights.empty()) {
+      for (const auto& run : results.runs) {
+        if (run.weights) diagrams::save_weights(options.save_weights, *run.weights);
+      }
+      spdlog::info("weights in {}", options.save_weights.string());
+    }
     spdlog::info("results in {}", directory->target().string());
   } catch (const std::exception& error) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
-    std::cerr << "cbbg: the finished seeds are kept in '" << directory->work().string()
-              << "'; continue with --resume " << directory->target().string() << "\n";
+    if (std::filesystem::exists(directory->work())) {
+      std::cerr << "cbbg: the finished seeds are kept in '" << directory->work().string()
+                << "'; continue with --resume " << directory->target().string() << "\n";
+    }
     return 1;
   }
   return 0;

@@ -6,12 +6,6 @@
 
 namespace cbbg::blocks {
 
-std::string format_number(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
-
 void throw_invalid_parameter(std::string_view key, std::string_view requirement, double value) {
   throw std::invalid_argument(std::string(key) + " " + std::string(requirement) + "; got " +
                               format_number(value));

@@ -6,10 +6,9 @@
 #include <string>
 #include <string_view>
 
-namespace cbbg::blocks {
+#include "framework/number_text.h"
 
-// A number as a message shows it: "0.8", "1.5e-23", "nan", "inf".
-std::string format_number(double value);
+namespace cbbg::blocks {
 
 // Throws "<key> <requirement>; got <value>".
 [[noreturn]] void throw_invalid_parameter(std::string_view key, std::string_view requirement,

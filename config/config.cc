@@ -8,6 +8,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "framework/number_text.h"
+
 namespace cbbg::config {
 namespace {
 
@@ -28,12 +30,6 @@ std::string section_keys(std::string_view section) {
     }
   }
   return keys;
-}
-
-std::string format_number(double value) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
 }
 
 // A node as the user wrote it, on one line, for "got ..." in messages.

@@ -68,7 +68,8 @@ void ControllerDiagram::start_trial(Context& context, double theta0) const {
   if (actor != nullptr) actor->start_trial(context);
 }
 
-ControllerDiagram build_controller_diagram(std::string_view name, const config::Config& config) {
+ControllerDiagram build_controller_diagram(std::string_view name, const config::Config& config,
+                                           const DiagramOptions& options) {
   const Arm arm = parse_arm(name);
   const double period = config.number("trial.period");
   ControllerDiagram result;
@@ -195,8 +196,14 @@ ControllerDiagram build_controller_diagram(std::string_view name, const config::
   auto& wheel_torques = builder.emplace<Multiplexer>(
       "wheel_torques", std::vector<Multiplexer::Input>{{"left", 1}, {"right", 1}});
   builder.connect(*action, hold.input_port("u"));
-  builder.connect(hold.output_port("y"), wheel_torques.input_port("left"));
-  builder.connect(hold.output_port("y"), wheel_torques.input_port("right"));
+  const OutputPort* wheel_torque = &hold.output_port("y");
+  if (options.push) {
+    auto& push = builder.emplace<TorquePush>("push", *options.push, period);
+    builder.connect(*wheel_torque, push.input_port("action"));
+    wheel_torque = &push.output_port("torque");
+  }
+  builder.connect(*wheel_torque, wheel_torques.input_port("left"));
+  builder.connect(*wheel_torque, wheel_torques.input_port("right"));
   builder.connect(wheel_torques.output_port("y"), robot.input_port("torque"));
 
   auto& telemetry = builder.emplace<Multiplexer>(

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -19,6 +20,7 @@
 #include "blocks/sensors.h"
 #include "blocks/tropism.h"
 #include "config/config.h"
+#include "diagrams/torque_push.h"
 #include "framework/diagram.h"
 
 namespace cbbg::diagrams {
@@ -68,8 +70,15 @@ struct ControllerDiagram {
 // ControllerDiagram::actor->mutable_weights.
 inline constexpr const char* kLearntActorDiagram = "learnt_actor";
 
+// Variations of a named diagram that are not config keys.
+struct DiagramOptions {
+  // A TorquePush "push" between the hold and the wheels (cbbg eval --push-*).
+  std::optional<PushParams> push;
+};
+
 // Builds the diagram `name` (one of config::diagram_names(), or kLearntActorDiagram). Throws
 // config::ConfigError for a value a block rejects, std::invalid_argument for an unknown name.
-ControllerDiagram build_controller_diagram(std::string_view name, const config::Config& config);
+ControllerDiagram build_controller_diagram(std::string_view name, const config::Config& config,
+                                           const DiagramOptions& options = {});
 
 }  // namespace cbbg::diagrams

@@ -1,5 +1,6 @@
 #include "diagrams/experiments.h"
 
+#include "diagrams/policy_evaluation.h"
 #include "diagrams/task_store.h"
 
 #include <atomic>
@@ -22,26 +23,30 @@ double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial
   return k1;
 }
 
-// The policy learnt in `learnt` alone (no exploration, no supervisor, frozen) from each
-// evaluation angle, for a whole trial each.
-void evaluate_learnt_actor(const config::Config& config, const blocks::Actor& actor,
-                           const Context& learnt, SeedRun& run) {
-  const ControllerDiagram policy = build_controller_diagram(kLearntActorDiagram, config);
-  TelemetryOptions telemetry;
-  telemetry.keep_in_memory = false;
-  TrialRunner runner(policy, static_cast<std::uint64_t>(run.seed), config.number("trial.period"),
-                     telemetry);
-  policy.actor->mutable_weights(runner.context()) = actor.weights(learnt);
-  for (const double theta0 : config.numbers("evaluation.angles")) {
-    run.evaluation.push_back({theta0, runner.run_trial(theta0, config.number("trial.duration"))});
+// The policy learnt so far alone (no exploration, no supervisor, frozen) from each
+// evaluation angle, as `cbbg eval` runs it with this run's seed.
+void evaluate_learnt_actor(config::Config config, SeedRun& run) {
+  config.set("seed=" + std::to_string(run.seed));
+  EvaluationSettings settings;
+  settings.angles = config.numbers("evaluation.angles");
+  const PolicyEvaluation evaluation = evaluate_policy(config, *run.weights, settings);
+  for (const AngleEvaluation& angle : evaluation.angles) {
+    run.evaluation.push_back({angle.theta0, angle.runs.front()});
   }
 }
 
+WeightsProvenance provenance(const config::Config& config, const SeedRun& run) {
+  return {run.arm, run.seed, static_cast<long long>(run.trials.size()), config.text("plant.kind")};
+}
+
 void run_until_success(const config::Config& config, const TelemetryOptions& telemetry,
-                       SeedRun& run) {
+                       const LearntWeights* initial_weights, SeedRun& run) {
   const ControllerDiagram controller = build_controller_diagram(run.arm, config);
   const double period = config.number("trial.period");
   TrialRunner runner(controller, static_cast<std::uint64_t>(run.seed), period, telemetry);
+  if (initial_weights != nullptr && controller.learns()) {
+    load_learnt_weights(controller, runner.context(), *initial_weights);
+  }
   const long long max_trials = config.integer("max_trials");
   const double k1 = config.number("tropism.k1");
   for (int trial = 1; trial <= max_trials; ++trial) {
@@ -55,11 +60,15 @@ void run_until_success(const config::Config& config, const TelemetryOptions& tel
     }
     ++run.failures_before_success;
   }
-  if (controller.learns()) evaluate_learnt_actor(config, *controller.actor, runner.context(), run);
+  if (controller.learns()) {
+    run.weights = learnt_weights(controller, runner.context(), config, provenance(config, run));
+    evaluate_learnt_actor(config, run);
+  }
 }
 
 // exp2: trial 1 coordinated by the cerebellum, then operant learning alone with annealing.
-void run_annealing(const config::Config& config, const TelemetryOptions& telemetry, SeedRun& run) {
+void run_annealing(const config::Config& config, const TelemetryOptions& telemetry,
+                   const LearntWeights* initial_weights, SeedRun& run) {
   const double period = config.number("trial.period");
   const double theta0 = config.number("trial.theta0");
   const double duration = config.number("trial.duration");
@@ -67,6 +76,9 @@ void run_annealing(const config::Config& config, const TelemetryOptions& telemet
   const ControllerDiagram coordinated = build_controller_diagram("cbbg", config);
   const ControllerDiagram operant = build_controller_diagram("bg_only", config);
   TrialRunner first(coordinated, static_cast<std::uint64_t>(run.seed), period, telemetry);
+  if (initial_weights != nullptr) {
+    load_learnt_weights(coordinated, first.context(), *initial_weights);
+  }
   coordinated.tropism->set_k1(first.context(), annealed_k1(schedule, 1));
   run.trials.push_back({1, annealed_k1(schedule, 1), first.run_trial(theta0, duration, 1)});
 
@@ -86,13 +98,13 @@ void run_annealing(const config::Config& config, const TelemetryOptions& telemet
     }
   }
   if (!run.succeeded) run.failures_before_success = static_cast<int>(run.trials.size());
+  run.weights = learnt_weights(operant, later.context(), config, provenance(config, run));
 }
 
-}  // namespace
-
 // Runs one (arm, seed) task, its steps rows into the store's file or into run.steps_csv.
-void run_task(const config::Config& config, std::size_t task, const TaskStore* store,
+void run_task(const config::Config& config, std::size_t task, const ExperimentOptions& options,
               SeedRun& run) {
+  const TaskStore* store = options.store;
   std::ofstream file;
   std::ostringstream memory;
   TelemetryOptions telemetry{.keep_in_memory = false,
@@ -108,9 +120,9 @@ void run_task(const config::Config& config, std::size_t task, const TaskStore* s
     }
   }
   if (config.text("experiment") == "exp2") {
-    run_annealing(config, telemetry, run);
+    run_annealing(config, telemetry, options.initial_weights, run);
   } else {
-    run_until_success(config, telemetry, run);
+    run_until_success(config, telemetry, options.initial_weights, run);
   }
   if (store == nullptr) {
     run.steps_csv = memory.str();
@@ -122,8 +134,9 @@ void run_task(const config::Config& config, std::size_t task, const TaskStore* s
   store->save(task, run);
 }
 
-ExperimentResults run_experiment(const config::Config& config, int jobs,
-                                 const ProgressCallback& progress, const TaskStore* store) {
+}  // namespace
+
+ExperimentResults run_experiment(const config::Config& config, const ExperimentOptions& options) {
   ExperimentResults results;
   results.experiment = config.text("experiment");
   if (results.experiment == "exp1") {
@@ -153,8 +166,10 @@ ExperimentResults run_experiment(const config::Config& config, int jobs,
     for (std::size_t task = next++; task < results.runs.size(); task = next++) {
       try {
         SeedRun& run = results.runs[task];
-        if (store == nullptr || !store->load(task, run)) run_task(config, task, store, run);
-        if (progress) progress(run);
+        if (options.store == nullptr || !options.store->load(task, run)) {
+          run_task(config, task, options, run);
+        }
+        if (options.progress) options.progress(run);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();
@@ -163,7 +178,7 @@ ExperimentResults run_experiment(const config::Config& config, int jobs,
     }
   };
   std::vector<std::thread> workers;
-  for (int j = 1; j < std::max(jobs, 1); ++j) workers.emplace_back(work);
+  for (int j = 1; j < std::max(options.jobs, 1); ++j) workers.emplace_back(work);
   work();
   for (auto& worker : workers) worker.join();
   if (failure) std::rethrow_exception(failure);

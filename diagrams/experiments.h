@@ -10,11 +10,13 @@
 //   <diagram name>   exp1's protocol for that one arm
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "config/config.h"
 #include "diagrams/trial_runner.h"
+#include "diagrams/weights_file.h"
 
 namespace cbbg::diagrams {
 
@@ -41,6 +43,8 @@ struct SeedRun {
   std::string steps_csv;
   // exp1: the learnt actor evaluated from each of evaluation.angles (empty for pd_only).
   std::vector<EvaluationRecord> evaluation;
+  // The weights learnt by the end of the run (none for pd_only).
+  std::optional<LearntWeights> weights;
 };
 
 struct ExperimentResults {
@@ -58,11 +62,18 @@ using ProgressCallback = std::function<void(const SeedRun&)>;
 
 class TaskStore;
 
-// Runs the experiment the config names with `jobs` threads (>= 1). With a store, each task
-// found finished there is loaded instead of run, each task run is saved there, and its steps
-// rows go to the store's files; without, they go to SeedRun::steps_csv.
-ExperimentResults run_experiment(const config::Config& config, int jobs,
-                                 const ProgressCallback& progress = {},
-                                 const TaskStore* store = nullptr);
+struct ExperimentOptions {
+  int jobs = 1;  // threads (>= 1); the results do not depend on it
+  ProgressCallback progress;
+  // With a store, each task found finished there is loaded instead of run, each task run is
+  // saved there, and its steps rows go to the store's files; without, to SeedRun::steps_csv.
+  const TaskStore* store = nullptr;
+  // Where learning starts (cbbg run --load-weights); zero weights without.
+  const LearntWeights* initial_weights = nullptr;
+};
+
+// Runs the experiment the config names.
+ExperimentResults run_experiment(const config::Config& config,
+                                 const ExperimentOptions& options = {});
 
 }  // namespace cbbg::diagrams

@@ -132,6 +132,12 @@ void write_result_files(const ExperimentResults& results, const config::Config& 
   if (results.experiment != "exp2") {
     write_text(directory / "evaluation.csv", evaluation_csv(results));
   }
+  for (const SeedRun& run : results.runs) {
+    if (run.weights) {
+      save_weights(directory / "weights" / (run.arm + "_seed" + std::to_string(run.seed) + ".txt"),
+                   *run.weights);
+    }
+  }
   if (config.integer("log.decimation") <= 0) return;
   const std::filesystem::path path = directory / "steps.csv";
   std::ofstream steps(path, std::ios::binary | std::ios::trunc);

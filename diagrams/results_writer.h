@@ -14,8 +14,9 @@ namespace cbbg::diagrams {
 
 class TaskStore;
 
-// Writes every data file of `results` into `directory` (which must exist). steps.csv comes
-// from the store's files when one is given, else from each run's steps_csv.
+// Writes every data file of `results` into `directory` (which must exist), and each learning
+// run's weights into weights/<arm>_seed<k>.txt. steps.csv comes from the store's files when
+// one is given, else from each run's steps_csv.
 void write_result_files(const ExperimentResults& results, const config::Config& config,
                         const std::filesystem::path& directory, const TaskStore* store = nullptr);
 
@@ -38,6 +39,8 @@ class RunDirectory {
   const std::filesystem::path& work() const { return work_; }
   const std::filesystem::path& target() const { return target_; }
   std::filesystem::path tasks() const { return work_ / "tasks"; }
+  // Where the weights learning started from are kept (cbbg run --load-weights), for resume.
+  std::filesystem::path initial_weights() const { return work_ / "initial_weights.txt"; }
   const config::Config& config() const { return config_; }
   // Removes the task files and replaces `target` (and whatever was there) with the results.
   void commit();

@@ -133,6 +133,10 @@ std::filesystem::path TaskStore::pending_steps_path(std::size_t task) const {
   return directory_ / (std::to_string(task) + ".steps.csv.pending");
 }
 
+std::filesystem::path TaskStore::weights_path(std::size_t task) const {
+  return directory_ / (std::to_string(task) + ".weights.txt");
+}
+
 std::filesystem::path TaskStore::steps_path(std::size_t task) const {
   return directory_ / (std::to_string(task) + ".steps.csv");
 }
@@ -149,6 +153,8 @@ bool TaskStore::load(std::size_t task, SeedRun& run) const {
                              std::to_string(loaded.seed) + ", expected " + run.arm + " seed " +
                              std::to_string(run.seed));
   }
+  if (std::filesystem::exists(weights_path(task)))
+    loaded.weights = load_weights(weights_path(task));
   run = std::move(loaded);
   return true;
 }
@@ -157,6 +163,7 @@ void TaskStore::save(std::size_t task, const SeedRun& run) const {
   if (std::filesystem::exists(pending_steps_path(task))) {
     std::filesystem::rename(pending_steps_path(task), steps_path(task));
   }
+  if (run.weights) save_weights(weights_path(task), *run.weights);
   const std::filesystem::path temporary = record_path(task).string() + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

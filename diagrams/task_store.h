@@ -1,6 +1,7 @@
 #pragma once
 // Where a run keeps each finished (arm, seed) task, so a killed run can resume: per task a
-// record of its trials (index.run) and its steps.csv rows (index.steps.csv). A task's record
+// record of its trials (index.run), its steps.csv rows (index.steps.csv) and its learnt
+// weights (index.weights.txt). A task's record
 // is written last and atomically (temporary file, then rename), so a record that exists is
 // complete, and so are its rows.
 
@@ -28,6 +29,7 @@ class TaskStore {
 
  private:
   std::filesystem::path record_path(std::size_t task) const;
+  std::filesystem::path weights_path(std::size_t task) const;
 
   std::filesystem::path directory_;
 };

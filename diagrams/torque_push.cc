@@ -22,12 +22,8 @@ TorquePush::TorquePush(std::string name, const PushParams& params, double period
   declare_discrete_state(Vector::Zero(1));
   declare_output_port(
       "torque", 1,
-      [this, &action](const BlockContext& context, VectorRef torque) {
-        const double t = context.time();
-        torque[0] =
-            context.input(action)[0] +
-            (t >= params_.start && t < params_.start + params_.duration ? params_.torque : 0.0) +
-            0.0 * context.discrete_state()[0];
+      [&action](const BlockContext& context, VectorRef torque) {
+        torque[0] = context.input(action)[0] + context.discrete_state()[0];
       },
       {&action}, "a + p, each wheel's torque, N m");
   declare_periodic_update(period, 0.0, [this](BlockContext& context, VectorRef next) {

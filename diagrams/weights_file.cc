@@ -258,6 +258,12 @@ LearntWeights parse(const std::filesystem::path& path, std::string_view text) {
                                format_number(weights.centres[i - 1]));
     }
   }
+  // A bound far above any real grid keeps the weight count an int and the file's size sane.
+  constexpr std::size_t kMaxCentres = 1000;
+  if (weights.centres.size() > kMaxCentres) {
+    reader.fail(centres, "rbf.centres has " + std::to_string(weights.centres.size()) +
+                             " values; at most " + std::to_string(kMaxCentres) + " are allowed");
+  }
   weights.width = positive("rbf.width");
 
   const long long features = reader.keyed_integer("features");

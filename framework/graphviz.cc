@@ -1,5 +1,7 @@
 #include "framework/graphviz.h"
 
+#include "framework/number_text.h"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/stat.h>
@@ -47,18 +49,11 @@ std::string sized(const std::string& name, int size) {
   return name + " [" + std::to_string(size) + "]";
 }
 
-// The shortest text that reads back as the same double.
-std::string number(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  return std::string(buffer, result.ptr);
-}
-
 std::string value_text(const Vector& value) {
-  if (value.size() == 1) return number(value[0]);
+  if (value.size() == 1) return format_number(value[0]);
   std::string text = "[";
   const auto shown = std::min<Eigen::Index>(value.size(), kMaxFixedValuesShown);
-  for (Eigen::Index i = 0; i < shown; ++i) text += (i == 0 ? "" : ", ") + number(value[i]);
+  for (Eigen::Index i = 0; i < shown; ++i) text += (i == 0 ? "" : ", ") + format_number(value[i]);
   if (shown < value.size()) text += ", ... (" + std::to_string(value.size()) + " values)";
   return text + "]";
 }

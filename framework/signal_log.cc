@@ -1,25 +1,13 @@
 #include "framework/signal_log.h"
 
+#include "framework/number_text.h"
+
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
 
 namespace cbbg {
-namespace {
-
-// Writes `value` into `buffer` in shortest round-trip form; returns the end.
-char* format_number(char* begin, char* end, double value) {
-  return std::to_chars(begin, end, value).ptr;
-}
-
-}  // namespace
-
-void append_number(std::string& out, double value) {
-  std::array<char, 32> buffer{};
-  out.append(buffer.data(), format_number(buffer.data(), buffer.data() + buffer.size(), value));
-}
-
 SignalLog::SignalLog(const OutputPort& port, double period, double offset)
     : port_(&port), period_(period), offset_(offset) {
   if (!std::isfinite(period) || period <= 0.0) {
@@ -106,13 +94,13 @@ void SignalLog::record(double time, const double* values) {
   if (stream_.is_open()) {
     // Formatted into a stack buffer: streaming never allocates.
     std::array<char, 32> buffer{};
-    stream_.write(buffer.data(), format_number(buffer.data(), buffer.data() + buffer.size(), time) -
-                                     buffer.data());
+    stream_.write(buffer.data(),
+                  write_number(buffer.data(), buffer.data() + buffer.size(), time) - buffer.data());
     for (int i = 0; i < size(); ++i) {
       stream_.put(',');
       stream_.write(
           buffer.data(),
-          format_number(buffer.data(), buffer.data() + buffer.size(), values[i]) - buffer.data());
+          write_number(buffer.data(), buffer.data() + buffer.size(), values[i]) - buffer.data());
     }
     stream_.put('\n');
   }

@@ -62,7 +62,4 @@ class SignalLog {
   bool keep_in_memory_ = true;
 };
 
-// Appends `value` to `out` in the shortest text that reads back as the same double.
-void append_number(std::string& out, double value);
-
 }  // namespace cbbg

@@ -8,14 +8,10 @@
 #include "framework/simulator.h"
 #include "plant/plant_ports.h"
 
+#include "framework/number_text.h"
+
 namespace cbbg::plant {
 namespace {
-
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 constexpr const char* kStateNames[kStateSize] = {
     "theta_b", "theta_b'", "phi_l", "phi_r", "phi_l'", "phi_r'", "x", "y", "yaw", "yaw rate"};

@@ -5,14 +5,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "framework/number_text.h"
+
 namespace cbbg::plant {
 namespace {
-
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 void require_positive(const char* key, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {

@@ -14,16 +14,10 @@
 #include "plant/plant_state.h"
 #include "plant/robot_dynamics.h"
 
+#include "framework/number_text.h"
+
 namespace cbbg::plant {
-namespace {
-
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 // One context's multibody system and run, and the time and state at which the run last
 // matched the context.

@@ -177,6 +177,39 @@ TEST_F(CbbgCommand, GraphDrawsANamedDiagram) {
   EXPECT_THAT(format.output, HasSubstr("unknown extension '.pdf'"));
 }
 
+TEST_F(CbbgCommand, WeightsSavedByARunLoadIntoEvalAndTheNextRun) {
+  const fs::path weights = scratch_ / "bg.txt";
+  const std::string quick = std::string(kQuick) + " --experiment bg_only --seeds 1";
+  const Outcome saved = cbbg("run " + quick + " --save-weights " + weights.string() + " --out " +
+                             (scratch_ / "first").string());
+  ASSERT_EQ(saved.exit_code, 0) << saved.output;
+  EXPECT_THAT(read_file(weights), ::testing::StartsWith("cbbg-weights 1\n"));
+  EXPECT_EQ(read_file(scratch_ / "first" / "weights" / "bg_only_seed1.txt"), read_file(weights));
+
+  const Outcome eval =
+      cbbg("eval --set plant.kind=analytic --angles 0.05,0.1 --load-weights " + weights.string());
+  EXPECT_EQ(eval.exit_code, 0) << eval.output;
+  EXPECT_THAT(eval.output, HasSubstr("0.05"));
+
+  // Learning from the saved weights succeeds at once where it first needed failures.
+  const Outcome again = cbbg("run " + quick + " --load-weights " + weights.string() + " --out " +
+                             (scratch_ / "second").string());
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_THAT(read_file(scratch_ / "second" / "trials.csv"), HasSubstr("bg_only,1,1,0,2000,"));
+
+  const Outcome many = cbbg("run " + std::string(kQuick) + " --seeds 2 --save-weights " +
+                            weights.string() + " --out " + (scratch_ / "third").string());
+  EXPECT_EQ(many.exit_code, 2);
+  EXPECT_THAT(many.output, HasSubstr("--save-weights keeps the weights of one learning run; this "
+                                     "run has 4"));
+  const Outcome layout = cbbg("run " + quick + " --set rbf.centres=[-1,0,1] --load-weights " +
+                              weights.string() + " --out " + (scratch_ / "fourth").string());
+  EXPECT_EQ(layout.exit_code, 2);
+  EXPECT_THAT(layout.output, HasSubstr("was made for rbf.centres"));
+  EXPECT_FALSE(fs::exists(scratch_ / "third"));
+  EXPECT_FALSE(fs::exists(scratch_ / "fourth"));
+}
+
 // Starts `cbbg` with `arguments` (split on spaces) without waiting; returns its pid.
 pid_t start_cbbg(const std::string& arguments) {
   std::vector<std::string> words{CBBG_BINARY};

@@ -106,7 +106,9 @@ TEST(TrialRunner, ATrialReachingItsDurationSucceeds) {
 TEST(Experiments, Exp1CountsFailuresBeforeTheFirstSuccess) {
   config::Config config = quick_config();
   config.set("arms=[cbbg, bg_only]");
-  const ExperimentResults results = run_experiment(config, 2);
+  ExperimentOptions two_threads;
+  two_threads.jobs = 2;
+  const ExperimentResults results = run_experiment(config, two_threads);
   ASSERT_EQ(results.runs.size(), 4u);
   EXPECT_EQ(results.seeds, (std::vector<long long>{1, 2}));
   for (const SeedRun& run : results.runs) {
@@ -127,7 +129,7 @@ TEST(Experiments, ASeedThatNeverSucceedsCountsAllItsTrials) {
   config.set("seeds=1");
   config.set("max_trials=3");
   config.set("trial.failure_angle=0.1");  // below theta0: every trial fails at once
-  const ExperimentResults results = run_experiment(config, 1);
+  const ExperimentResults results = run_experiment(config);
   ASSERT_EQ(results.runs.size(), 1u);
   EXPECT_FALSE(results.runs[0].succeeded);
   EXPECT_EQ(results.runs[0].failures_before_success, 3);
@@ -141,7 +143,7 @@ TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
   config.set("seeds=1");
   config.set("max_trials=3");
   config.set("critic.beta=1e300");  // the critic's weights overflow within a few ticks
-  const ExperimentResults results = run_experiment(config, 1);
+  const ExperimentResults results = run_experiment(config);
   const auto& trials = results.runs.at(0).trials;
   ASSERT_EQ(trials.size(), 3u);
   for (const TrialRecord& record : trials) {
@@ -160,7 +162,7 @@ TEST(Experiments, Exp2AnnealsK1TrialByTrial) {
   config.set("seeds=1");
   config.set("exp2.trials=12");
   config.set("trial.duration=1");
-  const ExperimentResults results = run_experiment(config, 1);
+  const ExperimentResults results = run_experiment(config);
   ASSERT_EQ(results.runs.size(), 1u);
   const auto& trials = results.runs[0].trials;
   ASSERT_EQ(trials.size(), 12u);

@@ -303,6 +303,10 @@ TEST_F(EvalCommand, BadOptionsExitTwoWithOneLine) {
   bad.angles = {0.05, std::numeric_limits<double>::infinity()};
   EXPECT_EQ(refused(bad), "cbbg: error: --angles: every angle must be a finite number; got inf\n");
   bad = options();
+  bad.out = weights_file_;
+  EXPECT_EQ(refused(bad),
+            "cbbg: error: --out '" + weights_file_.string() + "' is a file, not a directory\n");
+  bad = options();
   bad.push_time = 1.0;
   EXPECT_EQ(refused(bad),
             "cbbg: error: --push-time, --push-torque and --push-duration go together; missing "

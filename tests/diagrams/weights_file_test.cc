@@ -272,6 +272,10 @@ TEST_F(WeightsFile, MalformedLinesAreNamedWithTheirNumber) {
             prefix() + "line 10: rbf.centres must be strictly increasing; got 1 then 0");
   EXPECT_EQ(load_error(with_line(file, 10, "centres -1 0 1")),
             prefix() + "line 10: expected 'rbf.centres <numbers>', got 'centres -1 0 1'");
+  std::string huge_grid = "rbf.centres";
+  for (int i = 0; i <= 1000; ++i) huge_grid.append(" ").append(std::to_string(i));
+  EXPECT_EQ(load_error(with_line(file, 10, huge_grid)),
+            prefix() + "line 10: rbf.centres has 1001 values; at most 1000 are allowed");
   EXPECT_EQ(load_error(with_line(file, 15, "1 2")),
             prefix() + "line 15: expected actor weight [1] alone on its line, got '1 2'");
   // Blank lines and comments are skipped but counted.
