@@ -158,7 +158,15 @@ void validate_all(const config::Config& c) {
   normaliser_params(c);
   rbf_params(c);
   pd_supervisor_params(c);
-  lqr_supervisor_params(c);
+  const blocks::LqrSupervisorParams lqr = lqr_supervisor_params(c);
+  if (c.text("supervisor.kind") == "lqr") {
+    // Weights without a stabilising gain show only when the gain is computed.
+    try {
+      blocks::LqrSupervisor("supervisor", robot_params(c), lqr);
+    } catch (const std::invalid_argument& error) {
+      throw config::ConfigError(error.what());
+    }
+  }
   critic_params(c);
   actor_params(c);
   tropism_params(c);

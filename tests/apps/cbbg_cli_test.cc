@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -88,6 +89,33 @@ TEST_F(CbbgCommand, OutOfRangeAndNonFiniteValuesExitTwo) {
             "cbbg: error: --experiment exp3: experiment must be one of exp1, exp2, cbbg, "
             "cbbg_weighted, bg_only, cb_only, pd_only; got 'exp3'\n");
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(CbbgCommand, EveryKindOfBadValueExitsTwoWithItsMessageAndWritesNothing) {
+  const fs::path out = scratch_ / "results";
+  const std::pair<const char*, const char*> cases[] = {
+      {"--set trial.period=0", "trial.period must be > 0; got 0"},
+      {"--set plant.body_mass=-1", "plant.body_mass must be > 0; got -1"},
+      {"--set rbf.width=-0.5", "rbf.width must be > 0; got -0.5"},
+      {"--set critic.lambda=1", "critic.lambda must be in [0, 1); got 1"},
+      {"--set seed=-4", "seed must be an integer >= 0; got -4"},
+      {"--set max_trials=2.5", "max_trials must be an integer; got '2.5'"},
+      {"--set 'annealing=[{from_trial: 1, k1: 10}, {from_trial: 1, k1: 5}]'",
+       "annealing must list trials in increasing order"},
+      {"--set sampler.k_b=.inf", "sampler.k_b must be a finite number; got '.inf'"},
+      {"--set actor.rule=best", "actor.rule must be one of improved, weighted; got 'best'"},
+      {"--set supervisor.kind=lqr --set supervisor.lqr_q=[1,0,1,1]",
+       "give no stabilising LQR gain"},
+      {"--set trial=3", "trial is a section: give a map of its keys"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    const Outcome outcome = cbbg(std::string("run ") + arguments + " --out " + out.string());
+    EXPECT_EQ(outcome.exit_code, 2) << arguments;
+    EXPECT_THAT(outcome.output, HasSubstr(message)) << arguments;
+    EXPECT_EQ(std::count(outcome.output.begin(), outcome.output.end(), '\n'), 1) << arguments;
+    EXPECT_FALSE(fs::exists(out)) << arguments;
+    EXPECT_FALSE(fs::exists(scratch_ / "results.partial")) << arguments;
+  }
 }
 
 TEST_F(CbbgCommand, ABadConfigFileExitsTwoNamingTheFile) {
