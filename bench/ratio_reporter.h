@@ -47,4 +47,16 @@ class RatioReporter : public benchmark::ConsoleReporter {
   std::vector<std::string> order_;
 };
 
+// The main() of a cbbg benchmark: runs the benchmarks the command line selects and prints
+// each one's ratio to the baseline `baseline_of` names.
+inline int run_benchmarks_with_ratios(int argc, char** argv,
+                                      std::function<std::string(const std::string&)> baseline_of) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  RatioReporter reporter(std::move(baseline_of));
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}
+
 }  // namespace cbbg::bench

@@ -8,8 +8,7 @@
 
 namespace cbbg {
 
-std::string InputPort::path() const { return block_->path() + "." + name_; }
-std::string OutputPort::path() const { return block_->path() + "." + name_; }
+std::string Port::path() const { return block_->path() + "." + name_; }
 
 Block::Block(std::string name) : name_(std::move(name)) {
   check_name("block", name_, "block name");

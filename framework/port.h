@@ -7,16 +7,9 @@ namespace cbbg {
 
 class Block;
 
-// An input port: a named vector of fixed size that a block reads.
-class InputPort {
+// What every port has: its block, its index there, a name, a size and a description.
+class Port {
  public:
-  InputPort(const Block& block, int index, std::string name, int size, std::string description)
-      : block_(&block),
-        index_(index),
-        name_(std::move(name)),
-        size_(size),
-        description_(std::move(description)) {}
-
   const Block& block() const { return *block_; }
   int index() const { return index_; }
   const std::string& name() const { return name_; }
@@ -24,6 +17,14 @@ class InputPort {
   const std::string& description() const { return description_; }
   // "diagram/block.port": how every error message names this port.
   std::string path() const;
+
+ protected:
+  Port(const Block& block, int index, std::string name, int size, std::string description)
+      : block_(&block),
+        index_(index),
+        name_(std::move(name)),
+        size_(size),
+        description_(std::move(description)) {}
 
  private:
   const Block* block_;
@@ -33,29 +34,19 @@ class InputPort {
   std::string description_;
 };
 
-// An output port: a named vector of fixed size that a block computes from the context.
-class OutputPort {
+// An input port: a vector the block reads. Distinct types keep inputs and outputs apart in
+// connect(source, destination).
+class InputPort final : public Port {
+ public:
+  InputPort(const Block& block, int index, std::string name, int size, std::string description)
+      : Port(block, index, std::move(name), size, std::move(description)) {}
+};
+
+// An output port: a vector the block computes from the context.
+class OutputPort final : public Port {
  public:
   OutputPort(const Block& block, int index, std::string name, int size, std::string description)
-      : block_(&block),
-        index_(index),
-        name_(std::move(name)),
-        size_(size),
-        description_(std::move(description)) {}
-
-  const Block& block() const { return *block_; }
-  int index() const { return index_; }
-  const std::string& name() const { return name_; }
-  int size() const { return size_; }
-  const std::string& description() const { return description_; }
-  std::string path() const;
-
- private:
-  const Block* block_;
-  int index_;
-  std::string name_;
-  int size_;
-  std::string description_;
+      : Port(block, index, std::move(name), size, std::move(description)) {}
 };
 
 }  // namespace cbbg

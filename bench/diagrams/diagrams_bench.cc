@@ -74,12 +74,7 @@ BENCHMARK(BM_PlainLoopTrial)->Unit(benchmark::kMillisecond);
 }  // namespace cbbg::bench
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  cbbg::bench::RatioReporter reporter([](const std::string& name) -> std::string {
-    return name == "BM_DiagramTrial" ? "BM_PlainLoopTrial" : "";
+  return cbbg::bench::run_benchmarks_with_ratios(argc, argv, [](const std::string& name) {
+    return name == "BM_DiagramTrial" ? std::string("BM_PlainLoopTrial") : std::string();
   });
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  return 0;
 }

@@ -73,13 +73,9 @@ BENCHMARK(BM_PlainLoop)->Arg(1)->Arg(10)->Arg(100);
 }  // namespace cbbg::bench
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  cbbg::bench::RatioReporter reporter([](const std::string& name) -> std::string {
+  return cbbg::bench::run_benchmarks_with_ratios(argc, argv, [](const std::string& name) {
     const std::string prefix = "BM_Diagram/";
-    return name.rfind(prefix, 0) == 0 ? "BM_PlainLoop/" + name.substr(prefix.size()) : "";
+    return name.rfind(prefix, 0) == 0 ? "BM_PlainLoop/" + name.substr(prefix.size())
+                                      : std::string();
   });
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  return 0;
 }

@@ -206,12 +206,7 @@ BENCHMARK(BM_SimbodyNewContextAndFirstStep)->Unit(benchmark::kMicrosecond);
 }  // namespace cbbg::plant::bench
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  cbbg::bench::RatioReporter reporter([](const std::string& name) -> std::string {
-    return name == "BM_SimbodyPlantStep" ? "BM_SimbodyPlainLoop" : "";
+  return cbbg::bench::run_benchmarks_with_ratios(argc, argv, [](const std::string& name) {
+    return name == "BM_SimbodyPlantStep" ? std::string("BM_SimbodyPlainLoop") : std::string();
   });
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  return 0;
 }
