@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -18,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "config/config.h"
+#include "tests/support/scratch_directory.h"
 
 namespace {
 
@@ -51,13 +53,10 @@ std::string read_file(const fs::path& path) {
 class CbbgCommand : public ::testing::Test {
  protected:
   void SetUp() override {
-    scratch_ = fs::temp_directory_path() /
-               ("cbbg_cli_" +
-                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(scratch_);
-    fs::create_directories(scratch_);
+    scratch_directory_.emplace();
+    scratch_ = scratch_directory_->path();
   }
-  void TearDown() override { fs::remove_all(scratch_); }
+  std::optional<cbbg::testing::ScratchDirectory> scratch_directory_;
   fs::path scratch_;
 };
 

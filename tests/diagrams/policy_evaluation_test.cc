@@ -1,4 +1,5 @@
 #include "diagrams/policy_evaluation.h"
+#include "tests/support/scratch_directory.h"
 
 #include <bit>
 #include <cmath>
@@ -6,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -230,15 +232,11 @@ TEST(PolicyEvaluation, RefusesWeightsOfAnotherGrid) {
 class EvalCommand : public ::testing::Test {
  protected:
   void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("cbbg_eval_" +
-                  std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
+    scratch_directory_.emplace();
+    directory_ = scratch_directory_->path();
     weights_file_ = directory_ / "w.txt";
     save_weights(weights_file_, bg_only_weights());
   }
-  void TearDown() override { fs::remove_all(directory_); }
 
   app::EvalOptions options() const {
     app::EvalOptions result;
@@ -268,6 +266,7 @@ class EvalCommand : public ::testing::Test {
     return outcome.err;
   }
 
+  std::optional<cbbg::testing::ScratchDirectory> scratch_directory_;
   fs::path directory_;
   fs::path weights_file_;
 };

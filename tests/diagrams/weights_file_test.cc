@@ -1,4 +1,5 @@
 #include "diagrams/weights_file.h"
+#include "tests/support/scratch_directory.h"
 
 #include <bit>
 #include <cmath>
@@ -6,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -24,13 +26,9 @@ namespace fs = std::filesystem;
 class WeightsFile : public ::testing::Test {
  protected:
   void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("cbbg_weights_" +
-                  std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
+    scratch_directory_.emplace();
+    directory_ = scratch_directory_->path();
   }
-  void TearDown() override { fs::remove_all(directory_); }
 
   fs::path write(const std::string& name, const std::string& text) const {
     const fs::path path = directory_ / name;
@@ -51,6 +49,7 @@ class WeightsFile : public ::testing::Test {
 
   std::string prefix() const { return "weights file '" + (directory_ / "w.txt").string() + "' "; }
 
+  std::optional<cbbg::testing::ScratchDirectory> scratch_directory_;
   fs::path directory_;
 };
 

@@ -20,6 +20,7 @@
 #include "framework/primitives/gain.h"
 #include "framework/primitives/zero_order_hold.h"
 #include "tests/framework/test_blocks.h"
+#include "tests/support/scratch_directory.h"
 
 namespace cbbg {
 namespace {
@@ -120,27 +121,7 @@ std::vector<std::string> files_in(const fs::path& directory) {
   return names;
 }
 
-// A fresh empty directory, removed with everything in it at the end of the test.
-class ScratchDirectory {
- public:
-  ScratchDirectory() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("cbbg_graphviz_test_" + std::to_string(::getpid()) + "_" + test->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  ScratchDirectory(const ScratchDirectory&) = delete;
-  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using cbbg::testing::ScratchDirectory;
 
 // Sets PATH for the scope of the object, restoring the previous value after.
 class PathOverride {

@@ -10,6 +10,7 @@
 #include "framework/primitives/constant_source.h"
 #include "framework/simulator.h"
 #include "tests/framework/test_blocks.h"
+#include "tests/support/scratch_directory.h"
 
 namespace cbbg {
 namespace {
@@ -49,7 +50,8 @@ TEST(SignalLog, StreamsTheSameBytesWithoutKeepingSamples) {
   DiagramBuilder builder("top");
   auto& decay = builder.emplace<testing::Exponential>("decay", -1.0, 1.0);
   auto diagram = builder.build();
-  const auto path = std::filesystem::temp_directory_path() / "cbbg_signal_log_test.csv";
+  const testing::ScratchDirectory scratch;
+  const auto path = scratch.path() / "steps.csv";
 
   Simulator in_memory(*diagram);
   SignalLog& kept = in_memory.add_log(decay.output_port("y"), 0.01);
@@ -66,7 +68,6 @@ TEST(SignalLog, StreamsTheSameBytesWithoutKeepingSamples) {
   }                                        // the log's file closes with its simulator
   EXPECT_EQ(kept.num_samples(), 100);
   EXPECT_EQ(read_file(path), expected.str());
-  std::filesystem::remove(path);
 }
 
 TEST(SignalLog, RejectsBadPeriodsAndPortsOfOtherDiagrams) {
