@@ -175,9 +175,9 @@ class Parser {
              shown(entry));
       }
       for (const auto& field : entry) {
-        const std::string name = field.first.as<std::string>();
-        if (name != "from_trial" && name != "k1") {
-          fail(label + " has an unknown key '" + name + "'; allowed: from_trial, k1");
+        const YAML::Node& name = field.first;
+        if (!name.IsScalar() || (name.Scalar() != "from_trial" && name.Scalar() != "k1")) {
+          fail(label + " has an unknown key " + shown(name) + "; allowed: from_trial, k1");
         }
       }
       if (!entry["from_trial"] || !entry["k1"]) fail(label + " needs both from_trial and k1");

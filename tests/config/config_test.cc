@@ -122,6 +122,11 @@ TEST(Config, ChecksListsAndTheAnnealingSchedule) {
             "my.yaml: annealing[0].k1 must be > 0; got -1");
   EXPECT_EQ(error_of_yaml("annealing: [{from_trial: 1, k1: 1, T: 2}]"),
             "my.yaml: annealing[0] has an unknown key 'T'; allowed: from_trial, k1");
+  // Found by the fuzzer: a key that is not a plain name once escaped as a yaml-cpp exception.
+  EXPECT_EQ(error_of_yaml("annealing: [{[1]: 2}]"),
+            "my.yaml: annealing[0] has an unknown key [1]; allowed: from_trial, k1");
+  EXPECT_EQ(error_of_yaml("annealing: [{? : 1}]"),
+            "my.yaml: annealing[0] has an unknown key {~: 1}; allowed: from_trial, k1");
 }
 
 TEST(Config, ReportsMalformedYamlWithItsPlace) {
