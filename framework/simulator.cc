@@ -20,6 +20,16 @@ bool same_instant(double a, double b) {
   return std::abs(a - b) <= kSimultaneous * std::max(1.0, std::abs(b));
 }
 
+// The first k with offset + k period at or after `now` (an instant simultaneous with now
+// counts as now).
+long long first_event_index(double period, double offset, double now) {
+  const double k = std::ceil((now - offset) / period);
+  long long next = std::max(0LL, static_cast<long long>(k));
+  // Step back where rounding skipped an instant that is simultaneous with now.
+  if (next > 0 && same_instant(offset + static_cast<double>(next - 1) * period, now)) --next;
+  return next;
+}
+
 }  // namespace
 
 // The error-controlled Dormand–Prince 5(4) stepper of Boost.Odeint over the
@@ -60,7 +70,12 @@ Simulator::~Simulator() = default;
 SignalLog& Simulator::add_log(const OutputPort& port, double period, double offset) {
   diagram_->resolve_output(port);  // throws unless the port is in this diagram
   SignalLog& log = logs_.emplace_back(port, period, offset);
-  initialized_ = false;  // the schedule gains an event
+  if (initialized_) {
+    // Joins a running schedule: only the new log's samples are added, nothing fires again.
+    events_.push_back({-1, static_cast<int>(logs_.size()) - 1, period, offset,
+                       first_event_index(period, offset, context_->time())});
+    due_updates_.reserve(events_.size());
+  }
   return log;
 }
 
@@ -80,11 +95,7 @@ void Simulator::schedule_events() {
   events_.clear();
   const double now = context_->time();
   auto first_index = [now](double period, double offset) {
-    const double k = std::ceil((now - offset) / period);
-    long long next = std::max(0LL, static_cast<long long>(k));
-    // Step back where rounding skipped an instant that is simultaneous with now.
-    if (next > 0 && same_instant(offset + static_cast<double>(next - 1) * period, now)) --next;
-    return next;
+    return first_event_index(period, offset, now);
   };
   for (const auto& leaf : diagram_->leaves()) {
     const auto& updates = leaf.block->periodic_updates();

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "framework/block_context.h"
 #include "framework/diagram_builder.h"
 #include "framework/primitives/constant_source.h"
 #include "framework/simulator.h"
@@ -68,6 +69,34 @@ TEST(SignalLog, StreamsTheSameBytesWithoutKeepingSamples) {
   }                                        // the log's file closes with its simulator
   EXPECT_EQ(kept.num_samples(), 100);
   EXPECT_EQ(read_file(path), expected.str());
+}
+
+// Counts its initialisation updates in its state.
+class InitialisationCounter final : public Block {
+ public:
+  InitialisationCounter() : Block("initialised") {
+    declare_discrete_state(Vector::Zero(1));
+    declare_initialization_update([](BlockContext&, VectorRef next) {
+      next[0] += 1.0;
+      return EventStatus::succeeded();
+    });
+  }
+};
+
+TEST(SignalLog, ALogAddedMidRunRecordsFromThenOnWithoutRefiringUpdates) {
+  DiagramBuilder builder("top");
+  auto& counter = builder.emplace<testing::Counter>("counter", 0.1);
+  auto& initialised = builder.add(std::make_unique<InitialisationCounter>());
+  auto diagram = builder.build();
+  Simulator simulator(*diagram);
+  simulator.advance_to(0.25);  // instants 0, 0.1, 0.2
+  SignalLog& log = simulator.add_log(counter.output_port("y"), 0.1);
+  simulator.advance_to(0.45);  // instants 0.3, 0.4
+  EXPECT_EQ(simulator.context().discrete_state(counter)[0], 5.0);
+  EXPECT_EQ(simulator.context().discrete_state(initialised)[0], 1.0);  // not initialised again
+  ASSERT_EQ(log.num_samples(), 2);
+  EXPECT_DOUBLE_EQ(log.times()[0], 0.3);
+  EXPECT_EQ(log.values(), Eigen::RowVector2d(3.0, 4.0));
 }
 
 TEST(SignalLog, RejectsBadPeriodsAndPortsOfOtherDiagrams) {
