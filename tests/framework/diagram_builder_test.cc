@@ -7,23 +7,14 @@
 #include "framework/primitives/gain.h"
 #include "framework/primitives/zero_order_hold.h"
 #include "tests/framework/test_blocks.h"
+#include "tests/support/error_of.h"
 
 namespace cbbg {
 namespace {
 
 using ::testing::HasSubstr;
 
-// Runs `action`, which must throw E, and returns the message.
-template <typename E = std::invalid_argument, typename F>
-std::string error_of(F&& action) {
-  try {
-    action();
-  } catch (const E& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no exception";
-  return "";
-}
+using testing::error_of;
 
 TEST(DiagramBuilder, ConnectRejectsSizeMismatchNamingBothPortsAndSizes) {
   DiagramBuilder builder("top");

@@ -20,6 +20,7 @@
 #include "framework/primitives/gain.h"
 #include "framework/primitives/zero_order_hold.h"
 #include "tests/framework/test_blocks.h"
+#include "tests/support/error_of.h"
 #include "tests/support/scratch_directory.h"
 
 namespace cbbg {
@@ -144,16 +145,7 @@ class PathOverride {
   std::optional<std::string> previous_;
 };
 
-template <typename E, typename F>
-std::string error_of(F&& action) {
-  try {
-    action();
-  } catch (const E& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no exception";
-  return "";
-}
+using cbbg::testing::error_of;
 
 TEST(Graphviz, DrawsEachLeafAsATableWithNameInputsLeftAndOutputsRight) {
   const std::string dot = to_dot(*flat_diagram());
