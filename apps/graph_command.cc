@@ -4,6 +4,7 @@
 
 #include "apps/commands.h"
 #include "diagrams/controller_diagram.h"
+#include "diagrams/experiments.h"
 #include "diagrams/params_from_config.h"
 #include "framework/graphviz.h"
 
@@ -18,10 +19,7 @@ int graph_command(const GraphOptions& options) {
     if (!diagram.empty()) config.set("experiment=" + diagram, "--diagram " + diagram);
     diagrams::validate_all(config);
     if (diagram.empty()) {
-      const std::string& experiment = config.text("experiment");
-      diagram = experiment == "exp1"   ? config.names("arms").front()
-                : experiment == "exp2" ? std::string("cbbg")
-                                       : experiment;
+      diagram = diagrams::experiment_arms(config).front();
     }
     if (diagram == "exp1" || diagram == "exp2") {
       throw config::ConfigError("--diagram " + diagram +

@@ -10,6 +10,7 @@
 #include "apps/commands.h"
 #include "apps/figures.h"
 #include "diagrams/controller_diagram.h"
+#include "diagrams/experiments.h"
 #include "framework/graphviz.h"
 
 namespace cbbg::app {
@@ -40,10 +41,7 @@ bool draw_figures(const std::filesystem::path& directory, const config::Config& 
   bool complete = run_plot_script(directory, quiet) == 0;
   if (!complete) spdlog::warn("the plots could not be drawn (see the message above)");
   std::filesystem::create_directories(directory / "figures");
-  const std::string experiment = config.text("experiment");
-  const std::string arm = experiment == "exp1"   ? config.names("arms").front()
-                          : experiment == "exp2" ? std::string("cbbg")
-                                                 : experiment;
+  const std::string arm = diagrams::experiment_arms(config).front();
   try {
     const auto controller = diagrams::build_controller_diagram(arm, config);
     render_dot(to_dot(*controller.diagram), directory / "figures" / "diagram.svg");

@@ -73,10 +73,7 @@ void print_summary(const diagrams::ExperimentResults& results) {
       low = std::min(low, run.failures_before_success);
       high = std::max(high, run.failures_before_success);
     }
-    std::sort(failures.begin(), failures.end());
-    const std::size_t n = failures.size();
-    const double median =
-        n % 2 == 1 ? failures[n / 2] : 0.5 * (failures[n / 2 - 1] + failures[n / 2]);
+    const double median = diagrams::median(failures);
     std::printf("%-14s %8zu %10d %8.1f [%d, %d]  (failures before the first success)\n",
                 results.arms[a].c_str(), results.seeds.size(), succeeded, median, low, high);
   }
@@ -86,10 +83,7 @@ void print_summary(const diagrams::ExperimentResults& results) {
 
 // Learning runs of the experiment: every (arm, seed) except pd_only's.
 long long learning_runs(const config::Config& config) {
-  const std::string& experiment = config.text("experiment");
-  std::vector<std::string> arms{experiment};
-  if (experiment == "exp1") arms = config.names("arms");
-  if (experiment == "exp2") arms = {"cbbg"};
+  const std::vector<std::string> arms = diagrams::experiment_arms(config);
   const auto learning = std::count_if(arms.begin(), arms.end(),
                                       [](const std::string& arm) { return arm != "pd_only"; });
   return learning * config.integer("seeds");
@@ -133,7 +127,7 @@ int run_command(const RunOptions& options) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
     return 2;
   }
-  const std::size_t arms = config.text("experiment") == "exp1" ? config.names("arms").size() : 1;
+  const std::size_t arms = diagrams::experiment_arms(config).size();
   const std::size_t tasks = arms * static_cast<std::size_t>(config.integer("seeds"));
   spdlog::info("{}: {} seed(s) x {} arm(s) on the {} plant, {} thread(s){}",
                config.text("experiment"), config.integer("seeds"), arms, config.text("plant.kind"),

@@ -136,16 +136,17 @@ void run_task(const config::Config& config, std::size_t task, const ExperimentOp
 
 }  // namespace
 
+std::vector<std::string> experiment_arms(const config::Config& config) {
+  const std::string& experiment = config.text("experiment");
+  if (experiment == "exp1") return config.names("arms");
+  if (experiment == "exp2") return {"cbbg"};
+  return {experiment};
+}
+
 ExperimentResults run_experiment(const config::Config& config, const ExperimentOptions& options) {
   ExperimentResults results;
   results.experiment = config.text("experiment");
-  if (results.experiment == "exp1") {
-    results.arms = config.names("arms");
-  } else if (results.experiment == "exp2") {
-    results.arms = {"cbbg"};
-  } else {
-    results.arms = {results.experiment};
-  }
+  results.arms = experiment_arms(config);
   for (long long k = 0; k < config.integer("seeds"); ++k) {
     results.seeds.push_back(config.integer("seed") + k);
   }

@@ -60,6 +60,9 @@ struct ExperimentResults {
 // Called after each finished (arm, seed), from the worker thread that ran it.
 using ProgressCallback = std::function<void(const SeedRun&)>;
 
+// The arms the config's experiment runs: exp1's `arms`, exp2's cbbg, or the one diagram.
+std::vector<std::string> experiment_arms(const config::Config& config);
+
 class TaskStore;
 
 struct ExperimentOptions {

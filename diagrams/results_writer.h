@@ -20,6 +20,9 @@ class TaskStore;
 void write_result_files(const ExperimentResults& results, const config::Config& config,
                         const std::filesystem::path& directory, const TaskStore* store = nullptr);
 
+// The median of per-seed counts (the mean of the middle two for an even count).
+double median(std::vector<int> values);
+
 std::string summary_json(const ExperimentResults& results, const config::Config& config);
 std::string trials_csv(const ExperimentResults& results);
 std::string evaluation_csv(const ExperimentResults& results);

@@ -68,8 +68,9 @@ Simulator::Simulator(const Diagram& diagram, std::unique_ptr<Context> context,
 Simulator::~Simulator() = default;
 
 SignalLog& Simulator::add_log(const OutputPort& port, double period, double offset) {
-  diagram_->resolve_output(port);  // throws unless the port is in this diagram
+  const int signal_offset = diagram_->signal_offset(port);  // throws unless in this diagram
   SignalLog& log = logs_.emplace_back(port, period, offset);
+  log_offsets_.push_back(signal_offset);
   if (initialized_) {
     // Joins a running schedule: only the new log's samples are added, nothing fires again.
     events_.push_back({-1, static_cast<int>(logs_.size()) - 1, period, offset,
@@ -187,7 +188,7 @@ SimulationStatus Simulator::handle_events(double time) {
     ++event.next;
     if (event.leaf < 0) {
       SignalLog& log = logs_[static_cast<size_t>(event.update)];
-      log.record(time, context.signals().data() + diagram_->signal_offset(log.port()));
+      log.record(time, context.signals().data() + log_offsets_[static_cast<size_t>(event.update)]);
     } else {
       const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(event.leaf)];
       due_updates_.emplace_back(

@@ -111,6 +111,7 @@ class Simulator {
   std::unique_ptr<Context> context_;
   SimulatorOptions options_;
   std::deque<SignalLog> logs_;
+  std::vector<int> log_offsets_;  // each log's port in the signals, resolved once
   std::vector<ScheduledEvent> events_;
   std::vector<std::pair<int, const UpdateFunction*>> due_updates_;  // reused every instant
   std::unique_ptr<Integrator> integrator_;
