@@ -29,6 +29,7 @@ struct GraphOptions {
   std::vector<std::string> sets;
   std::filesystem::path output;
   int max_depth = -1;
+  bool show_telemetry = false;
 };
 int graph_command(const GraphOptions& options);
 

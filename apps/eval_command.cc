@@ -13,8 +13,9 @@
 
 #include "config/config.h"
 #include "diagrams/params_from_config.h"
-#include "diagrams/policy_evaluation.h"
-#include "diagrams/weights_file.h"
+#include "diagrams/presets.h"
+#include "experiments/policy_evaluation.h"
+#include "results/weights_file.h"
 
 namespace cbbg::app {
 namespace {
@@ -26,7 +27,7 @@ std::string format_number(double value) {
 }
 
 // The push of --push-time, --push-torque and --push-duration: all three or none.
-std::optional<diagrams::PushParams> push_from(const EvalOptions& options) {
+std::optional<blocks::PushParams> push_from(const EvalOptions& options) {
   const int given =
       (options.push_time ? 1 : 0) + (options.push_torque ? 1 : 0) + (options.push_duration ? 1 : 0);
   if (given == 0) return std::nullopt;
@@ -50,7 +51,7 @@ std::optional<diagrams::PushParams> push_from(const EvalOptions& options) {
   require("--push-time", *options.push_time, *options.push_time >= 0.0, ">= 0 (s)");
   require("--push-torque", *options.push_torque, true, "(N m)");
   require("--push-duration", *options.push_duration, *options.push_duration > 0.0, "> 0 (s)");
-  return diagrams::PushParams{*options.push_time, *options.push_torque, *options.push_duration};
+  return blocks::PushParams{*options.push_time, *options.push_torque, *options.push_duration};
 }
 
 // The config of the file, the overrides and --angles, validated.
@@ -76,16 +77,16 @@ config::Config resolve(const EvalOptions& options) {
   return config;
 }
 
-std::string evaluation_csv(const diagrams::PolicyEvaluation& evaluation) {
+std::string evaluation_csv(const experiments::PolicyEvaluation& evaluation) {
   std::string csv = "theta0,seed,balanced,steps,final_theta,status\n";
   for (const auto& angle : evaluation.angles) {
     for (std::size_t r = 0; r < angle.runs.size(); ++r) {
-      const diagrams::TrialOutcome& run = angle.runs[r];
+      const experiments::TrialOutcome& run = angle.runs[r];
       csv += format_number(angle.theta0) + "," +
              std::to_string(evaluation.first_seed + static_cast<long long>(r)) + "," +
-             (run.status == diagrams::TrialStatus::kSuccess ? "1" : "0") + "," +
+             (run.status == experiments::TrialStatus::kSuccess ? "1" : "0") + "," +
              std::to_string(run.steps) + "," + format_number(run.final_theta) + "," +
-             diagrams::to_string(run.status) + "\n";
+             experiments::to_string(run.status) + "\n";
     }
   }
   return csv;
@@ -110,9 +111,9 @@ void write_atomically(const std::filesystem::path& directory, const std::string&
   std::filesystem::rename(temporary, target);
 }
 
-void print_table(const diagrams::PolicyEvaluation& evaluation, const config::Config& config,
-                 const diagrams::LearntWeights& weights, const EvalOptions& options) {
-  const diagrams::WeightsProvenance& from = weights.provenance;
+void print_table(const experiments::PolicyEvaluation& evaluation, const config::Config& config,
+                 const experiments::LearntWeights& weights, const EvalOptions& options) {
+  const experiments::WeightsProvenance& from = weights.provenance;
   std::printf("weights %s: %s, seed %lld, %lld trial(s) on the %s plant\n",
               options.weights_file.string().c_str(), from.arm.c_str(), from.seed, from.trials,
               from.plant.c_str());
@@ -135,8 +136,9 @@ void print_table(const diagrams::PolicyEvaluation& evaluation, const config::Con
 
 int eval_command(const EvalOptions& options) {
   config::Config config;
-  diagrams::LearntWeights weights;
-  diagrams::EvaluationSettings settings;
+  experiments::LearntWeights weights;
+  experiments::EvaluationSettings settings;
+  diagrams::ClosedLoopOptions loop;
   try {
     if (options.weights_file.empty()) throw config::ConfigError("--load-weights FILE is required");
     if (options.repeats < 1) {
@@ -146,10 +148,10 @@ int eval_command(const EvalOptions& options) {
         !std::filesystem::is_directory(options.out)) {
       throw config::ConfigError("--out '" + options.out.string() + "' is a file, not a directory");
     }
-    settings.push = push_from(options);
+    loop.push = push_from(options);
     config = resolve(options);
-    weights = diagrams::load_weights(options.weights_file);
-    diagrams::check_layout(weights, config, options.weights_file);
+    weights = results::load_weights(options.weights_file);
+    results::check_layout(weights, config, options.weights_file);
     settings.angles = config.numbers("evaluation.angles");
     settings.repeats = options.repeats;
   } catch (const config::ConfigError& error) {
@@ -157,8 +159,11 @@ int eval_command(const EvalOptions& options) {
     return 2;
   }
   try {
-    const diagrams::PolicyEvaluation evaluation =
-        diagrams::evaluate_policy(config, weights, settings);
+    const experiments::PolicyEvaluation evaluation = experiments::evaluate_policy(
+        config,
+        diagrams::closed_loop_factory(diagrams::kLearntActor,
+                                      diagrams::preset(diagrams::kLearntActor).options, loop),
+        weights, settings);
     if (!options.out.empty()) {
       write_atomically(options.out, "evaluation.csv", evaluation_csv(evaluation));
     }

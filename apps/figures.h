@@ -1,10 +1,13 @@
 #pragma once
-// The figures of a results directory: the plots (scripts/plot_results.py, matplotlib) and
-// the block diagram of each arm.
+// The figures of a results directory: the plots (plot_results.py, matplotlib) and the block
+// diagram of its first arm.
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "config/config.h"
+#include "framework/graphviz.h"
 
 namespace cbbg::app {
 
@@ -15,5 +18,13 @@ bool draw_figures(const std::filesystem::path& directory, const config::Config& 
 
 // Runs the plotting script on DIR; returns its exit code.
 int run_plot_script(const std::filesystem::path& directory, bool quiet);
+
+// Renders the closed loop of preset `name` for `config` to `output` (.dot, .svg or .png).
+void draw_diagram(const std::string& name, const config::Config& config,
+                  const std::filesystem::path& output, const GraphvizOptions& options);
+
+// The telemetry multiplexer of the closed loop named `name`: left out of pictures by
+// default, since it reads every signal.
+std::vector<std::string> telemetry_blocks(const std::string& name);
 
 }  // namespace cbbg::app

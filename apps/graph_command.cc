@@ -1,12 +1,12 @@
-// cbbg graph: the block diagram of a named diagram, or of a config's first arm.
+// cbbg graph: the block diagram of a preset, or of a config's first arm.
 
 #include <iostream>
 
 #include "apps/commands.h"
-#include "diagrams/controller_diagram.h"
-#include "diagrams/experiments.h"
+#include "apps/figures.h"
 #include "diagrams/params_from_config.h"
-#include "framework/graphviz.h"
+#include "diagrams/presets.h"
+#include "experiments/experiments.h"
 
 namespace cbbg::app {
 
@@ -16,24 +16,22 @@ int graph_command(const GraphOptions& options) {
   try {
     if (!options.config_file.empty()) config.merge_file(options.config_file);
     for (const auto& assignment : options.sets) config.set(assignment);
-    if (!diagram.empty()) config.set("experiment=" + diagram, "--diagram " + diagram);
     diagrams::validate_all(config);
-    if (diagram.empty()) {
-      diagram = diagrams::experiment_arms(config).front();
-    }
-    if (diagram == "exp1" || diagram == "exp2") {
-      throw config::ConfigError("--diagram " + diagram +
-                                ": an experiment, not a diagram; the diagrams are cbbg, "
-                                "cbbg_weighted, bg_only, cb_only, pd_only");
-    }
+    if (diagram.empty()) diagram = experiments::experiment_arms(config).front();
+    diagrams::preset(diagram);
   } catch (const config::ConfigError& error) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
     return 2;
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "cbbg: error: --diagram: " << error.what() << "\n";
+    return 2;
   }
   try {
-    const auto controller = diagrams::build_controller_diagram(diagram, config);
-    render_dot(to_dot(*controller.diagram, GraphvizOptions{.max_depth = options.max_depth}),
-               options.output);
+    draw_diagram(
+        diagram, config, options.output,
+        GraphvizOptions{.max_depth = options.max_depth,
+                        .hidden_blocks = options.show_telemetry ? std::vector<std::string>{}
+                                                                : telemetry_blocks(diagram)});
   } catch (const std::invalid_argument& error) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
     return 2;

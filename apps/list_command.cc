@@ -5,6 +5,7 @@
 
 #include "apps/commands.h"
 #include "config/config.h"
+#include "diagrams/presets.h"
 
 namespace cbbg::app {
 namespace {
@@ -14,14 +15,6 @@ struct Entry {
   const char* meaning;
 };
 
-constexpr Entry kDiagrams[] = {
-    {"cbbg", "cerebellum + basal ganglia: omega rises from 0 to 1 (SPEC 2.7), actor.rule"},
-    {"cbbg_weighted", "cbbg with the weighted actor rule (paper eq. 7)"},
-    {"bg_only", "basal ganglia alone (omega = 1, no supervisor): the traditional actor-critic"},
-    {"cb_only", "omega = 0: the supervisor drives, the actor learns from it alone"},
-    {"pd_only", "the supervisor alone, no learning"},
-};
-
 constexpr Entry kExperiments[] = {
     {"exp1", "per arm and seed: trials until the first success (paper Fig. 11)"},
     {"exp2", "one cbbg trial, then omega = 1 with the annealing schedule (paper Figs. 12-14)"},
@@ -29,9 +22,12 @@ constexpr Entry kExperiments[] = {
 
 constexpr Entry kBlocks[] = {
     {"plant", "SimbodyPlant (plant.kind: simbody) or AnalyticPlant (analytic)"},
+    {"controller", "CbbgController: the cerebellum and the basal ganglia, omega, the mixer"},
+    {"cerebellum", "the supervisor's target action a_S"},
+    {"basal_ganglia", "features, critic, actor, tropism, sampler, entropy"},
     {"sensors", "plant state to measured signals; optional noise and quantisation"},
     {"normaliser", "pitch and pitch rate in grid units, saturated to the RBF grid"},
-    {"rbf", "Gaussian radial-basis features on the centres x centres grid"},
+    {"features", "RbfFeatures: Gaussian radial-basis features on the centres x centres grid"},
     {"critic", "V(s) = w . phi, TD(lambda) with an eligibility trace"},
     {"actor", "a_A = theta . phi, improved or weighted rule"},
     {"supervisor", "PdSupervisor (supervisor.kind: pd) or LqrSupervisor (lqr): the cerebellum"},
@@ -71,8 +67,10 @@ std::string shown(const config::Value& value) {
 int list_command() {
   std::printf("Experiments (--experiment):\n");
   for (const auto& entry : kExperiments) std::printf("  %-15s %s\n", entry.name, entry.meaning);
-  std::printf("\nDiagrams (--experiment NAME runs one; arms: [...] compares several):\n");
-  for (const auto& entry : kDiagrams) std::printf("  %-15s %s\n", entry.name, entry.meaning);
+  std::printf("\nDiagrams (presets; --experiment NAME runs one, arms: [...] compares several):\n");
+  for (const auto& preset : diagrams::presets()) {
+    std::printf("  %-15s %s\n", preset.name.c_str(), preset.description.c_str());
+  }
   std::printf("\nBlocks of the diagrams:\n");
   for (const auto& entry : kBlocks) std::printf("  %-20s %s\n", entry.name, entry.meaning);
   std::printf("\nConfig keys (--set key=value, or a YAML file with --config):\n");

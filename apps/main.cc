@@ -44,14 +44,17 @@ int main(int argc, char** argv) {
 
   GraphOptions graph;
   CLI::App* graph_app = app.add_subcommand("graph", "draw a diagram (.dot, .svg or .png)");
-  auto* diagram_option = graph_app->add_option(
-      "--diagram", graph.diagram, "cbbg | cbbg_weighted | bg_only | cb_only | pd_only");
+  auto* diagram_option =
+      graph_app->add_option("--diagram", graph.diagram,
+                            "cbbg | cbbg_weighted | bg_only | cb_only | pd_only | learnt_actor");
   graph_app->add_option("--config", graph.config_file, "a YAML config")
       ->check(CLI::ExistingFile)
       ->excludes(diagram_option);
   graph_app->add_option("--set", graph.sets, "override one key (repeatable)");
   graph_app->add_option("--depth", graph.max_depth, "nesting levels to expand (default: all)");
   graph_app->add_option("-o,--output", graph.output, "FILE.dot | FILE.svg | FILE.png")->required();
+  graph_app->add_flag("--show-telemetry", graph.show_telemetry,
+                      "draw the telemetry multiplexer and its wires too");
 
   std::filesystem::path plot_directory;
   CLI::App* plot_app = app.add_subcommand("plot", "draw the figures of a results directory");

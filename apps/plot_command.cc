@@ -9,9 +9,8 @@
 
 #include "apps/commands.h"
 #include "apps/figures.h"
-#include "diagrams/controller_diagram.h"
-#include "diagrams/experiments.h"
-#include "framework/graphviz.h"
+#include "diagrams/presets.h"
+#include "experiments/experiments.h"
 
 namespace cbbg::app {
 namespace {
@@ -25,11 +24,27 @@ std::string quoted(const std::string& text) {
   return result + "'";
 }
 
+// The plotting script: $CBBG_PLOT_SCRIPT, else share/cbbg/plot_results.py beside the
+// directory of this executable (bin/ when installed, apps/ in the build tree).
+std::filesystem::path plot_script() {
+  if (const char* chosen = std::getenv("CBBG_PLOT_SCRIPT"); chosen != nullptr && *chosen) {
+    return chosen;
+  }
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  return self.parent_path().parent_path() / "share" / "cbbg" / "plot_results.py";
+}
+
 }  // namespace
 
 int run_plot_script(const std::filesystem::path& directory, bool quiet) {
+  const std::filesystem::path script = plot_script();
+  if (!std::filesystem::is_regular_file(script)) {
+    spdlog::warn("the plotting script '{}' is missing (set CBBG_PLOT_SCRIPT)", script.string());
+    return 1;
+  }
   // Quiet: the script's "wrote ..." lines would name the staging directory; errors still show.
-  const std::string command = std::string(kPython) + " " + quoted(CBBG_PLOT_SCRIPT) + " " +
+  const std::string command = std::string(kPython) + " " + quoted(script.string()) + " " +
                               quoted(directory.string()) + (quiet ? " > /dev/null" : "");
   const int status = std::system(command.c_str());
   if (status == -1 || !WIFEXITED(status)) return 1;
@@ -41,16 +56,24 @@ bool draw_figures(const std::filesystem::path& directory, const config::Config& 
   bool complete = run_plot_script(directory, quiet) == 0;
   if (!complete) spdlog::warn("the plots could not be drawn (see the message above)");
   std::filesystem::create_directories(directory / "figures");
-  const std::string arm = diagrams::experiment_arms(config).front();
+  const std::string arm = experiments::experiment_arms(config).front();
   try {
-    const auto controller = diagrams::build_controller_diagram(arm, config);
-    render_dot(to_dot(*controller.diagram), directory / "figures" / "diagram.svg");
+    draw_diagram(arm, config, directory / "figures" / "diagram.svg",
+                 GraphvizOptions{.hidden_blocks = telemetry_blocks(arm)});
   } catch (const std::runtime_error& error) {
     spdlog::warn("diagram.svg: {}", error.what());
     complete = false;
   }
   return complete;
 }
+
+void draw_diagram(const std::string& name, const config::Config& config,
+                  const std::filesystem::path& output, const GraphvizOptions& options) {
+  const diagrams::ClosedLoop loop = diagrams::build_preset(name, config);
+  render_dot(to_dot(*loop.diagram, options), output);
+}
+
+std::vector<std::string> telemetry_blocks(const std::string& name) { return {name + "/telemetry"}; }
 
 int plot_command(const std::filesystem::path& directory) {
   if (!std::filesystem::is_directory(directory)) {

@@ -9,7 +9,7 @@ namespace cbbg::app {
 Progress::Progress(std::size_t total, bool terminal)
     : total_(total), terminal_(terminal), start_(std::chrono::steady_clock::now()) {}
 
-void Progress::finished(const diagrams::SeedRun& run) {
+void Progress::finished(const experiments::SeedRun& run) {
   const std::lock_guard<std::mutex> lock(mutex_);
   ++done_;
   const double seconds =

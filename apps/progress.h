@@ -6,14 +6,14 @@
 #include <mutex>
 #include <string>
 
-#include "diagrams/experiments.h"
+#include "experiments/seed_run.h"
 
 namespace cbbg::app {
 
 class Progress {
  public:
   Progress(std::size_t total, bool terminal);
-  void finished(const diagrams::SeedRun& run);
+  void finished(const experiments::SeedRun& run);
   void close();
 
  private:

@@ -12,9 +12,11 @@
 #include "apps/figures.h"
 #include "apps/progress.h"
 #include "diagrams/params_from_config.h"
-#include "diagrams/results_writer.h"
-#include "diagrams/task_store.h"
-#include "diagrams/weights_file.h"
+#include "diagrams/presets.h"
+#include "experiments/experiments.h"
+#include "results/results_writer.h"
+#include "results/task_store.h"
+#include "results/weights_file.h"
 
 namespace cbbg::app {
 namespace {
@@ -36,7 +38,7 @@ config::Config resolve(const RunOptions& options) {
 }
 
 // exp2: mean temperature, entropy and successes of the first and last trials, over seeds.
-void print_annealing_summary(const diagrams::ExperimentResults& results) {
+void print_annealing_summary(const experiments::ExperimentResults& results) {
   const auto& first_run = results.runs.front();
   std::printf("%-6s %6s %12s %12s %10s\n", "trial", "k1", "mean T", "mean E", "balanced");
   for (std::size_t t = 0; t < first_run.trials.size(); ++t) {
@@ -46,7 +48,7 @@ void print_annealing_summary(const diagrams::ExperimentResults& results) {
     for (const auto& run : results.runs) {
       temperature += run.trials[t].outcome.mean_temperature;
       entropy += run.trials[t].outcome.mean_entropy;
-      balanced += run.trials[t].outcome.status == diagrams::TrialStatus::kSuccess ? 1 : 0;
+      balanced += run.trials[t].outcome.status == experiments::TrialStatus::kSuccess ? 1 : 0;
     }
     const double n = static_cast<double>(results.runs.size());
     std::printf("%-6d %6g %12.4f %12.4f %6d/%zu\n", first_run.trials[t].trial,
@@ -55,7 +57,7 @@ void print_annealing_summary(const diagrams::ExperimentResults& results) {
   }
 }
 
-void print_summary(const diagrams::ExperimentResults& results) {
+void print_summary(const experiments::ExperimentResults& results) {
   if (results.experiment == "exp2") {
     print_annealing_summary(results);
     return;
@@ -73,7 +75,7 @@ void print_summary(const diagrams::ExperimentResults& results) {
       low = std::min(low, run.failures_before_success);
       high = std::max(high, run.failures_before_success);
     }
-    const double median = diagrams::median(failures);
+    const double median = results::median(failures);
     std::printf("%-14s %8zu %10d %8.1f [%d, %d]  (failures before the first success)\n",
                 results.arms[a].c_str(), results.seeds.size(), succeeded, median, low, high);
   }
@@ -81,18 +83,19 @@ void print_summary(const diagrams::ExperimentResults& results) {
 
 }  // namespace
 
-// Learning runs of the experiment: every (arm, seed) except pd_only's.
+// Learning runs of the experiment: every (arm, seed) of an arm with basal ganglia.
 long long learning_runs(const config::Config& config) {
-  const std::vector<std::string> arms = diagrams::experiment_arms(config);
-  const auto learning = std::count_if(arms.begin(), arms.end(),
-                                      [](const std::string& arm) { return arm != "pd_only"; });
+  const std::vector<std::string> arms = experiments::experiment_arms(config);
+  const auto learning = std::count_if(arms.begin(), arms.end(), [](const std::string& arm) {
+    return diagrams::preset(arm).options.basal_ganglia;
+  });
   return learning * config.integer("seeds");
 }
 
 int run_command(const RunOptions& options) {
   config::Config config;
-  std::optional<diagrams::RunDirectory> directory;
-  std::optional<diagrams::LearntWeights> initial_weights;
+  std::optional<results::RunDirectory> directory;
+  std::optional<experiments::LearntWeights> initial_weights;
   try {
     if (!options.resume.empty()) {
       if (!options.config_file.empty() || !options.sets.empty() || !options.experiment.empty() ||
@@ -101,7 +104,7 @@ int run_command(const RunOptions& options) {
             "--resume continues with the config and weights of the interrupted run; drop "
             "--config, --set, --experiment, --seeds, --seed and --load-weights");
       }
-      directory = diagrams::RunDirectory::resume(options.resume);
+      directory = results::RunDirectory::resume(options.resume);
       config = directory->config();
       diagrams::validate_all(config);
     } else {
@@ -114,41 +117,41 @@ int run_command(const RunOptions& options) {
           " (use --experiment ARM --seeds 1; every run's weights are in DIR/weights/)");
     }
     if (!options.load_weights.empty()) {
-      initial_weights = diagrams::load_weights(options.load_weights);
-      diagrams::check_layout(*initial_weights, config, options.load_weights);
+      initial_weights = results::load_weights(options.load_weights);
+      results::check_layout(*initial_weights, config, options.load_weights);
     }
     if (!directory) {
-      directory = diagrams::RunDirectory::create(options.out, config);
-      if (initial_weights) diagrams::save_weights(directory->initial_weights(), *initial_weights);
+      directory = results::RunDirectory::create(options.out, config);
+      if (initial_weights) results::save_weights(directory->initial_weights(), *initial_weights);
     } else if (std::filesystem::exists(directory->initial_weights())) {
-      initial_weights = diagrams::load_weights(directory->initial_weights());
+      initial_weights = results::load_weights(directory->initial_weights());
     }
   } catch (const config::ConfigError& error) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
     return 2;
   }
-  const std::size_t arms = diagrams::experiment_arms(config).size();
+  const std::size_t arms = experiments::experiment_arms(config).size();
   const std::size_t tasks = arms * static_cast<std::size_t>(config.integer("seeds"));
   spdlog::info("{}: {} seed(s) x {} arm(s) on the {} plant, {} thread(s){}",
                config.text("experiment"), config.integer("seeds"), arms, config.text("plant.kind"),
                options.jobs, options.resume.empty() ? "" : ", resumed");
   try {
-    const diagrams::TaskStore store(directory->tasks());
+    const results::TaskStore store(directory->tasks());
     Progress progress(tasks, ::isatty(STDERR_FILENO) == 1);
-    diagrams::ExperimentOptions experiment;
+    experiments::ExperimentOptions experiment;
     experiment.jobs = options.jobs;
-    experiment.progress = [&progress](const diagrams::SeedRun& run) { progress.finished(run); };
+    experiment.progress = [&progress](const experiments::SeedRun& run) { progress.finished(run); };
     experiment.store = &store;
     if (initial_weights) experiment.initial_weights = &*initial_weights;
-    const diagrams::ExperimentResults results = diagrams::run_experiment(config, experiment);
+    const experiments::ExperimentResults results = experiments::run_experiment(config, experiment);
     progress.close();
-    diagrams::write_result_files(results, config, directory->work(), &store);
+    results::write_result_files(results, config, directory->work(), &store);
     if (options.figures) draw_figures(directory->work(), config, /*quiet=*/true);
     directory->commit();
     print_summary(results);
     if (!options.save_weights.empty()) {
       for (const auto& run : results.runs) {
-        if (run.weights) diagrams::save_weights(options.save_weights, *run.weights);
+        if (run.weights) results::save_weights(options.save_weights, *run.weights);
       }
       spdlog::info("weights in {}", options.save_weights.string());
     }

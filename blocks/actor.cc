@@ -8,14 +8,13 @@
 namespace cbbg::blocks {
 namespace {
 
-// Offsets of the stored previous tick after theta and phi(s_{t-1}).
-enum PreviousTick : int {
+// The actions of the previous tick, in the part "previous_actions".
+enum PreviousAction : int {
   kSupervisorAction = 0,
   kExplorationAction,
   kActorAction,
   kOmega,
-  kHasPrevious,
-  kPreviousTickSize
+  kPreviousActionsSize
 };
 
 }  // namespace
@@ -53,21 +52,27 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
   const InputPort& supervisor = declare_input_port("supervisor_action", 1, "a_S(t)");
   const InputPort& exploration = declare_input_port("exploration_action", 1, "a_E(t)");
   const InputPort& omega = declare_input_port("omega", 1, "omega(t)");
-  declare_discrete_state(Vector::Zero(2 * n + kPreviousTickSize));
+  weights_ = declare_discrete_state("weights", Vector::Zero(n), StateLifetime::kPersistent);
+  previous_features_ =
+      declare_discrete_state("previous_features", Vector::Zero(n), StateLifetime::kPerTrial);
+  previous_actions_ = declare_discrete_state("previous_actions", Vector::Zero(kPreviousActionsSize),
+                                             StateLifetime::kPerTrial);
+  has_previous_ = declare_discrete_state("has_previous", Vector::Zero(1), StateLifetime::kPerTrial);
   declare_output_port(
       "action", 1,
-      [n, &features](const BlockContext& context, VectorRef action) {
-        action[0] = context.discrete_state().head(n).dot(context.input(features));
+      [this, &features](const BlockContext& context, VectorRef action) {
+        action[0] = weights_.of(context.discrete_state()).dot(context.input(features));
       },
       {&features}, "a_A(t) = theta . phi(s_t)");
   declare_periodic_update(
       period, 0.0,
-      [this, n, &features, &td_error, &supervisor, &exploration, &omega](BlockContext& context,
-                                                                         VectorRef next) {
+      [this, &features, &td_error, &supervisor, &exploration, &omega](BlockContext& context,
+                                                                      VectorRef next) {
         const auto state = context.discrete_state();
-        const auto previous = state.segment(2 * n, kPreviousTickSize);
+        const auto theta = weights_.of(state);
         const auto phi = context.input(features);
-        if (previous[kHasPrevious] != 0.0) {
+        if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
+          const auto previous = previous_actions_.of(state);
           const double delta = context.input(td_error)[0];
           const double a_s = previous[kSupervisorAction];
           const double a_e = previous[kExplorationAction];
@@ -78,30 +83,25 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
               params_.rule == ActorRule::kImproved
                   ? alpha * delta * (w * (a_e - a_s) + (a_s - a_a))
                   : w * alpha * delta * (a_e - a_a) + (1.0 - w) * alpha * (a_s - a_a);
-          next.head(n) = state.head(n) + step * state.segment(n, n);
+          weights_.of(next) = theta + step * previous_features_.of(state);
         }
-        next.segment(n, n) = phi;
-        auto stored = next.segment(2 * n, kPreviousTickSize);
+        previous_features_.of(next) = phi;
+        auto stored = previous_actions_.of(next);
         stored[kSupervisorAction] = context.input(supervisor)[0];
         stored[kExplorationAction] = context.input(exploration)[0];
-        stored[kActorAction] = state.head(n).dot(phi);  // the a_A output at t, before learning
+        stored[kActorAction] = theta.dot(phi);  // the a_A output at t, before learning
         stored[kOmega] = context.input(omega)[0];
-        stored[kHasPrevious] = 1.0;
+        has_previous_.of(next)[0] = 1.0;
         return EventStatus::succeeded();
       });
 }
 
-void Actor::start_trial(Context& context) const {
-  const int n = num_features_;
-  context.discrete_state(*this).tail(n + kPreviousTickSize).setZero();
-}
-
 ConstVectorView Actor::weights(const Context& context) const {
-  return ConstVectorView(context.discrete_state(*this).data(), num_features_);
+  return ConstVectorView(context.discrete_state(*this).data() + weights_.offset, weights_.size);
 }
 
 VectorView Actor::mutable_weights(Context& context) const {
-  return VectorView(context.discrete_state(*this).data(), num_features_);
+  return VectorView(context.discrete_state(*this).data() + weights_.offset, weights_.size);
 }
 
 }  // namespace cbbg::blocks

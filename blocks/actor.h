@@ -22,6 +22,9 @@ std::string_view to_string(ActorRule rule);
 struct ActorParams {
   double alpha = 0.1;                     // actor.alpha: learning rate, > 0
   ActorRule rule = ActorRule::kImproved;  // actor.rule
+  // Not a config key: a frozen actor acts but never changes theta (the learnt-actor
+  // evaluation, ControllerOptions::learning).
+  bool frozen = false;
 
   // Throws naming the key unless alpha is finite and > 0 and rule is one of the two.
   void validate() const;
@@ -47,18 +50,18 @@ struct ActorParams {
 ///                            + (1 - omega) alpha (a_S - a_A) phi
 ///             (the supervised term does not depend on delta);
 /// then stores this tick's values. Nothing is learnt on the first tick of a trial. theta
-/// starts at 0; start_trial forgets the previous tick and keeps theta.
+/// starts at 0; a new trial (Context::reset_trial_state) forgets the previous tick and keeps
+/// theta. A frozen actor skips the update of theta.
 /// Parameters: alpha = actor.alpha, rule = actor.rule, the period trial.period; n is the
 /// feature count.
 ///
-/// Discrete state: [theta (n), phi(s_{t-1}) (n), a_S, a_E, a_A, omega, has_previous].
+/// Discrete state: weights theta (n, persistent); per trial: previous_features phi(s_{t-1})
+/// (n), previous_actions (a_S, a_E, a_A, omega at t-1), has_previous (1).
 class Actor final : public Block {
  public:
   Actor(std::string name, int num_features, const ActorParams& params, double period);
 
   int num_features() const { return num_features_; }
-  // A new trial: forgets the previous tick, keeps theta.
-  void start_trial(Context& context) const;
   // The learnt weights theta in `context`.
   ConstVectorView weights(const Context& context) const;
   VectorView mutable_weights(Context& context) const;
@@ -66,6 +69,10 @@ class Actor final : public Block {
  private:
   int num_features_;
   ActorParams params_;
+  StatePart weights_;
+  StatePart previous_features_;
+  StatePart previous_actions_;
+  StatePart has_previous_;
 };
 
 }  // namespace cbbg::blocks

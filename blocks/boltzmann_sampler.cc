@@ -16,7 +16,7 @@ BoltzmannSampler::BoltzmannSampler(std::string name, const SamplerParams& params
   check_period(period);
   const InputPort& actor_action = declare_input_port("actor_action", 1, "a_A(t)");
   const InputPort& temperature = declare_input_port("temperature", 1, "T(t)");
-  declare_discrete_state(Vector::Zero(1));
+  declare_discrete_state("noise", Vector::Zero(1), StateLifetime::kPerTrial);
   declare_output_port(
       "action", 1,
       [this, &actor_action, &temperature](const BlockContext& context, VectorRef action) {

@@ -25,54 +25,51 @@ Critic::Critic(std::string name, int num_features, const CriticParams& params, d
   features_ = &declare_input_port("features", n, "phi(s_t)");
   reward_ = &declare_input_port("reward", 1, "r_{t-1}");
   failed_ = &declare_input_port("failed", 1, "1 when s_t is terminal");
-  declare_discrete_state(Vector::Zero(3 * n + 1));
+  weights_ = declare_discrete_state("weights", Vector::Zero(n), StateLifetime::kPersistent);
+  trace_ = declare_discrete_state("trace", Vector::Zero(n), StateLifetime::kPerTrial);
+  previous_features_ =
+      declare_discrete_state("previous_features", Vector::Zero(n), StateLifetime::kPerTrial);
+  has_previous_ = declare_discrete_state("has_previous", Vector::Zero(1), StateLifetime::kPerTrial);
   declare_output_port(
       "value", 1,
-      [this, n](const BlockContext& context, VectorRef value) {
-        value[0] = context.discrete_state().head(n).dot(context.input(*features_));
+      [this](const BlockContext& context, VectorRef value) {
+        value[0] = weights_.of(context.discrete_state()).dot(context.input(*features_));
       },
       {features_}, "V(s_t) = w . phi(s_t)");
   declare_output_port(
       "td_error", 1,
       [this](const BlockContext& context, VectorRef delta) { delta[0] = td_error(context); },
       {features_, reward_, failed_}, "delta_{t-1}");
-  declare_periodic_update(period, 0.0, [this, n](BlockContext& context, VectorRef next) {
+  declare_periodic_update(period, 0.0, [this](BlockContext& context, VectorRef next) {
     const auto state = context.discrete_state();
-    if (state[3 * n] != 0.0) {
+    if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
       const double delta = td_error(context);
-      next.segment(n, n) =
-          params_.gamma * params_.lambda * state.segment(n, n) + state.segment(2 * n, n);
-      next.head(n) = state.head(n) + params_.beta * delta * next.segment(n, n);
+      trace_.of(next) =
+          params_.gamma * params_.lambda * trace_.of(state) + previous_features_.of(state);
+      weights_.of(next) = weights_.of(state) + params_.beta * delta * trace_.of(next);
     }
-    next.segment(2 * n, n) = context.input(*features_);
-    next[3 * n] = 1.0;
+    previous_features_.of(next) = context.input(*features_);
+    has_previous_.of(next)[0] = 1.0;
     return EventStatus::succeeded();
   });
 }
 
 double Critic::td_error(const BlockContext& context) const {
-  const int n = num_features_;
   const auto state = context.discrete_state();
-  if (state[3 * n] == 0.0) return 0.0;
-  const auto w = state.head(n);
+  if (has_previous_.of(state)[0] == 0.0) return 0.0;
+  const auto w = weights_.of(state);
   const bool failed = context.input(*failed_)[0] > 0.5;
   const double next_value = failed ? 0.0 : w.dot(context.input(*features_));
-  return context.input(*reward_)[0] + params_.gamma * next_value - w.dot(state.segment(2 * n, n));
-}
-
-void Critic::start_trial(Context& context) const {
-  const int n = num_features_;
-  auto state = context.discrete_state(*this);
-  state.segment(n, 2 * n).setZero();
-  state[3 * n] = 0.0;
+  return context.input(*reward_)[0] + params_.gamma * next_value -
+         w.dot(previous_features_.of(state));
 }
 
 ConstVectorView Critic::weights(const Context& context) const {
-  return ConstVectorView(context.discrete_state(*this).data(), num_features_);
+  return ConstVectorView(context.discrete_state(*this).data() + weights_.offset, weights_.size);
 }
 
 VectorView Critic::mutable_weights(Context& context) const {
-  return VectorView(context.discrete_state(*this).data(), num_features_);
+  return VectorView(context.discrete_state(*this).data() + weights_.offset, weights_.size);
 }
 
 }  // namespace cbbg::blocks

@@ -13,6 +13,9 @@ struct CriticParams {
   double beta = 0.1;    // critic.beta: learning rate, > 0
   double gamma = 0.8;   // critic.gamma: discount, in (0, 1]
   double lambda = 0.8;  // critic.lambda: trace decay, in [0, 1)
+  // Not a config key: a frozen critic computes V and delta but never changes w (the
+  // learnt-actor evaluation, ControllerOptions::learning).
+  bool frozen = false;
 
   // Throws naming the key unless every value is finite and in its range.
   void validate() const;
@@ -33,18 +36,18 @@ struct CriticParams {
 ///   V'(s_t) = 0 if failed else w . phi(s_t);  delta = 0 on the first tick of a trial.
 /// The periodic update then learns from that transition and remembers phi(s_t):
 ///   z <- gamma lambda z + phi(s_{t-1});  w <- w + beta delta_{t-1} z.
-/// w starts at 0. start_trial clears z and the previous tick, keeping w.
+/// w starts at 0. A new trial (Context::reset_trial_state) clears z and the previous tick and
+/// keeps w. A frozen critic skips the update of z and w.
 /// Parameters: beta = critic.beta, gamma = critic.gamma, lambda = critic.lambda, the period
 /// trial.period; n is the feature count (RbfFeatures::num_features).
 ///
-/// Discrete state: [w (n), z (n), phi(s_{t-1}) (n), has_previous (1)].
+/// Discrete state: weights w (n, persistent); per trial: trace z (n), previous_features
+/// phi(s_{t-1}) (n), has_previous (1).
 class Critic final : public Block {
  public:
   Critic(std::string name, int num_features, const CriticParams& params, double period);
 
   int num_features() const { return num_features_; }
-  // A new trial: clears the eligibility trace and forgets the previous tick; keeps w.
-  void start_trial(Context& context) const;
   // The learnt weights w in `context`.
   ConstVectorView weights(const Context& context) const;
   VectorView mutable_weights(Context& context) const;
@@ -55,6 +58,10 @@ class Critic final : public Block {
 
   int num_features_;
   CriticParams params_;
+  StatePart weights_;
+  StatePart trace_;
+  StatePart previous_features_;
+  StatePart has_previous_;
   const InputPort* features_;
   const InputPort* reward_;
   const InputPort* failed_;

@@ -42,7 +42,7 @@ OmegaSchedule::OmegaSchedule(std::string name, const OmegaParams& params, double
     : Block(std::move(name)), params_(params) {
   params_.validate();
   check_period(period);
-  declare_discrete_state(Vector::Zero(1));
+  declare_discrete_state("ticks", Vector::Zero(1), StateLifetime::kPersistent);
   declare_output_port(
       "omega", 1,
       [this](const BlockContext& context, VectorRef omega) {

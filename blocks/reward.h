@@ -27,16 +27,13 @@ struct RewardParams {
 /// Equations: s(t) = a1 theta_b + a2 theta_b';
 ///   r_{t-1} = -1 if failed, else 0 if s(t)^2 <= s(t-1)^2, else -1;
 /// 0 on the first tick of a trial without failure (there is no transition yet). The
-/// periodic update remembers s(t). start_trial forgets it.
+/// periodic update remembers s(t); a new trial forgets it.
 /// Parameters: a1 = reward.a1, a2 = reward.a2, the period trial.period.
 ///
-/// Discrete state: [s(t-1), has_previous].
+/// Discrete state, per trial: previous_surface s(t-1), has_previous.
 class Reward final : public Block {
  public:
   Reward(std::string name, const RewardParams& params, double period);
-
-  // A new trial: forgets the previous tick's s.
-  void start_trial(Context& context) const;
 
  private:
   RewardParams params_;

@@ -31,7 +31,7 @@ Sensors::Sensors(std::string name, const SensorsParams& params, double period)
   check_period(period);
   const InputPort& plant_state =
       declare_input_port("plant_state", plant::kStateSize, "plant state (plant/plant_ports.h)");
-  declare_discrete_state(Vector::Zero(kMeasuredSize));
+  declare_discrete_state("noise", Vector::Zero(kMeasuredSize), StateLifetime::kPerTrial);
   declare_output_port(
       "measured", kMeasuredSize,
       [this, &plant_state](const BlockContext& context, VectorRef measured) {
@@ -59,10 +59,6 @@ void Sensors::draw_noise(RandomGenerator& generator, VectorRef noise) const {
     noise[i] =
         params_.noise_std[static_cast<size_t>(i)] > 0.0 ? draw_standard_normal(generator) : 0.0;
   }
-}
-
-void Sensors::start_trial(Context& context) const {
-  draw_noise(context.random_generator(*this), context.discrete_state(*this));
 }
 
 }  // namespace cbbg::blocks

@@ -30,14 +30,12 @@ struct SensorsParams {
 ///   y_i = Q_i(x_i + sigma_i n_i),   Q_i(v) = q_i round(v / q_i) if q_i > 0, else v,
 /// with n_i a standard normal held in the discrete state: drawn by the initialization update
 /// for the first tick and by each periodic update for the next, from the block's own
-/// generator (only for signals with sigma_i > 0). Parameters: sigma = sensors.noise_std,
-/// q = sensors.quantisation (both off by default), the period trial.period.
+/// generator (only for signals with sigma_i > 0). The initialization update runs at the start
+/// of every trial, so a trial never reuses the previous one's last draw. Parameters: sigma =
+/// sensors.noise_std, q = sensors.quantisation (both off by default), the period trial.period.
 class Sensors final : public Block {
  public:
   Sensors(std::string name, const SensorsParams& params, double period);
-
-  // A new trial: draws fresh noise, so it does not reuse the last draw of the previous one.
-  void start_trial(Context& context) const;
 
  private:
   // Writes fresh noise samples n_i into `noise` (size 6).

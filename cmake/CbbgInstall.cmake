@@ -1,17 +1,27 @@
-# Install rules and a CMake package, so a user's project can find_package(cbbg) and link
-# cbbg::framework. Headers install under include/cbbg/ with their tree (framework/...).
+# Install rules and a CMake package: find_package(cbbg) gives every library as a target
+# (cbbg::framework, plant, blocks, config, diagrams, experiments, results), the `cbbg`
+# command and its plotting script. Headers install under include/cbbg/ with their tree
+# (framework/..., diagrams/...), as the sources include them.
 include(CMakePackageConfigHelpers)
 
-install(TARGETS cbbg_framework EXPORT cbbgTargets
+set(CBBG_LIBRARIES cbbg_framework cbbg_plant cbbg_blocks cbbg_config cbbg_diagrams
+                   cbbg_experiments cbbg_results)
+install(TARGETS ${CBBG_LIBRARIES} EXPORT cbbgTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(DIRECTORY framework/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/framework
-        FILES_MATCHING PATTERN "*.h")
+foreach(folder framework plant blocks config diagrams experiments results)
+  install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/${folder}
+          FILES_MATCHING PATTERN "*.h")
+endforeach()
+install(TARGETS cbbg RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The command finds its plotting script in share/cbbg/ beside its bin/.
+install(PROGRAMS scripts/plot_results.py DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
 install(EXPORT cbbgTargets NAMESPACE cbbg:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/cbbg)
 
 configure_package_config_file(cmake/cbbgConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/cbbgConfig.cmake
-  INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/cbbg)
+  INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/cbbg
+  PATH_VARS CMAKE_INSTALL_BINDIR)
 write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/cbbgConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/cbbgConfig.cmake

@@ -137,11 +137,31 @@ int Block::declare_parameter(std::string name, Vector default_value) {
   return static_cast<int>(parameters_.size()) - 1;
 }
 
-void Block::declare_discrete_state(Vector initial_value) {
-  if (initial_discrete_state_.size() > 0) {
-    throw std::logic_error("block '" + path() + "' declares its discrete state twice");
+StatePart Block::declare_discrete_state(std::string name, Vector initial_value,
+                                        StateLifetime lifetime) {
+  check_name("block '" + path() + "'", name, "state part name");
+  for (const auto& part : state_parts_) {
+    if (part.name == name) {
+      throw std::invalid_argument("block '" + path() + "' already has a state part '" + name + "'");
+    }
   }
-  initial_discrete_state_ = std::move(initial_value);
+  const auto offset = initial_discrete_state_.size();
+  const auto size = initial_value.size();
+  initial_discrete_state_.conservativeResize(offset + size);
+  initial_discrete_state_.tail(size) = initial_value;
+  state_parts_.push_back(
+      {std::move(name), static_cast<int>(offset), static_cast<int>(size), lifetime});
+  return state_parts_.back();
+}
+
+const StatePart& Block::discrete_state_part(std::string_view name) const {
+  std::string known;
+  for (const auto& part : state_parts_) {
+    if (part.name == name) return part;
+    known += (known.empty() ? "" : ", ") + part.name;
+  }
+  throw std::invalid_argument("block '" + path() + "' has no state part '" + std::string(name) +
+                              "'; it has: " + (known.empty() ? "none" : known));
 }
 
 void Block::declare_periodic_update(double period, double offset, UpdateFunction update) {

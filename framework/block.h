@@ -62,6 +62,25 @@ struct Parameter {
   Vector default_value;
 };
 
+// How long a part of a block's discrete state lives: across trials (learnt weights, a tick
+// counter) or within one trial (a trace, the previous tick), when Context::reset_trial_state
+// puts it back to its initial value.
+enum class StateLifetime { kPersistent, kPerTrial };
+
+// A named part of a block's discrete state: where it lies in the block's state vector.
+struct StatePart {
+  std::string name;
+  int offset = 0;
+  int size = 0;
+  StateLifetime lifetime = StateLifetime::kPersistent;
+
+  // The part inside the block's whole state vector (a view, a Map or a Ref).
+  template <typename State>
+  auto of(State&& state) const {
+    return state.segment(offset, size);
+  }
+};
+
 class Block {
  public:
   explicit Block(std::string name);
@@ -90,6 +109,10 @@ class Block {
   // Inputs that the output reads directly (direct feedthrough), by input index.
   const std::vector<int>& output_reads(int output_index) const;
   const Vector& initial_discrete_state() const { return initial_discrete_state_; }
+  // The named parts of the discrete state, in declaration order, back to back.
+  const std::vector<StatePart>& discrete_state_parts() const { return state_parts_; }
+  // The named part; an unknown name throws, listing the parts the block has.
+  const StatePart& discrete_state_part(std::string_view name) const;
   const Vector& initial_continuous_state() const { return initial_continuous_state_; }
   bool has_continuous_state() const { return initial_continuous_state_.size() > 0; }
   // True where the block advances its own continuous state (advance_function), false where
@@ -116,7 +139,9 @@ class Block {
   // A numeric parameter stored in the context, so it can change between runs (annealing)
   // and differ between cloned contexts. Returns its index for BlockContext::parameter.
   int declare_parameter(std::string name, Vector default_value);
-  void declare_discrete_state(Vector initial_value);
+  // Appends a named part to the discrete state and returns where it lies. Parts marked
+  // kPerTrial are reset to `initial_value` at each trial; the others persist.
+  StatePart declare_discrete_state(std::string name, Vector initial_value, StateLifetime lifetime);
   void declare_periodic_update(double period, double offset, UpdateFunction update);
   // Runs once when a simulation is initialised, before the events at the initial time.
   void declare_initialization_update(UpdateFunction update);
@@ -137,6 +162,7 @@ class Block {
   std::vector<OutputFunction> output_functions_;
   std::vector<std::vector<int>> output_reads_;
   Vector initial_discrete_state_;
+  std::vector<StatePart> state_parts_;
   Vector initial_continuous_state_;
   DerivativeFunction derivatives_;
   AdvanceFunction advance_;

@@ -1,8 +1,11 @@
 #include "framework/context.h"
 
 #include <stdexcept>
+#include <string_view>
+#include <unordered_map>
 
 #include "framework/diagram.h"
+#include "framework/layout.h"
 
 namespace cbbg {
 
@@ -15,7 +18,7 @@ Context::Context(const Diagram& diagram, std::uint64_t root_seed)
       continuous_(diagram.initial_continuous_states()),
       parameters_(diagram.default_parameters()) {
   for (const auto& leaf : diagram.leaves()) {
-    generators_.emplace_back(derive_seed(root_seed, leaf.block->path()));
+    generators_.emplace_back(derive_seed(root_seed, leaf.stream_name));
     scratch_.push_back(leaf.block->make_scratch());
   }
 }
@@ -104,10 +107,52 @@ void Context::reset_all_state() {
   continuous_ = diagram_->initial_continuous_states();
 }
 
+void Context::reset_trial_state() {
+  time_ = 0.0;
+  for (const auto& leaf : diagram_->leaves()) {
+    const Vector& initial = leaf.block->initial_discrete_state();
+    for (const auto& part : leaf.block->discrete_state_parts()) {
+      if (part.lifetime != StateLifetime::kPerTrial) continue;
+      discrete_.segment(leaf.discrete_offset + part.offset, part.size) = part.of(initial);
+    }
+  }
+}
+
+namespace {
+
+bool same_parts(const Block& a, const Block& b) {
+  const auto& left = a.discrete_state_parts();
+  const auto& right = b.discrete_state_parts();
+  if (left.size() != right.size()) return false;
+  for (std::size_t i = 0; i < left.size(); ++i) {
+    if (left[i].name != right[i].name || left[i].size != right[i].size) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void Context::continue_from(const Context& other) {
+  std::unordered_map<std::string_view, const LeafLayout*> theirs;
+  for (const auto& leaf : other.diagram_->leaves()) theirs[leaf.stream_name] = &leaf;
+  for (const auto& leaf : diagram_->leaves()) {
+    const auto match = theirs.find(leaf.stream_name);
+    if (match == theirs.end() || !same_parts(*leaf.block, *match->second->block)) continue;
+    const LeafLayout& source = *match->second;
+    for (const auto& part : leaf.block->discrete_state_parts()) {
+      if (part.lifetime != StateLifetime::kPersistent) continue;
+      discrete_.segment(leaf.discrete_offset + part.offset, part.size) =
+          other.discrete_.segment(source.discrete_offset + part.offset, part.size);
+    }
+    generators_[static_cast<size_t>(leaf.index)] =
+        other.generators_[static_cast<size_t>(source.index)];
+  }
+}
+
 void Context::reseed(std::uint64_t root_seed) {
   root_seed_ = root_seed;
   for (const auto& leaf : diagram_->leaves()) {
-    generators_[static_cast<size_t>(leaf.index)].seed(derive_seed(root_seed, leaf.block->path()));
+    generators_[static_cast<size_t>(leaf.index)].seed(derive_seed(root_seed, leaf.stream_name));
   }
 }
 

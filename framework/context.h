@@ -1,8 +1,9 @@
 #pragma once
 // Context: everything that changes during a simulation, in contiguous storage: time, the
 // signals on every wire, discrete and continuous state, parameters, and one random generator
-// per block. A Diagram is fixed after build; a Context is what a run owns. Clone one to
-// restart a trial or to run in parallel.
+// per block, derived from the root seed and the block's path below the root diagram. A Diagram is
+// fixed after build; a Context is what a run owns. Clone one to restart a trial or to run in
+// parallel.
 
 #include <cstdint>
 #include <memory>
@@ -50,7 +51,17 @@ class Context {
   // Restores every block's initial state and sets the time to zero; parameters, fixed inputs
   // and random generators are kept.
   void reset_all_state();
-  // Re-seeds every block's generator from `root_seed` and its path.
+  // A new trial: time zero and every discrete-state part declared StateLifetime::kPerTrial
+  // back to its initial value; persistent parts (learnt weights), continuous state,
+  // parameters and generators are kept. Never allocates.
+  void reset_trial_state();
+  // Carries the learning of `other`, a context of another diagram, into this one (a change
+  // of protocol halfway, as experiment 2's switch to operant learning): for each leaf here
+  // with a leaf of the same path below the root there whose state parts have the same names
+  // and sizes, its persistent parts and its random generator. Per-trial and continuous
+  // state, parameters and time stay as they are.
+  void continue_from(const Context& other);
+  // Re-seeds every block's generator from `root_seed` and its path below the root diagram.
   void reseed(std::uint64_t root_seed);
 
   // The value of an input port the root diagram exports: it must be set before simulating.

@@ -87,6 +87,7 @@ void Diagram::collect_leaves(const Diagram& diagram) {
     LeafLayout layout;
     layout.block = child.get();
     layout.index = static_cast<int>(leaves_.size());
+    layout.stream_name = child->path().substr(path().size() + 1);
     leaf_index_[child.get()] = layout.index;
     leaves_.push_back(std::move(layout));
   }

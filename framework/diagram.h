@@ -16,7 +16,7 @@
 
 namespace cbbg {
 
-class Diagram final : public Block {
+class Diagram : public Block {
  public:
   struct Connection {
     const OutputPort* source;
@@ -72,9 +72,12 @@ class Diagram final : public Block {
   const Vector& initial_continuous_states() const { return initial_continuous_; }
   const Vector& default_parameters() const { return default_parameters_; }
 
+ protected:
+  // For subclasses, which build themselves with DiagramBuilder(*this).
+  explicit Diagram(std::string name) : Block(std::move(name)) {}
+
  private:
   friend class DiagramBuilder;
-  explicit Diagram(std::string name) : Block(std::move(name)) {}
 
   // What feeds a leaf input: a leaf output, a fixed value, or an input of the root.
   struct InputSource {

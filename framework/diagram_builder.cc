@@ -5,10 +5,17 @@
 namespace cbbg {
 
 DiagramBuilder::DiagramBuilder(std::string diagram_name)
-    : diagram_(new Diagram(std::move(diagram_name))) {}
+    : owned_(new Diagram(std::move(diagram_name))), diagram_(owned_.get()) {}
+
+DiagramBuilder::DiagramBuilder(Diagram& target) : diagram_(&target) {
+  if (!target.blocks_.empty() || target.num_input_ports() > 0 || target.num_output_ports() > 0) {
+    throw std::logic_error("DiagramBuilder: diagram '" + target.path() +
+                           "' is already built; a builder builds into an empty diagram");
+  }
+}
 
 Diagram& DiagramBuilder::diagram() const {
-  if (!diagram_) {
+  if (diagram_ == nullptr) {
     throw std::logic_error("this DiagramBuilder has already built its diagram");
   }
   return *diagram_;
@@ -126,6 +133,22 @@ void DiagramBuilder::fix_input(const InputPort& inner, Vector value) {
 }
 
 std::unique_ptr<Diagram> DiagramBuilder::build() {
+  if (!owned_) {
+    throw std::logic_error("DiagramBuilder: this builder builds into diagram '" + diagram().path() +
+                           "'; call build_into()");
+  }
+  check_and_finalize();
+  return std::move(owned_);
+}
+
+void DiagramBuilder::build_into() {
+  if (owned_) {
+    throw std::logic_error("DiagramBuilder: this builder makes its own diagram; call build()");
+  }
+  check_and_finalize();
+}
+
+void DiagramBuilder::check_and_finalize() {
   Diagram& built = diagram();
   std::string open_inputs;
   for (const auto& child : built.blocks_) {
@@ -145,7 +168,7 @@ std::unique_ptr<Diagram> DiagramBuilder::build() {
     throw std::invalid_argument("build: diagram '" + built.path() + "': " + open_inputs);
   }
   built.finalize();
-  return std::move(diagram_);
+  diagram_ = nullptr;
 }
 
 }  // namespace cbbg

@@ -13,7 +13,11 @@ namespace cbbg {
 
 class DiagramBuilder {
  public:
+  // Builds a new Diagram named `diagram_name`; build() returns it.
   explicit DiagramBuilder(std::string diagram_name);
+  // Builds into `target`, a Diagram subclass under construction that has no blocks yet
+  // (Drake's BuildInto; diagram.h shows the pattern); build_into() finishes it.
+  explicit DiagramBuilder(Diagram& target);
 
   // Adds a block (a leaf or a built Diagram); its name must be unique in this diagram.
   template <typename B>
@@ -42,14 +46,18 @@ class DiagramBuilder {
   // Checks the wiring (every input connected, exported or fixed; no algebraic loop) and
   // fixes the evaluation order. The builder is spent afterwards.
   std::unique_ptr<Diagram> build();
+  // The same for the target of DiagramBuilder(Diagram&).
+  void build_into();
 
  private:
   void add_block(std::unique_ptr<Block> block);
   void check_child(const Block& block, const char* action) const;
   void check_input_free(const InputPort& port, const char* action) const;
   Diagram& diagram() const;
+  void check_and_finalize();
 
-  std::unique_ptr<Diagram> diagram_;
+  std::unique_ptr<Diagram> owned_;  // null when building into a target
+  Diagram* diagram_;                // null once built
 };
 
 }  // namespace cbbg

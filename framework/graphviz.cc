@@ -119,6 +119,11 @@ class DotWriter {
     return block.is_diagram() && (options_.max_depth < 0 || depth <= options_.max_depth);
   }
 
+  bool hidden(const Block& block) const {
+    const auto& hidden = options_.hidden_blocks;
+    return std::find(hidden.begin(), hidden.end(), block.path()) != hidden.end();
+  }
+
   // Where an edge leaving `port` starts: the output cell of a box, or the port node of an
   // expanded diagram. `depth` is the depth of the port's block.
   std::string source_of(const OutputPort& port, int depth) const {
@@ -157,6 +162,7 @@ class DotWriter {
     }
     const int child_depth = depth + 1;
     for (const auto& child : diagram.blocks()) {
+      if (hidden(*child)) continue;
       if (expanded(*child, child_depth)) {
         write_cluster(static_cast<const Diagram&>(*child), child_depth, inner);
       } else {
@@ -165,24 +171,29 @@ class DotWriter {
       }
     }
     for (const auto& fixed : diagram.fixed_inputs()) {
+      if (hidden(fixed.port->block())) continue;
       line(inner, fixed_node_id(*fixed.port) +
                       " [shape=plaintext, label=" + dot_quoted(value_text(fixed.value)) + "];");
     }
 
     for (const auto& exported : diagram.exported_inputs()) {
       const InputPort& port = diagram.input_port(exported.diagram_port);
+      if (hidden(exported.inner->block())) continue;
       edge(inner, port_node_id(diagram, "in", port.name()),
            destination_of(*exported.inner, child_depth));
     }
     for (const auto& connection : diagram.connections()) {
+      if (hidden(connection.source->block()) || hidden(connection.destination->block())) continue;
       edge(inner, source_of(*connection.source, child_depth),
            destination_of(*connection.destination, child_depth));
     }
     for (const auto& fixed : diagram.fixed_inputs()) {
+      if (hidden(fixed.port->block())) continue;
       edge(inner, fixed_node_id(*fixed.port), destination_of(*fixed.port, child_depth));
     }
     for (int i = 0; i < diagram.num_output_ports(); ++i) {
       const OutputPort& inner_port = *diagram.exported_outputs()[static_cast<std::size_t>(i)];
+      if (hidden(inner_port.block())) continue;
       edge(inner, source_of(inner_port, child_depth),
            port_node_id(diagram, "out", diagram.output_port(i).name()));
     }

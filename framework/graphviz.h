@@ -19,6 +19,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "framework/diagram.h"
 
@@ -30,6 +31,9 @@ struct GraphvizOptions {
   // d <= max_depth, else as one box with its ports. Negative: expand every sub-diagram.
   // 0 draws the root's children only.
   int max_depth = -1;
+  // Paths of blocks left out of the picture with every edge to or from them: loggers and
+  // other taps that read many signals would otherwise cover it in wires.
+  std::vector<std::string> hidden_blocks{};
 };
 
 // The DOT text (a `digraph`, laid out left to right) of `diagram` and everything inside it.

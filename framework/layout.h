@@ -2,6 +2,7 @@
 // Where each leaf block's values live in a Context's contiguous storage. Computed once, when
 // a root diagram is built; read on every tick.
 
+#include <string>
 #include <vector>
 
 namespace cbbg {
@@ -10,7 +11,11 @@ class Block;
 
 struct LeafLayout {
   const Block* block = nullptr;
-  int index = 0;                       // position among the leaves: its generator and scratch
+  int index = 0;  // position among the leaves: its generator and scratch
+  // The block's path below the root diagram ("controller/basal_ganglia/sampler"): what its
+  // random stream is derived from, so diagrams that differ only in their root's name (the
+  // arms of a comparison) give a block the same stream.
+  std::string stream_name;
   std::vector<int> input_offsets;      // into Context signals, per input port
   std::vector<int> input_sizes;        // per input port (copied here: read on every tick)
   std::vector<int> output_offsets;     // into Context signals, per output port

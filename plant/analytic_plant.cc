@@ -46,7 +46,7 @@ Vector to_continuous(const Vector& y) {
 }  // namespace
 
 AnalyticPlant::AnalyticPlant(std::string name, const RobotParams& params, double initial_pitch)
-    : Block(std::move(name)), params_(params) {
+    : RobotPlant(std::move(name)), params_(params) {
   params_.validate();
   const InputPort& torque = declare_input_port(
       "torque", kTorqueSize, "tau_l, tau_r: motor torques body -> wheel, N m (saturated here)");

@@ -5,6 +5,7 @@
 #include "framework/block.h"
 #include "framework/context.h"
 #include "plant/robot_params.h"
+#include "plant/robot_plant.h"
 
 namespace cbbg::plant {
 
@@ -27,7 +28,7 @@ namespace cbbg::plant {
 /// state output reads only this state, never the torque directly.
 /// Parameters: RobotParams (plant.*); the initial pitch (trial.theta0), the rest zero.
 /// Errors: a non-finite torque or state throws SimulationError naming the block.
-class AnalyticPlant final : public Block {
+class AnalyticPlant final : public RobotPlant {
  public:
   AnalyticPlant(std::string name, const RobotParams& params,
                 double initial_pitch = kDefaultInitialPitch);
@@ -36,7 +37,7 @@ class AnalyticPlant final : public Block {
 
   // Puts the robot at theta_b = initial_pitch (trial.theta0), everything else zero. Only
   // rewrites this block's state in `context` (a context of the root diagram).
-  void reset(Context& context, double initial_pitch) const;
+  void reset(Context& context, double initial_pitch) const override;
   // Sets the whole state from a vector in the output layout (plant_ports.h); the yaw rate
   // is not stored: it follows from the wheel rates.
   void set_state(Context& context, const Vector& state) const;

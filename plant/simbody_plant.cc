@@ -55,7 +55,7 @@ class SimbodyPlant::Scratch final : public BlockScratch {
 };
 
 SimbodyPlant::SimbodyPlant(std::string name, const RobotParams& params, double initial_pitch)
-    : Block(std::move(name)), params_(params) {
+    : RobotPlant(std::move(name)), params_(params) {
   params_.validate_rigid_bodies();
   const InputPort& torque = declare_input_port(
       "torque", kTorqueSize, "tau_l, tau_r: motor torques body -> wheel, N m (saturated here)");

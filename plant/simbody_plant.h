@@ -6,6 +6,7 @@
 #include "framework/block.h"
 #include "framework/context.h"
 #include "plant/robot_params.h"
+#include "plant/robot_plant.h"
 
 namespace cbbg::plant {
 
@@ -37,7 +38,7 @@ namespace cbbg::plant {
 /// pitch (trial.theta0), the rest zero.
 /// Errors: a non-finite torque or state, or a Simbody failure, throws SimulationError naming
 /// the block.
-class SimbodyPlant final : public Block {
+class SimbodyPlant final : public RobotPlant {
  public:
   SimbodyPlant(std::string name, const RobotParams& params,
                double initial_pitch = kDefaultInitialPitch);
@@ -47,7 +48,7 @@ class SimbodyPlant final : public Block {
 
   // Puts the robot at theta_b = initial_pitch (trial.theta0), everything else zero. Only
   // rewrites this block's state in `context` (a context of the root diagram).
-  void reset(Context& context, double initial_pitch) const;
+  void reset(Context& context, double initial_pitch) const override;
   // Sets the whole state from a vector in the output layout (plant_ports.h); the yaw rate
   // is not read: it follows from the wheel rates.
   void set_state(Context& context, const Vector& state) const;

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Installs the built framework into a scratch prefix, builds examples/ against it as a user's
-# own project would (find_package(cbbg)), and runs the example.
+# Installs the built project into a scratch prefix, builds examples/ against it as a user's
+# own project would (find_package(cbbg)), and runs both examples: the framework alone, and a
+# user's supervisor through experiment 1 against the cbbg preset, writing a results directory.
+# Also runs the installed `cbbg` command, which must find its plotting script by itself.
 #   test_find_package.sh BUILD_DIR
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -11,6 +13,30 @@ cmake --install "$build" --prefix "$scratch/prefix" >/dev/null
 cmake -S "$root/examples" -B "$scratch/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$scratch/prefix" >/dev/null
 cmake --build "$scratch/example" >/dev/null
+
 "$scratch/example/spring_mass" "$scratch/out"
 test -s "$scratch/out/position.csv"
 grep -q "digraph" "$scratch/out/spring_mass.dot"
+
+"$scratch/example/own_supervisor" "$scratch/ablation" 2
+for file in config.yaml summary.json trials.csv evaluation.csv steps.csv; do
+  test -s "$scratch/ablation/$file" || { echo "missing $file" >&2; exit 1; }
+done
+grep -q '"cbbg_saturated_pd"' "$scratch/ablation/summary.json"
+grep -q '"cbbg"' "$scratch/ablation/summary.json"
+ls "$scratch/ablation/weights/cbbg_saturated_pd_seed1.txt" >/dev/null
+figure="$(ls "$scratch/ablation/figures/"diagram.*)"
+grep -q "cerebellum" "$figure"
+
+# The installed command runs from anywhere, its plots included, with no source tree in sight.
+(cd "$scratch" && "$scratch/prefix/bin/cbbg" run --experiment pd_only --seeds 1 \
+  --set plant.kind=analytic --set trial.duration=1 --out "$scratch/installed" >/dev/null 2>&1)
+test -s "$scratch/installed/summary.json"
+if [ -x /usr/bin/python3 ] && /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
+  ls "$scratch/installed/figures/"*.png >/dev/null
+fi
+if strings "$scratch/prefix/bin/cbbg" | grep -q "$root"; then
+  echo "the installed cbbg names the source tree $root" >&2
+  exit 1
+fi
+echo "find_package example: ok"

@@ -11,8 +11,8 @@
 
 #include "bench/ratio_reporter.h"
 #include "config/config.h"
-#include "diagrams/controller_diagram.h"
-#include "diagrams/trial_runner.h"
+#include "diagrams/presets.h"
+#include "experiments/trial_runner.h"
 #include "tests/diagrams/plain_loop.h"
 
 namespace cbbg::bench {
@@ -36,15 +36,15 @@ void count_ticks(benchmark::State& state, long long ticks) {
 
 void BM_DiagramTrial(benchmark::State& state) {
   const config::Config config = analytic_config();
-  const diagrams::ControllerDiagram controller = diagrams::build_controller_diagram("cbbg", config);
+  const diagrams::ClosedLoop controller = diagrams::build_preset("cbbg", config);
   const double theta0 = config.number("trial.theta0");
   const double duration = config.number("trial.duration");
   long long ticks = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    diagrams::TrialRunner runner(controller, kSeed, config.number("trial.period"));
+    experiments::TrialRunner runner(controller, kSeed, config.number("trial.period"));
     state.ResumeTiming();
-    const diagrams::TrialOutcome outcome = runner.run_trial(theta0, duration);
+    const experiments::TrialOutcome outcome = runner.run_trial(theta0, duration);
     ticks = outcome.steps;
     benchmark::DoNotOptimize(outcome.final_theta);
   }

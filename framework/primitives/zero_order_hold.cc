@@ -14,7 +14,7 @@ ZeroOrderHold::ZeroOrderHold(std::string name, const Vector& initial_value, doub
     : Block(std::move(name)) {
   const int size = static_cast<int>(initial_value.size());
   const InputPort& u = declare_input_port("u", size, "the signal to sample");
-  declare_discrete_state(initial_value);
+  declare_discrete_state("held", initial_value, StateLifetime::kPerTrial);
   declare_output_port(
       "y", size, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {},
       "the held sample");

@@ -209,7 +209,7 @@ TEST(Actor, StartTrialForgetsThePreviousTickAndKeepsTheWeights) {
   harness.tick();
   const Vector learnt = harness.block().weights(harness.context());
   ASSERT_NE(learnt, vector2(0.0, 0.0));
-  harness.block().start_trial(harness.context());
+  harness.context().reset_trial_state();
   harness.restart_time();
   set_tick(harness, {vector2(1.0, 1.0), -3.0, 2.0, 1.0, 0.25});
   harness.tick();

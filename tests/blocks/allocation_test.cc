@@ -93,10 +93,7 @@ TEST(BlocksAllocation, ATickOfEveryLearningBlockAllocatesNothing) {
   EXPECT_NE(critic.weights(simulator.context()).norm(), 0.0);
   EXPECT_NE(actor.weights(simulator.context()).norm(), 0.0);
   const long long before_reset = cbbg::testing::allocation_count();
-  sensors.start_trial(simulator.context());
-  reward.start_trial(simulator.context());
-  critic.start_trial(simulator.context());
-  actor.start_trial(simulator.context());
+  simulator.context().reset_trial_state();
   EXPECT_EQ(cbbg::testing::allocation_count() - before_reset, 0);
 }
 

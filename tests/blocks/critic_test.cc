@@ -101,7 +101,7 @@ TEST(Critic, StartTrialClearsTheTraceAndPreviousTickButKeepsTheWeights) {
   const Vector learnt = harness.block().weights(harness.context());
   ASSERT_NE(learnt, vector2(0.0, 0.0));
 
-  harness.block().start_trial(harness.context());
+  harness.context().reset_trial_state();
   harness.restart_time();
   // The first tick of the new trial must not learn from the last tick of the previous one.
   set_tick(harness, vector2(1.0, 1.0), -1.0, false);
@@ -128,7 +128,7 @@ class RandomWalk final : public Block {
   static constexpr int kRightEnd = 6;
 
   explicit RandomWalk(std::string name) : Block(std::move(name)) {
-    declare_discrete_state(Vector::Constant(1, kStart));
+    declare_discrete_state("position", Vector::Constant(1, kStart), StateLifetime::kPerTrial);
     declare_output_port("features", kRightEnd - 1,
                         [](const BlockContext& context, VectorRef features) {
                           features.setZero();
@@ -183,9 +183,7 @@ TEST(Critic, ConvergesToTrueValuesOnRandomWalk) {
   for (int episode = 0; episode < episodes; ++episode) {
     const SimulationStatus status = simulator.advance_to(1e6);
     ASSERT_TRUE(status.terminated);
-    context.discrete_state(walk)[0] = RandomWalk::kStart;
-    critic.start_trial(context);
-    context.set_time(0.0);
+    context.reset_trial_state();  // the walk back at its start, the critic's trace cleared
     simulator.initialize();
   }
   const Vector w = critic.weights(context);

@@ -60,7 +60,7 @@ TEST(Reward, UsesConfiguredSurfaceWeights) {
 TEST(Reward, StartTrialForgetsThePreviousSurface) {
   Harness harness("reward", RewardParams{}, kPeriod);
   EXPECT_EQ(reward_at(harness, 0.0, 0.0), 0.0);  // s = 0: anything after it is a growth
-  harness.block().start_trial(harness.context());
+  harness.context().reset_trial_state();
   harness.restart_time();
   EXPECT_EQ(reward_at(harness, 0.1, 0.0), 0.0);  // a first tick again: no transition
   EXPECT_EQ(reward_at(harness, 0.2, 0.0), -1.0);

@@ -80,14 +80,16 @@ TEST(Sensors, NoiseHasTheConfiguredDeviationOnItsSignalOnly) {
   EXPECT_NEAR(variance, 0.04, 5.0 * 0.04 * std::sqrt(2.0 / n));
 }
 
-TEST(Sensors, StartTrialDrawsFreshNoise) {
+TEST(Sensors, ANewTrialDrawsFreshNoise) {
   SensorsParams params;
   params.noise_std.fill(1.0);
   Harness harness("sensors", params, kPeriod);
   harness.set_input("plant_state", plant_state());
   harness.tick();
   const Vector before = harness.state();
-  harness.block().start_trial(harness.context());
+  harness.context().reset_trial_state();
+  EXPECT_EQ(harness.state(), Vector::Zero(kMeasuredSize));  // the noise is per trial
+  harness.restart_time();  // the trial's initialisation draws the first tick's noise
   const Vector after = harness.state();
   for (int i = 0; i < kMeasuredSize; ++i) {
     EXPECT_NE(after[i], before[i]) << "signal " << i;

@@ -43,6 +43,9 @@ struct ArmShape {
   bool has_supervisor;
   OmegaMode omega;
   bool weighted_rule_forced;
+  bool basal_ganglia = true;
+  bool learning = true;
+  bool exploration = true;
 };
 
 ArmShape parse_arm(std::string_view arm) {
@@ -50,8 +53,11 @@ ArmShape parse_arm(std::string_view arm) {
   if (arm == "cbbg_weighted") return {true, OmegaMode::kSchedule, true};
   if (arm == "bg_only") return {false, OmegaMode::kOne, false};
   if (arm == "cb_only") return {true, OmegaMode::kZero, false};
+  if (arm == "pd_only") return {true, OmegaMode::kZero, false, false};
+  if (arm == "learnt_actor") return {false, OmegaMode::kOne, false, true, false, false};
   throw std::invalid_argument(
-      "PlainLoop: the arm must be cbbg, cbbg_weighted, bg_only or cb_only; got '" +
+      "PlainLoop: the arm must be cbbg, cbbg_weighted, bg_only, cb_only, pd_only or "
+      "learnt_actor; got '" +
       std::string(arm) + "'");
 }
 
@@ -74,6 +80,9 @@ struct PlainLoop::State {
   double reward_a1, reward_a2;
   double k_theta, k_dtheta, k_phi, k_dphi;
   bool has_supervisor;
+  bool basal_ganglia;
+  bool learning;
+  bool exploration;
   double scale_theta, scale_dtheta, saturation;
   std::vector<double> centres;
   double inverse_two_width_squared;
@@ -110,12 +119,13 @@ struct PlainLoop::State {
   Eigen::VectorXd features;  // phi(s_t), working memory
   std::vector<PlainLoopTick> ticks;
 
-  State(const config::Config& config, std::uint64_t root_seed, std::string_view arm)
-      : generator(derive_seed(root_seed, std::string(arm) + "/sampler")),
+  State(const config::Config& config, std::uint64_t root_seed)
+      : generator(derive_seed(root_seed, "controller/basal_ganglia/sampler")),
         stepper(Stepper::error_checker_type(config.number("plant.accuracy"),
                                             config.number("plant.accuracy"))) {}
 
   bool tick();
+  bool supervisor_alone(bool failed, double reward, double surface, double supervisor_action);
   void derivatives(const OdeState& state, OdeState& rate) const;
   bool integrate(double start_time, double end_time);
 };
@@ -131,7 +141,7 @@ PlainLoop::PlainLoop(const config::Config& config, std::uint64_t root_seed, std:
   require_all_zero(config, "sensors.quantisation");
   diagrams::validate_all(config);
 
-  state_ = std::make_unique<State>(config, root_seed, arm);
+  state_ = std::make_unique<State>(config, root_seed);
   State& s = *state_;
   s.robot = diagrams::robot_params(config);
   s.period = config.number("trial.period");
@@ -143,6 +153,9 @@ PlainLoop::PlainLoop(const config::Config& config, std::uint64_t root_seed, std:
   s.k_phi = config.number("supervisor.k_phi");
   s.k_dphi = config.number("supervisor.k_dphi");
   s.has_supervisor = shape.has_supervisor;
+  s.basal_ganglia = shape.basal_ganglia;
+  s.learning = shape.learning;
+  s.exploration = shape.exploration;
   s.scale_theta = config.number("normaliser.scale_theta");
   s.scale_dtheta = config.number("normaliser.scale_dtheta");
   s.saturation = config.number("normaliser.saturation");
@@ -176,6 +189,11 @@ const std::vector<PlainLoopTick>& PlainLoop::ticks() const { return state_->tick
 const Eigen::VectorXd& PlainLoop::critic_weights() const { return state_->critic_weights; }
 const Eigen::VectorXd& PlainLoop::actor_weights() const { return state_->actor_weights; }
 
+void PlainLoop::set_weights(const Eigen::VectorXd& critic, const Eigen::VectorXd& actor) {
+  state_->critic_weights = critic;
+  state_->actor_weights = actor;
+}
+
 PlainLoopOutcome PlainLoop::run_trial(double theta0, double duration) {
   State& s = *state_;
   // A new trial: the robot at theta0, at rest; the trace, the previous tick and the
@@ -191,7 +209,9 @@ PlainLoopOutcome PlainLoop::run_trial(double theta0, double duration) {
   s.previous_exploration_action = 0.0;
   s.previous_actor_action = 0.0;
   s.previous_omega = 0.0;
-  s.noise = draw_standard_normal(s.generator);  // the sampler's draw for the first tick
+  if (s.basal_ganglia && s.exploration) {
+    s.noise = draw_standard_normal(s.generator);  // the sampler's draw for the first tick
+  }
   s.ticks.clear();
   s.ticks.reserve(static_cast<size_t>(std::ceil(duration / s.period)) + 1);
 
@@ -252,6 +272,7 @@ bool PlainLoop::State::tick() {
                                              k_phi * (phi_left + phi_right) / 2.0 +
                                              k_dphi * (phi_left_dot + phi_right_dot) / 2.0
                                        : 0.0;
+  if (!basal_ganglia) return supervisor_alone(failed, reward, surface, supervisor_action);
 
   // Normalised, saturated state and its Gaussian features on the grid.
   const double x0 = std::clamp(theta / scale_theta, -saturation, saturation);
@@ -273,9 +294,12 @@ bool PlainLoop::State::tick() {
                    : 0.0;
 
   const double actor_action = actor_weights.dot(features);
-  const double temperature = k1 / (1.0 + std::exp(k2 * value));
-  const double exploration_action = actor_action + std::sqrt(k_b * temperature / 2.0) * noise;
-  const double entropy = 0.5 * std::log2(std::numbers::pi * std::numbers::e * k_b * temperature);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double temperature = exploration ? k1 / (1.0 + std::exp(k2 * value)) : nan;
+  const double exploration_action =
+      exploration ? actor_action + std::sqrt(k_b * temperature / 2.0) * noise : actor_action;
+  const double entropy =
+      exploration ? 0.5 * std::log2(std::numbers::pi * std::numbers::e * k_b * temperature) : nan;
   double omega = 0.0;
   switch (omega_mode) {
     case OmegaMode::kZero:
@@ -296,9 +320,9 @@ bool PlainLoop::State::tick() {
 
   // Updates, all from the values above and the memories before this tick.
   omega_ticks += 1.0;
-  noise = draw_standard_normal(generator);
+  if (exploration) noise = draw_standard_normal(generator);
   previous_surface = surface;
-  if (has_previous) {
+  if (has_previous && learning) {
     trace = gamma * lambda * trace + previous_features;
     critic_weights = critic_weights + beta * td_error * trace;
     const double a_s = previous_supervisor_action;
@@ -317,6 +341,18 @@ bool PlainLoop::State::tick() {
   previous_omega = omega;
   has_previous = true;
   held_torque = action;  // the zero-order hold samples a at t
+  return failed;
+}
+
+// A tick of the supervisor alone: a = a_S, and the signals of the learning blocks NaN.
+bool PlainLoop::State::supervisor_alone(bool failed, double reward, double surface,
+                                        double supervisor_action) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  ticks.push_back({x[0], x[3], x[1], x[2], x[4], x[5], supervisor_action, nan, nan,
+                   supervisor_action, 0.0, nan, nan, nan, reward, nan});
+  previous_surface = surface;
+  has_previous = true;
+  held_torque = supervisor_action;
   return failed;
 }
 

@@ -1,11 +1,11 @@
 #pragma once
-// SPEC section 2 written as one plain C++ loop, without the framework: no Block, Diagram,
-// Context or Simulator. It drives the analytic plant (plant/robot_dynamics.h) through the
-// same Boost.Odeint stepper the Simulator uses and repeats each block's floating-point
-// operations in the blocks' order (dot products through Eigen, as the blocks do), so for the same
-// root seed it must give bit-identical numbers to the diagram diagrams::build_controller_diagram
-// builds. It is the reference of the diagram-wiring test and the baseline of the diagram overhead
-// benchmark.
+// The learning controller of docs/model.md §2 written as one plain C++ loop, without the
+// framework: no Block, Diagram, Context or Simulator. It drives the analytic plant
+// (plant/robot_dynamics.h) through the same Boost.Odeint stepper the Simulator uses and
+// repeats each block's floating-point operations in the blocks' order (dot products through
+// Eigen, as the blocks do), so for the same root seed it must give bit-identical numbers to
+// the closed loop of every preset (diagrams::build_preset). It is the reference of the
+// diagram-wiring test and the baseline of the diagram overhead benchmark.
 //
 // One tick at t, as the Simulator's step semantics order it: every signal is computed from
 // the state at t (sensors, failure, reward, supervisor, normaliser, features, critic, actor,
@@ -56,11 +56,12 @@ struct PlainLoopOutcome {
 
 class PlainLoop {
  public:
-  // The learner of diagram `arm` (cbbg, cbbg_weighted, bg_only or cb_only) with the
-  // parameters of `config` and the sampler's generator seeded as the diagram's block
-  // "<arm>/sampler" is under `root_seed`. Throws std::invalid_argument for another arm or
-  // for a config this loop does not write out (sensor noise or quantisation, a supervisor
-  // other than pd); config::ConfigError for a value a block would reject.
+  // The closed loop of preset `arm` (cbbg, cbbg_weighted, bg_only, cb_only, pd_only or
+  // learnt_actor) with the parameters of `config` and the sampler's generator seeded as the
+  // preset's block "controller/basal_ganglia/sampler" is under `root_seed`. Throws
+  // std::invalid_argument for another arm or for a config this loop does not write out (sensor
+  // noise or quantisation, a supervisor other than pd); config::ConfigError for a value a block
+  // would reject.
   PlainLoop(const config::Config& config, std::uint64_t root_seed, std::string_view arm = "cbbg");
   ~PlainLoop();
   PlainLoop(const PlainLoop&) = delete;
@@ -75,6 +76,8 @@ class PlainLoop {
   // The learnt weights: the critic's w and the actor's theta.
   const Eigen::VectorXd& critic_weights() const;
   const Eigen::VectorXd& actor_weights() const;
+  // Where learning starts (the weights a learnt actor is evaluated with).
+  void set_weights(const Eigen::VectorXd& critic, const Eigen::VectorXd& actor);
 
  private:
   struct State;

@@ -10,14 +10,15 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "config/config.h"
-#include "diagrams/controller_diagram.h"
-#include "diagrams/trial_runner.h"
+#include "diagrams/presets.h"
+#include "experiments/trial_runner.h"
 #include "tests/diagrams/plain_loop.h"
 
 namespace cbbg::tests {
@@ -71,9 +72,10 @@ const char* to_string(PlainLoopStatus status) {
 }
 
 // Success when the diagram's trial and the loop's have the same outcome, the same number
-// of ticks and equal doubles (operator==, as EXPECT_EQ compares) in every signal at every
-// tick; otherwise names the first differing signal and tick with both values.
-testing::AssertionResult SameTrial(const diagrams::TrialOutcome& diagram_outcome,
+// of ticks and equal doubles (operator==, as EXPECT_EQ compares, or both NaN: a signal the
+// preset does not have) in every signal at every tick; otherwise names the first differing signal
+// and tick with both values.
+testing::AssertionResult SameTrial(const experiments::TrialOutcome& diagram_outcome,
                                    const SignalLog& telemetry, const PlainLoopOutcome& loop_outcome,
                                    const std::vector<PlainLoopTick>& loop_ticks) {
   const int ticks = telemetry.num_samples();
@@ -82,7 +84,7 @@ testing::AssertionResult SameTrial(const diagrams::TrialOutcome& diagram_outcome
     for (const Signal& signal : kSignals) {
       const double from_diagram = sample[signal.index];
       const double from_loop = loop_ticks[static_cast<size_t>(k)].*signal.field;
-      if (!(from_diagram == from_loop)) {
+      if (!(from_diagram == from_loop) && !(std::isnan(from_diagram) && std::isnan(from_loop))) {
         return testing::AssertionFailure()
                << signal.name << " differs at tick " << k << ": diagram " << exact(from_diagram)
                << ", plain loop " << exact(from_loop);
@@ -96,9 +98,10 @@ testing::AssertionResult SameTrial(const diagrams::TrialOutcome& diagram_outcome
            << "), the plain loop " << loop_ticks.size() << " (outcome: " << loop_outcome.steps
            << ")";
   }
-  if (std::string(diagrams::to_string(diagram_outcome.status)) != to_string(loop_outcome.status)) {
+  if (std::string(experiments::to_string(diagram_outcome.status)) !=
+      to_string(loop_outcome.status)) {
     return testing::AssertionFailure()
-           << "the diagram's trial ended " << diagrams::to_string(diagram_outcome.status)
+           << "the diagram's trial ended " << experiments::to_string(diagram_outcome.status)
            << ", the plain loop's " << to_string(loop_outcome.status);
   }
   if (!(diagram_outcome.final_theta == loop_outcome.final_theta)) {
@@ -128,19 +131,32 @@ config::Config analytic_config() {
 
 // The diagram's trial outcomes, and whether every trial matched the plain loop's.
 struct BothRuns {
-  std::vector<diagrams::TrialOutcome> outcomes;
+  std::vector<experiments::TrialOutcome> outcomes;
   testing::AssertionResult all_match = testing::AssertionSuccess();
 };
 
-// Runs one trial from each of `theta0s` in turn with diagram `arm` under `config` and root
-// seed `seed`, and with the plain loop under `loop_config` and `loop_seed`; stops at the
-// first trial whose ticks, outcome or learnt weights differ and says where.
+// Learnt weights to start from: the critic's and the actor's.
+struct StartWeights {
+  Eigen::VectorXd critic;
+  Eigen::VectorXd actor;
+};
+
+// Runs one trial from each of `theta0s` in turn with preset `arm` under `config` and root
+// seed `seed`, and with the plain loop under `loop_config` and `loop_seed`, both from
+// `start` where given; stops at the first trial whose ticks, outcome or learnt weights
+// differ and says where.
 BothRuns run_both(const std::string& arm, const config::Config& config,
                   const config::Config& loop_config, std::uint64_t seed, std::uint64_t loop_seed,
-                  const std::vector<double>& theta0s) {
-  const diagrams::ControllerDiagram controller = diagrams::build_controller_diagram(arm, config);
-  diagrams::TrialRunner runner(controller, seed, config.number("trial.period"));
+                  const std::vector<double>& theta0s,
+                  const std::optional<StartWeights>& start = std::nullopt) {
+  const diagrams::ClosedLoop controller = diagrams::build_preset(arm, config);
+  experiments::TrialRunner runner(controller, seed, config.number("trial.period"));
   PlainLoop loop(loop_config, loop_seed, arm);
+  if (start) {
+    controller.learner.critic->mutable_weights(runner.context()) = start->critic;
+    controller.learner.actor->mutable_weights(runner.context()) = start->actor;
+    loop.set_weights(start->critic, start->actor);
+  }
   const double duration = config.number("trial.duration");
   BothRuns run;
   for (size_t trial = 0; trial < theta0s.size(); ++trial) {
@@ -148,12 +164,13 @@ BothRuns run_both(const std::string& arm, const config::Config& config,
     const PlainLoopOutcome loop_outcome = loop.run_trial(theta0s[trial], duration);
     testing::AssertionResult same =
         SameTrial(run.outcomes.back(), runner.telemetry(), loop_outcome, loop.ticks());
-    if (same) {
-      same = SameWeights("w", controller.critic->weights(runner.context()), loop.critic_weights());
+    if (same && controller.learner.learns()) {
+      same = SameWeights("w", controller.learner.critic->weights(runner.context()),
+                         loop.critic_weights());
     }
-    if (same) {
-      same =
-          SameWeights("theta", controller.actor->weights(runner.context()), loop.actor_weights());
+    if (same && controller.learner.learns()) {
+      same = SameWeights("theta", controller.learner.actor->weights(runner.context()),
+                         loop.actor_weights());
     }
     if (!same) {
       run.all_match = testing::AssertionFailure() << arm << ", seed " << seed << ", trial "
@@ -173,10 +190,10 @@ TEST(PlainLoopEquivalence, CbbgTrialMatchesTheDiagramBitForBitForThreeSeeds) {
     ASSERT_EQ(run.outcomes.size(), 1u);
     // A whole trial: the 20 s of a success (2000 ticks at 10 ms) or up to a failure.
     const auto& outcome = run.outcomes.front();
-    if (outcome.status == diagrams::TrialStatus::kSuccess) {
+    if (outcome.status == experiments::TrialStatus::kSuccess) {
       EXPECT_EQ(outcome.steps, 2000) << "seed " << seed;
     } else {
-      EXPECT_EQ(outcome.status, diagrams::TrialStatus::kFailed) << "seed " << seed;
+      EXPECT_EQ(outcome.status, experiments::TrialStatus::kFailed) << "seed " << seed;
       EXPECT_GT(std::abs(outcome.final_theta), config.number("trial.failure_angle"));
     }
   }
@@ -192,8 +209,8 @@ TEST(PlainLoopEquivalence, ConsecutiveCbbgTrialsMatchAsWeightsAndOmegaCarryOver)
   const BothRuns run = run_both("cbbg", config, config, 7, 7, {theta0, theta0, theta0, theta0});
   EXPECT_TRUE(run.all_match);
   ASSERT_EQ(run.outcomes.size(), 4u);
-  EXPECT_EQ(run.outcomes[0].status, diagrams::TrialStatus::kSuccess);
-  EXPECT_EQ(run.outcomes[1].status, diagrams::TrialStatus::kFailed);
+  EXPECT_EQ(run.outcomes[0].status, experiments::TrialStatus::kSuccess);
+  EXPECT_EQ(run.outcomes[1].status, experiments::TrialStatus::kFailed);
 }
 
 TEST(PlainLoopEquivalence, BgOnlyTrialsMatchTheDiagramThroughFailures) {
@@ -203,7 +220,7 @@ TEST(PlainLoopEquivalence, BgOnlyTrialsMatchTheDiagramThroughFailures) {
   const BothRuns run = run_both("bg_only", config, config, 3, 3, {theta0, theta0, theta0});
   EXPECT_TRUE(run.all_match);
   ASSERT_EQ(run.outcomes.size(), 3u);
-  EXPECT_EQ(run.outcomes[0].status, diagrams::TrialStatus::kFailed);
+  EXPECT_EQ(run.outcomes[0].status, experiments::TrialStatus::kFailed);
 }
 
 TEST(PlainLoopEquivalence, WeightedRuleAndCbOnlyMatchTheDiagram) {
@@ -214,6 +231,31 @@ TEST(PlainLoopEquivalence, WeightedRuleAndCbOnlyMatchTheDiagram) {
     EXPECT_TRUE(run.all_match);
     EXPECT_EQ(run.outcomes.size(), 2u);
   }
+}
+
+TEST(PlainLoopEquivalence, PdOnlyMatchesTheDiagram) {
+  const config::Config config = analytic_config();
+  const BothRuns run = run_both("pd_only", config, config, 1, 1, {0.1744, 0.3});
+  EXPECT_TRUE(run.all_match);
+  ASSERT_EQ(run.outcomes.size(), 2u);
+  EXPECT_EQ(run.outcomes[0].status, experiments::TrialStatus::kSuccess);
+}
+
+TEST(PlainLoopEquivalence, TheLearntActorMatchesTheDiagramAndKeepsItsWeights) {
+  // Weights learnt by bg_only over a few trials, then the learnt actor alone from them.
+  const config::Config config = analytic_config();
+  PlainLoop learner(config, 3, "bg_only");
+  for (int trial = 0; trial < 6; ++trial) learner.run_trial(0.1744, 20.0);
+  const StartWeights learnt{learner.critic_weights(), learner.actor_weights()};
+  ASSERT_GT(learnt.actor.norm(), 0.0);
+  const BothRuns run = run_both("learnt_actor", config, config, 1, 1, {0.05, 0.1744}, learnt);
+  EXPECT_TRUE(run.all_match);
+  EXPECT_EQ(run.outcomes.size(), 2u);
+  PlainLoop alone(config, 1, "learnt_actor");
+  alone.set_weights(learnt.critic, learnt.actor);
+  alone.run_trial(0.1, 20.0);
+  EXPECT_EQ(alone.actor_weights(), learnt.actor);  // frozen
+  EXPECT_EQ(alone.critic_weights(), learnt.critic);
 }
 
 TEST(PlainLoopEquivalence, DetectsAnotherSamplerStream) {
@@ -238,9 +280,10 @@ TEST(PlainLoopEquivalence, DetectsAOneUlpChangeOfTheCriticRate) {
 
 TEST(PlainLoop, RejectsWhatItDoesNotWriteOut) {
   const config::Config config = analytic_config();
-  EXPECT_THAT([&] { PlainLoop loop(config, 1, "pd_only"); },
+  EXPECT_THAT([&] { PlainLoop loop(config, 1, "cbbg_fast"); },
               testing::ThrowsMessage<std::invalid_argument>(testing::HasSubstr(
-                  "the arm must be cbbg, cbbg_weighted, bg_only or cb_only; got 'pd_only'")));
+                  "the arm must be cbbg, cbbg_weighted, bg_only, cb_only, pd_only or "
+                  "learnt_actor; got 'cbbg_fast'")));
   config::Config noisy = config;
   noisy.set("sensors.noise_std=[0, 0.01, 0, 0, 0, 0]");
   EXPECT_THAT([&] { PlainLoop loop(noisy, 1); },

@@ -16,7 +16,7 @@ class Noise final : public Block {
  public:
   explicit Noise(std::string name) : Block(std::move(name)) {
     scale_ = declare_parameter("scale", Vector::Ones(1));
-    declare_discrete_state(Vector::Zero(1));
+    declare_discrete_state("state", Vector::Zero(1), StateLifetime::kPersistent);
     declare_output_port("y", 1,
                         [this](const BlockContext& context, VectorRef y) {
                           y = context.parameter(scale_)[0] * context.discrete_state();
@@ -92,8 +92,19 @@ TEST(Context, GeneratorsComeFromTheRootSeedAndTheBlockPath) {
   EXPECT_EQ(draw(*seven, *first), draw(*seven_again, *first));
   EXPECT_NE(draw(*seven, *second), draw(*seven, *first));
   EXPECT_NE(draw(*eight, *first), draw(*seven_again, *first));
-  RandomGenerator expected(derive_seed(7, "top/first"));
+  // The path below the root: the root's own name does not enter.
+  RandomGenerator expected(derive_seed(7, "first"));
   EXPECT_EQ(diagram->create_context(7)->random_generator(*first)(), expected());
+}
+
+TEST(Context, DiagramsThatDifferOnlyInTheirRootsNameShareTheirStreams) {
+  // Two arms of a comparison: the same blocks under roots of other names.
+  DiagramBuilder builder("other_arm");
+  auto& first = builder.emplace<Noise>("first");
+  const auto other = builder.build();
+  auto [diagram, original_first, second] = make_noise_diagram();
+  EXPECT_EQ(other->create_context(3)->random_generator(first),
+            diagram->create_context(3)->random_generator(*original_first));
 }
 
 TEST(Context, ReseedingRepeatsTheDraws) {

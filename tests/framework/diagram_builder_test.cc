@@ -16,6 +16,49 @@ using ::testing::HasSubstr;
 
 using testing::error_of;
 
+// A subsystem that builds itself and keeps typed accessors (DiagramBuilder(Diagram&)).
+class Amplifier final : public Diagram {
+ public:
+  explicit Amplifier(double gain) : Diagram("amplifier") {
+    DiagramBuilder builder(*this);
+    auto& stage = builder.emplace<Gain>("stage", gain, 1);
+    stage_ = &stage;
+    input_ = &builder.export_input(stage.input_port("u"), "in");
+    output_ = &builder.export_output(stage.output_port("y"), "out");
+    builder.build_into();
+  }
+  const InputPort& in() const { return *input_; }
+  const OutputPort& out() const { return *output_; }
+  const Gain& stage() const { return *stage_; }
+
+ private:
+  const InputPort* input_;
+  const OutputPort* output_;
+  const Gain* stage_;
+};
+
+TEST(DiagramBuilder, BuildsIntoASubclassThatKeepsTypedAccessors) {
+  DiagramBuilder builder("top");
+  auto& source = builder.emplace<ConstantSource>("source", Vector::Constant(1, 2.0));
+  auto& amplifier = builder.add(std::make_unique<Amplifier>(3.0));
+  builder.connect(source.output_port("y"), amplifier.in());
+  const auto top = builder.build();
+  EXPECT_EQ(&amplifier.in(), &amplifier.input_port("in"));
+  EXPECT_EQ(amplifier.stage().path(), "top/amplifier/stage");
+  auto context = top->create_context();
+  EXPECT_EQ(top->eval_output(*context, amplifier.out())[0], 6.0);
+}
+
+TEST(DiagramBuilder, BuildIntoAndBuildAreNotInterchangeable) {
+  DiagramBuilder own("own");
+  EXPECT_EQ(error_of<std::logic_error>([&] { own.build_into(); }),
+            "DiagramBuilder: this builder makes its own diagram; call build()");
+  Amplifier built(1.0);
+  EXPECT_EQ(error_of<std::logic_error>([&] { DiagramBuilder again(built); }),
+            "DiagramBuilder: diagram 'amplifier' is already built; a builder builds into an empty "
+            "diagram");
+}
+
 TEST(DiagramBuilder, ConnectRejectsSizeMismatchNamingBothPortsAndSizes) {
   DiagramBuilder builder("top");
   auto& source = builder.emplace<ConstantSource>("source", Vector::Zero(2));

@@ -238,6 +238,13 @@ TEST(Graphviz, NestsEachClusterInsideItsParent) {
   EXPECT_THAT(dot, HasSubstr("\n        \"top/plant/actuator/motor\" ["));
 }
 
+TEST(Graphviz, LeavesHiddenBlocksAndTheirEdgesOut) {
+  const std::string dot = to_dot(*flat_diagram(), {.hidden_blocks = {"top/gain"}});
+  EXPECT_THAT(dot, ::testing::Not(HasSubstr("\"top/gain\"")));
+  EXPECT_THAT(dot, HasSubstr("\"top/source\" [shape=plaintext"));
+  EXPECT_THAT(to_dot(*flat_diagram()), HasSubstr("\"top/gain\""));
+}
+
 TEST(Graphviz, DepthZeroCollapsesEverySubDiagramIntoABoxWithItsPorts) {
   const std::string dot = to_dot(*nested_diagram(), {.max_depth = 0});
   EXPECT_THAT(dot, HasSubstr(R"(subgraph "cluster_top" {)"));

@@ -75,7 +75,7 @@ TEST(SignalLog, StreamsTheSameBytesWithoutKeepingSamples) {
 class InitialisationCounter final : public Block {
  public:
   InitialisationCounter() : Block("initialised") {
-    declare_discrete_state(Vector::Zero(1));
+    declare_discrete_state("state", Vector::Zero(1), StateLifetime::kPersistent);
     declare_initialization_update([](BlockContext&, VectorRef next) {
       next[0] += 1.0;
       return EventStatus::succeeded();

@@ -197,7 +197,7 @@ TEST(Simulator, InitializationUpdatesRunOnceBeforeTheFirstInstant) {
   class InitialisedCounter final : public Block {
    public:
     InitialisedCounter() : Block("counter") {
-      declare_discrete_state(Vector::Zero(2));
+      declare_discrete_state("state", Vector::Zero(2), StateLifetime::kPersistent);
       declare_initialization_update([](BlockContext&, VectorRef next) {
         next[0] = 100.0;  // runs first: the periodic update at t = 0 then sees 100
         return EventStatus::succeeded();

@@ -55,7 +55,7 @@ class Counter final : public Block {
  public:
   Counter(std::string name, double period, double offset = 0.0, int stop_at = 0)
       : Block(std::move(name)) {
-    declare_discrete_state(Vector::Zero(1));
+    declare_discrete_state("state", Vector::Zero(1), StateLifetime::kPersistent);
     declare_output_port(
         "y", 1, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {});
     declare_periodic_update(period, offset, [stop_at](BlockContext&, VectorRef next) {
@@ -72,7 +72,7 @@ class IncrementInput final : public Block {
  public:
   IncrementInput(std::string name, double period) : Block(std::move(name)) {
     const InputPort& u = declare_input_port("u", 1);
-    declare_discrete_state(Vector::Zero(1));
+    declare_discrete_state("state", Vector::Zero(1), StateLifetime::kPersistent);
     declare_output_port(
         "y", 1, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {});
     declare_periodic_update(period, 0.0, [&u](BlockContext& context, VectorRef next) {

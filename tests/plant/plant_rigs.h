@@ -48,7 +48,7 @@ class TurningPdLaw final : public Block {
  public:
   TurningPdLaw(std::string name, double sigma) : Block(std::move(name)) {
     const InputPort& state = declare_input_port("state", kStateSize);
-    declare_discrete_state(Vector::Zero(kTorqueSize));
+    declare_discrete_state("state", Vector::Zero(kTorqueSize), StateLifetime::kPersistent);
     declare_output_port(
         "torque", kTorqueSize,
         [](const BlockContext& context, VectorRef torque) { torque = context.discrete_state(); },

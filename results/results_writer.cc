@@ -1,6 +1,7 @@
-#include "diagrams/results_writer.h"
+#include "results/results_writer.h"
 
-#include "diagrams/task_store.h"
+#include "results/task_store.h"
+#include "results/weights_file.h"
 
 #include <algorithm>
 #include <charconv>
@@ -8,7 +9,15 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace cbbg::diagrams {
+namespace cbbg::results {
+
+using experiments::EvaluationRecord;
+using experiments::SeedRun;
+using experiments::steps_csv_header;
+using experiments::to_string;
+using experiments::TrialOutcome;
+using experiments::TrialRecord;
+using experiments::TrialStatus;
 namespace {
 
 // The paper's failures before the first success (Fig. 11), for summary.json.
@@ -199,4 +208,4 @@ void RunDirectory::commit() {
   if (!previous.empty()) std::filesystem::remove_all(previous);
 }
 
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::results

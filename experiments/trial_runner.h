@@ -1,17 +1,17 @@
 #pragma once
-// Runs trials of a controller diagram in one context: the weights learnt in one trial carry
-// into the next. Each tick's telemetry feeds the trial's statistics, and optionally the rows
-// of steps.csv and an in-memory log, so memory stays flat however long a trial runs.
+// Runs trials of a closed loop (diagrams/closed_loop.h) in one context: the weights learnt in one
+// trial carry into the next. Each tick's telemetry feeds the trial's statistics, and optionally the
+// rows of steps.csv and an in-memory log, so memory stays flat however long a trial runs.
 
 #include <cstdint>
 #include <memory>
 #include <ostream>
 #include <string>
 
-#include "diagrams/controller_diagram.h"
+#include "diagrams/closed_loop.h"
 #include "framework/simulator.h"
 
-namespace cbbg::diagrams {
+namespace cbbg::experiments {
 
 enum class TrialStatus { kSuccess, kFailed, kDiverged };
 const char* to_string(TrialStatus status);
@@ -40,7 +40,7 @@ const char* steps_csv_header();
 
 class TrialRunner {
  public:
-  TrialRunner(const ControllerDiagram& controller, std::uint64_t seed, double period,
+  TrialRunner(const diagrams::ClosedLoop& loop, std::uint64_t seed, double period,
               TelemetryOptions telemetry = {});
 
   // Runs trial number `trial` from `theta0` until failure or `duration`. A non-finite state
@@ -48,7 +48,7 @@ class TrialRunner {
   TrialOutcome run_trial(double theta0, double duration, int trial = 1);
 
   Context& context() { return simulator_.context(); }
-  const ControllerDiagram& controller() const { return *controller_; }
+  const diagrams::ClosedLoop& loop() const { return *loop_; }
   // The telemetry of the last trial, one sample per tick (diagrams::TelemetryIndex), when
   // kept in memory.
   const SignalLog& telemetry() const { return *telemetry_; }
@@ -56,7 +56,7 @@ class TrialRunner {
  private:
   void record(double time, const double* values);
 
-  const ControllerDiagram* controller_;
+  const diagrams::ClosedLoop* loop_;
   Simulator simulator_;
   SignalLog* telemetry_;
   double period_;
@@ -68,4 +68,4 @@ class TrialRunner {
   std::string trial_prefix_;
 };
 
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::experiments

@@ -1,4 +1,4 @@
-#include "diagrams/torque_push.h"
+#include "blocks/torque_push.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include "blocks/parameter_checks.h"
 #include "framework/block_context.h"
 
-namespace cbbg::diagrams {
+namespace cbbg::blocks {
 
 void PushParams::validate() const {
   blocks::check_non_negative("push.start", start);
@@ -17,9 +17,9 @@ void PushParams::validate() const {
 TorquePush::TorquePush(std::string name, const PushParams& params, double period)
     : Block(std::move(name)), params_(params) {
   params_.validate();
-  blocks::check_period(period);
+  check_period(period);
   const InputPort& action = declare_input_port("action", 1, "the held action a, N m");
-  declare_discrete_state(Vector::Zero(1));
+  declare_discrete_state("push", Vector::Zero(1), StateLifetime::kPerTrial);
   declare_output_port(
       "torque", 1,
       [&action](const BlockContext& context, VectorRef torque) {
@@ -38,4 +38,4 @@ TorquePush::TorquePush(std::string name, const PushParams& params, double period
   });
 }
 
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::blocks

@@ -1,4 +1,4 @@
-#include "diagrams/weights_file.h"
+#include "results/weights_file.h"
 #include "tests/support/scratch_directory.h"
 
 #include <bit>
@@ -15,10 +15,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "diagrams/controller_diagram.h"
+#include "diagrams/presets.h"
 
-namespace cbbg::diagrams {
+namespace cbbg::results {
 namespace {
+
+using namespace cbbg::diagrams;
+using namespace cbbg::experiments;
+using namespace cbbg::results;
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
@@ -356,11 +360,11 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
   config::Config config;
   config.set("plant.kind=analytic");
   config.set("rbf.centres=[-1, 0, 1]");
-  const ControllerDiagram learner = build_controller_diagram("bg_only", config);
+  const ClosedLoop learner = build_preset("bg_only", config);
   auto learnt = learner.diagram->create_context(1);
   for (int k = 0; k < 9; ++k) {
-    learner.actor->mutable_weights(*learnt)[k] = 0.5 * k;
-    learner.critic->mutable_weights(*learnt)[k] = -1.0 * k;
+    learner.learner.actor->mutable_weights(*learnt)[k] = 0.5 * k;
+    learner.learner.critic->mutable_weights(*learnt)[k] = -1.0 * k;
   }
   const LearntWeights weights =
       learnt_weights(learner, *learnt, config, {"bg_only", 4, 9, "analytic"});
@@ -371,14 +375,14 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
   EXPECT_EQ(weights.critic[8], -8.0);
   EXPECT_EQ(weights.provenance.trials, 9);
 
-  const ControllerDiagram policy = build_controller_diagram(kLearntActorDiagram, config);
+  const ClosedLoop policy = build_preset(kLearntActor, config);
   auto evaluated = policy.diagram->create_context(1);
   load_learnt_weights(policy, *evaluated, weights);
-  EXPECT_EQ(policy.actor->weights(*evaluated)[4], 2.0);
+  EXPECT_EQ(policy.learner.actor->weights(*evaluated)[4], 2.0);
 
   config::Config grid_of_49;
   grid_of_49.set("plant.kind=analytic");
-  const ControllerDiagram other = build_controller_diagram("cbbg", grid_of_49);
+  const ClosedLoop other = build_preset("cbbg", grid_of_49);
   auto other_context = other.diagram->create_context(1);
   try {
     load_learnt_weights(other, *other_context, weights);
@@ -387,7 +391,7 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
     EXPECT_EQ(std::string(error.what()),
               "the weights have 9 actor weights; diagram 'cbbg' has 49 features");
   }
-  const ControllerDiagram supervisor = build_controller_diagram("pd_only", config);
+  const ClosedLoop supervisor = build_preset("pd_only", config);
   auto supervisor_context = supervisor.diagram->create_context(1);
   EXPECT_THAT(([&] { learnt_weights(supervisor, *supervisor_context, config, {}); }),
               ::testing::ThrowsMessage<std::invalid_argument>(
@@ -395,4 +399,4 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
 }
 
 }  // namespace
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::results

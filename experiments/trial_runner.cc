@@ -1,4 +1,4 @@
-#include "diagrams/trial_runner.h"
+#include "experiments/trial_runner.h"
 
 #include <charconv>
 #include <cmath>
@@ -6,7 +6,9 @@
 
 #include "plant/plant_ports.h"
 
-namespace cbbg::diagrams {
+namespace cbbg::experiments {
+
+using namespace diagrams;  // the telemetry indices
 namespace {
 
 // steps.csv's signal columns, after arm, seed, trial and t.
@@ -49,11 +51,11 @@ const char* steps_csv_header() {
   return "arm,seed,trial,t,theta_b,dtheta_b,phi_l,phi_r,a_S,a_A,a_E,a,omega,V,delta,T,reward\n";
 }
 
-TrialRunner::TrialRunner(const ControllerDiagram& controller, std::uint64_t seed, double period,
+TrialRunner::TrialRunner(const diagrams::ClosedLoop& loop, std::uint64_t seed, double period,
                          TelemetryOptions telemetry)
-    : controller_(&controller),
-      simulator_(*controller.diagram, SimulatorOptions{.accuracy = controller.accuracy}, seed),
-      telemetry_(&simulator_.add_log(*controller.telemetry, period)),
+    : loop_(&loop),
+      simulator_(*loop.diagram, SimulatorOptions{.accuracy = loop.accuracy}, seed),
+      telemetry_(&simulator_.add_log(*loop.telemetry, period)),
       period_(period),
       options_(std::move(telemetry)) {
   telemetry_->keep_in_memory(options_.keep_in_memory);
@@ -78,7 +80,7 @@ void TrialRunner::record(double time, const double* values) {
 
 TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
   Context& context = simulator_.context();
-  controller_->start_trial(context, theta0);
+  loop_->start_trial(context, theta0);
   telemetry_->clear();
   if (options_.keep_in_memory) {
     // Room for every tick before the trial starts: logging never allocates while ticking.
@@ -94,8 +96,8 @@ TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
     simulator_.initialize();
     const SimulationStatus status = simulator_.advance_to(duration);
     outcome.status = status.terminated ? TrialStatus::kFailed : TrialStatus::kSuccess;
-    outcome.final_theta = controller_->diagram->eval_output(
-        context, controller_->plant->output_port("state"))[plant::kThetaB];
+    outcome.final_theta =
+        loop_->diagram->eval_output(context, loop_->plant->state_output())[plant::kThetaB];
   } catch (const SimulationError& error) {
     outcome.status = TrialStatus::kDiverged;
     outcome.message = error.what();
@@ -108,4 +110,4 @@ TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
   return outcome;
 }
 
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::experiments

@@ -1,4 +1,4 @@
-#include "diagrams/policy_evaluation.h"
+#include "experiments/policy_evaluation.h"
 #include "tests/support/scratch_directory.h"
 
 #include <bit>
@@ -15,16 +15,21 @@
 #include <gtest/gtest.h>
 
 #include "apps/eval_command.h"
-#include "diagrams/controller_diagram.h"
-#include "diagrams/torque_push.h"
-#include "diagrams/trial_runner.h"
-#include "diagrams/weights_file.h"
+#include "blocks/torque_push.h"
+#include "diagrams/presets.h"
+#include "experiments/trial_runner.h"
 #include "framework/diagram_builder.h"
 #include "framework/primitives/constant_source.h"
 #include "framework/simulator.h"
+#include "results/weights_file.h"
 
-namespace cbbg::diagrams {
+namespace cbbg::experiments {
 namespace {
+
+using namespace cbbg::diagrams;
+using namespace cbbg::experiments;
+using namespace cbbg::results;
+using blocks::PushParams;
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
@@ -40,7 +45,7 @@ config::Config analytic_config() {
 const LearntWeights& bg_only_weights() {
   static const LearntWeights weights = [] {
     const config::Config config = analytic_config();
-    const ControllerDiagram learner = build_controller_diagram("bg_only", config);
+    const ClosedLoop learner = build_preset("bg_only", config);
     TrialRunner runner(learner, 1, config.number("trial.period"));
     int trials = 0;
     bool balanced = false;
@@ -63,55 +68,25 @@ LearntWeights zero_weights() {
   return weights;
 }
 
-EvaluationSettings from(std::vector<double> angles, int repeats = 1,
-                        std::optional<PushParams> push = std::nullopt) {
-  return EvaluationSettings{std::move(angles), repeats, push};
+EvaluationSettings from(std::vector<double> angles, int repeats = 1) {
+  return EvaluationSettings{std::move(angles), repeats};
+}
+
+// The learnt-actor preset, pushed or not.
+PolicyEvaluation evaluate(const config::Config& config, const LearntWeights& weights,
+                          const EvaluationSettings& settings,
+                          std::optional<PushParams> push = std::nullopt) {
+  const ClosedLoopFactory policy =
+      closed_loop_factory(kLearntActor, preset(kLearntActor).options, {.push = push});
+  return evaluate_policy(config, policy, weights, settings);
 }
 
 bool same_bits(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
-TEST(TorquePush, AddsThePushOverTheTicksOfItsInterval) {
-  // The push applied over [t_k, t_k+1) is the one the update at t_k set: sample half-way.
-  for (const double start : {0.03, 0.025}) {  // on a tick, and between ticks (0.03 is next)
-    DiagramBuilder builder("pushed");
-    auto& action = builder.emplace<ConstantSource>("action", Vector::Constant(1, 1.5));
-    auto& push = builder.emplace<TorquePush>("push", PushParams{start, 2.0, 0.02}, 0.01);
-    builder.connect(action.output_port("y"), push.input_port("action"));
-    const auto diagram = builder.build();
-    Simulator simulator(*diagram);
-    const SignalLog& log = simulator.add_log(push.output_port("torque"), 0.01, 0.005);
-    simulator.advance_to(0.06);
-    ASSERT_EQ(log.num_samples(), 6);
-    const double expected[] = {1.5, 1.5, 1.5, 3.5, 3.5, 1.5};  // ticks 0.03 and 0.04 pushed
-    for (int k = 0; k < 6; ++k) {
-      EXPECT_EQ(log.sample(k)[0], expected[k]) << "start " << start << ", t " << log.times()[k];
-    }
-  }
-}
-
-TEST(TorquePush, RefusesPushesOutOfRange) {
-  EXPECT_THAT(([] {
-                PushParams{-0.5, 1.0, 0.1}.validate();
-              }),
-              ::testing::ThrowsMessage<std::invalid_argument>(
-                  "push.start must be finite and >= 0; got -0.5"));
-  EXPECT_THAT(
-      ([] {
-        PushParams{0.0, std::numeric_limits<double>::infinity(), 0.1}.validate();
-      }),
-      ::testing::ThrowsMessage<std::invalid_argument>("push.torque must be finite; got inf"));
-  EXPECT_THAT(([] {
-                PushParams{0.0, 1.0, 0.0}.validate();
-              }),
-              ::testing::ThrowsMessage<std::invalid_argument>(
-                  "push.duration must be finite and > 0; got 0"));
-}
-
 TEST(PolicyEvaluation, ZeroWeightsFallFromTheTrialAngle) {
-  const PolicyEvaluation evaluation =
-      evaluate_policy(analytic_config(), zero_weights(), from({0.1744}));
+  const PolicyEvaluation evaluation = evaluate(analytic_config(), zero_weights(), from({0.1744}));
   ASSERT_EQ(evaluation.angles.size(), 1u);
   const TrialOutcome& run = evaluation.angles[0].runs.at(0);
   EXPECT_EQ(run.status, TrialStatus::kFailed);
@@ -121,9 +96,8 @@ TEST(PolicyEvaluation, ZeroWeightsFallFromTheTrialAngle) {
   EXPECT_GT(std::abs(run.final_theta), 0.5236);
 }
 
-TEST(PolicyEvaluation, WeightsLearntByAShortBgOnlyRunBalanceFromSmallAngles) {
-  const PolicyEvaluation evaluation =
-      evaluate_policy(analytic_config(), bg_only_weights(), from({0.05, 0.1}));
+TEST(PolicyEvaluation, WeightsLearntByAShortBgOnlyRunBalanceFromASmallAngle) {
+  const PolicyEvaluation evaluation = evaluate(analytic_config(), bg_only_weights(), from({0.05}));
   for (const AngleEvaluation& angle : evaluation.angles) {
     EXPECT_EQ(angle.balanced(), 1) << "from " << angle.theta0;
     EXPECT_EQ(angle.runs.at(0).steps, 2000);  // 20 s at 10 ms
@@ -135,12 +109,11 @@ TEST(PolicyEvaluation, MatchesTheLearntActorDiagramRunByTrialRunner) {
   config.set("sensors.noise_std=[0.002, 0.01, 0, 0, 0, 0]");
   config.set("seed=5");
   for (const double theta0 : {0.05, 0.2}) {
-    const ControllerDiagram policy = build_controller_diagram(kLearntActorDiagram, config);
+    const ClosedLoop policy = build_preset(kLearntActor, config);
     TrialRunner runner(policy, 5, config.number("trial.period"));
     load_learnt_weights(policy, runner.context(), bg_only_weights());
     const TrialOutcome expected = runner.run_trial(theta0, config.number("trial.duration"));
-    const TrialOutcome got =
-        evaluate_policy(config, bg_only_weights(), from({theta0})).angles[0].runs[0];
+    const TrialOutcome got = evaluate(config, bg_only_weights(), from({theta0})).angles[0].runs[0];
     EXPECT_EQ(got.status, expected.status) << "from " << theta0;
     EXPECT_EQ(got.steps, expected.steps) << "from " << theta0;
     EXPECT_TRUE(same_bits(got.final_theta, expected.final_theta))
@@ -150,8 +123,7 @@ TEST(PolicyEvaluation, MatchesTheLearntActorDiagramRunByTrialRunner) {
 
 TEST(PolicyEvaluation, RepeatsDifferOnlyWithSensorNoise) {
   config::Config config = analytic_config();
-  const AngleEvaluation quiet =
-      evaluate_policy(config, bg_only_weights(), from({0.1}, 3)).angles[0];
+  const AngleEvaluation quiet = evaluate(config, bg_only_weights(), from({0.1}, 3)).angles[0];
   ASSERT_EQ(quiet.runs.size(), 3u);
   for (const TrialOutcome& run : quiet.runs) {
     EXPECT_TRUE(same_bits(run.final_theta, quiet.runs[0].final_theta));
@@ -159,28 +131,25 @@ TEST(PolicyEvaluation, RepeatsDifferOnlyWithSensorNoise) {
   }
 
   config.set("sensors.noise_std=[0.002, 0.01, 0, 0, 0, 0]");
-  const AngleEvaluation noisy =
-      evaluate_policy(config, bg_only_weights(), from({0.1}, 3)).angles[0];
+  const AngleEvaluation noisy = evaluate(config, bg_only_weights(), from({0.1}, 3)).angles[0];
   EXPECT_NE(noisy.runs[0].final_theta, noisy.runs[1].final_theta);
   EXPECT_NE(noisy.runs[1].final_theta, noisy.runs[2].final_theta);
   EXPECT_NE(noisy.runs[0].final_theta, noisy.runs[2].final_theta);
   // Repeat r is seed + r, whatever ran before it.
   config.set("seed=2");
-  const TrialOutcome second =
-      evaluate_policy(config, bg_only_weights(), from({0.1})).angles[0].runs[0];
+  const TrialOutcome second = evaluate(config, bg_only_weights(), from({0.1})).angles[0].runs[0];
   EXPECT_TRUE(same_bits(second.final_theta, noisy.runs[1].final_theta));
   EXPECT_EQ(second.steps, noisy.runs[1].steps);
 }
 
 TEST(PolicyEvaluation, AStrongPushFellsABalancingPolicy) {
   const config::Config config = analytic_config();
-  const TrialOutcome still =
-      evaluate_policy(config, bg_only_weights(), from({0.05})).angles[0].runs[0];
+  const TrialOutcome still = evaluate(config, bg_only_weights(), from({0.05})).angles[0].runs[0];
   ASSERT_EQ(still.status, TrialStatus::kSuccess);
 
   // A push of nothing changes nothing, bit for bit.
   const TrialOutcome nothing =
-      evaluate_policy(config, bg_only_weights(), from({0.05}, 1, PushParams{1.0, 0.0, 1.0}))
+      evaluate(config, bg_only_weights(), from({0.05}), PushParams{1.0, 0.0, 1.0})
           .angles[0]
           .runs[0];
   EXPECT_EQ(nothing.steps, still.steps);
@@ -188,7 +157,7 @@ TEST(PolicyEvaluation, AStrongPushFellsABalancingPolicy) {
 
   // The full torque limit on both wheels for a second, from t = 1 s.
   const TrialOutcome pushed =
-      evaluate_policy(config, bg_only_weights(), from({0.05}, 1, PushParams{1.0, 5.0, 1.0}))
+      evaluate(config, bg_only_weights(), from({0.05}), PushParams{1.0, 5.0, 1.0})
           .angles[0]
           .runs[0];
   EXPECT_EQ(pushed.status, TrialStatus::kFailed);
@@ -197,34 +166,34 @@ TEST(PolicyEvaluation, AStrongPushFellsABalancingPolicy) {
 
 TEST(PolicyEvaluation, APushActsTheSameOnBothPlants) {
   // The push switches at ticks only, so both plants integrate the same piecewise-constant
-  // torque: they agree as closely as without a push (SPEC 1: 1e-6 rad over 3 s).
+  // torque: they agree as closely as without a push (docs/model.md §1.4: 1e-6 rad over 3 s).
   config::Config config = analytic_config();
   config.set("trial.duration=1.0");
-  const EvaluationSettings settings = from({0.05}, 1, PushParams{0.305, 1.5, 0.2});
+  const EvaluationSettings settings = from({0.05});
+  const PushParams push{0.305, 1.5, 0.2};
   const TrialOutcome analytic =
-      evaluate_policy(config, bg_only_weights(), settings).angles[0].runs[0];
+      evaluate(config, bg_only_weights(), settings, push).angles[0].runs[0];
   config.set("plant.kind=simbody");
   const TrialOutcome simbody =
-      evaluate_policy(config, bg_only_weights(), settings).angles[0].runs[0];
+      evaluate(config, bg_only_weights(), settings, push).angles[0].runs[0];
   ASSERT_EQ(analytic.status, TrialStatus::kSuccess);
   ASSERT_EQ(simbody.status, TrialStatus::kSuccess);
   EXPECT_NEAR(simbody.final_theta, analytic.final_theta, 1e-6);
-  const TrialOutcome unpushed =
-      evaluate_policy(config, bg_only_weights(), from({0.05})).angles[0].runs[0];
+  const TrialOutcome unpushed = evaluate(config, bg_only_weights(), from({0.05})).angles[0].runs[0];
   EXPECT_GT(std::abs(unpushed.final_theta - simbody.final_theta), 1e-3);  // the push mattered
 }
 
 TEST(PolicyEvaluation, RefusesWeightsOfAnotherGrid) {
   config::Config config = analytic_config();
   config.set("rbf.centres=[-1, 0, 1]");
-  EXPECT_THAT(([&] { evaluate_policy(config, bg_only_weights(), from({0.1})); }),
+  EXPECT_THAT(([&] { evaluate(config, bg_only_weights(), from({0.1})); }),
               ::testing::ThrowsMessage<std::invalid_argument>(
-                  "the weights have 49 actor weights; the config's RBF grid has 9 features"));
+                  "the weights have 49 actor weights; diagram 'learnt_actor' has 9 features"));
   EXPECT_THAT(
-      ([&] { evaluate_policy(analytic_config(), bg_only_weights(), from({})); }),
+      ([&] { evaluate(analytic_config(), bg_only_weights(), from({})); }),
       ::testing::ThrowsMessage<std::invalid_argument>("evaluation angles: at least one is needed"));
   EXPECT_THAT(
-      ([&] { evaluate_policy(analytic_config(), bg_only_weights(), from({0.1}, 0)); }),
+      ([&] { evaluate(analytic_config(), bg_only_weights(), from({0.1}, 0)); }),
       ::testing::ThrowsMessage<std::invalid_argument>("evaluation repeats must be >= 1; got 0"));
 }
 
@@ -323,7 +292,9 @@ TEST_F(EvalCommand, BadOptionsExitTwoWithOneLine) {
 
 TEST_F(EvalCommand, PrintsBalancedRunsPerAngleAndWritesTheCsv) {
   app::EvalOptions good = options();
-  good.angles = {0.05, 0.1};
+  // 0.05 rad the learnt policy balances; from 0.5 rad gravity's torque on the body (M g L
+  // sin 0.5 = 18.8 N m) beats what both motors can push back (10 N m): every policy falls.
+  good.angles = {0.05, 0.5};
   good.repeats = 2;
   good.out = directory_ / "eval";
   const Outcome outcome = run(good);
@@ -331,7 +302,7 @@ TEST_F(EvalCommand, PrintsBalancedRunsPerAngleAndWritesTheCsv) {
   EXPECT_EQ(outcome.err, "");
   EXPECT_THAT(outcome.out, HasSubstr("    theta0   balanced\n"
                                      "      0.05        2/2\n"
-                                     "       0.1        2/2\n"));
+                                     "       0.5        0/2\n"));
   std::ifstream csv(good.out / "evaluation.csv");
   std::string header;
   std::getline(csv, header);
@@ -341,8 +312,8 @@ TEST_F(EvalCommand, PrintsBalancedRunsPerAngleAndWritesTheCsv) {
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_THAT(rows[0], ::testing::StartsWith("0.05,1,1,2000,"));
   EXPECT_THAT(rows[1], ::testing::StartsWith("0.05,2,1,2000,"));
-  EXPECT_THAT(rows[3], ::testing::StartsWith("0.1,2,1,2000,"));
-  EXPECT_THAT(rows[3], ::testing::EndsWith(",success"));
+  EXPECT_THAT(rows[3], ::testing::StartsWith("0.5,2,0,"));
+  EXPECT_THAT(rows[3], ::testing::EndsWith(",failed"));
   int files = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(good.out)) ++files;
   EXPECT_EQ(files, 1);  // evaluation.csv alone: no temporary file left
@@ -360,4 +331,4 @@ TEST_F(EvalCommand, AFallIsAResultNotAnError) {
 }
 
 }  // namespace
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::experiments

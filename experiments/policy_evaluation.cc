@@ -1,4 +1,4 @@
-#include "diagrams/policy_evaluation.h"
+#include "experiments/policy_evaluation.h"
 
 #include <cmath>
 #include <cstdint>
@@ -8,9 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "diagrams/controller_diagram.h"
-
-namespace cbbg::diagrams {
+namespace cbbg::experiments {
 
 void EvaluationSettings::validate() const {
   if (angles.empty()) throw std::invalid_argument("evaluation angles: at least one is needed");
@@ -23,7 +21,6 @@ void EvaluationSettings::validate() const {
   if (repeats < 1) {
     throw std::invalid_argument("evaluation repeats must be >= 1; got " + std::to_string(repeats));
   }
-  if (push) push->validate();
 }
 
 int AngleEvaluation::balanced() const {
@@ -32,21 +29,16 @@ int AngleEvaluation::balanced() const {
   return count;
 }
 
-PolicyEvaluation evaluate_policy(const config::Config& config, const LearntWeights& weights,
-                                 const EvaluationSettings& settings) {
+PolicyEvaluation evaluate_policy(const config::Config& config,
+                                 const diagrams::ClosedLoopFactory& policy,
+                                 const LearntWeights& weights, const EvaluationSettings& settings) {
   settings.validate();
-  const ControllerDiagram policy =
-      build_controller_diagram(kLearntActorDiagram, config, DiagramOptions{settings.push});
-  if (weights.actor.size() != policy.actor->num_features()) {
-    throw std::invalid_argument("the weights have " + std::to_string(weights.actor.size()) +
-                                " actor weights; the config's RBF grid has " +
-                                std::to_string(policy.actor->num_features()) + " features");
-  }
+  const diagrams::ClosedLoop loop = policy(config);
   PolicyEvaluation result;
   result.first_seed = config.integer("seed");
   TelemetryOptions telemetry;
   telemetry.keep_in_memory = false;
-  TrialRunner runner(policy, static_cast<std::uint64_t>(result.first_seed),
+  TrialRunner runner(loop, static_cast<std::uint64_t>(result.first_seed),
                      config.number("trial.period"), telemetry);
   Context& context = runner.context();
   for (const double theta0 : settings.angles) {
@@ -56,7 +48,7 @@ PolicyEvaluation evaluate_policy(const config::Config& config, const LearntWeigh
       // A clean context with this run's seed: a run does not depend on the runs before it.
       context.reset_all_state();
       context.reseed(static_cast<std::uint64_t>(result.first_seed + repeat));
-      policy.actor->mutable_weights(context) = weights.actor;
+      load_learnt_weights(loop, context, weights);
       angle.runs.push_back(runner.run_trial(theta0, config.number("trial.duration")));
     }
     result.angles.push_back(std::move(angle));
@@ -64,4 +56,4 @@ PolicyEvaluation evaluate_policy(const config::Config& config, const LearntWeigh
   return result;
 }
 
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::experiments

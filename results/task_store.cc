@@ -1,11 +1,19 @@
-#include "diagrams/task_store.h"
+#include "results/task_store.h"
+#include "results/weights_file.h"
 
 #include <charconv>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-namespace cbbg::diagrams {
+namespace cbbg::results {
+
+using experiments::EvaluationRecord;
+using experiments::steps_csv_header;
+using experiments::to_string;
+using experiments::TrialOutcome;
+using experiments::TrialRecord;
+using experiments::TrialStatus;
 namespace {
 
 constexpr const char* kRecordFormat = "cbbg-task 1";
@@ -173,4 +181,4 @@ void TaskStore::save(std::size_t task, const SeedRun& run) const {
   std::filesystem::rename(temporary, record_path(task));
 }
 
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::results

@@ -1,4 +1,4 @@
-#include "diagrams/weights_file.h"
+#include "results/weights_file.h"
 
 #include <atomic>
 #include <charconv>
@@ -14,7 +14,10 @@
 
 #include "diagrams/params_from_config.h"
 
-namespace cbbg::diagrams {
+namespace cbbg::results {
+
+using experiments::LearntWeights;
+using experiments::WeightsProvenance;
 namespace {
 
 std::string format_header() {
@@ -348,21 +351,6 @@ std::string normaliser_text(const blocks::NormaliserParams& normaliser) {
 
 }  // namespace
 
-int LearntWeights::num_features() const {
-  return static_cast<int>(centres.size() * centres.size());
-}
-
-bool LearntWeights::operator==(const LearntWeights& other) const {
-  auto same = [](const Vector& a, const Vector& b) {
-    return a.size() == b.size() && (a.size() == 0 || (a.array() == b.array()).all());
-  };
-  return centres == other.centres && width == other.width &&
-         normaliser.scale_theta == other.normaliser.scale_theta &&
-         normaliser.scale_dtheta == other.normaliser.scale_dtheta &&
-         normaliser.saturation == other.normaliser.saturation && same(actor, other.actor) &&
-         same(critic, other.critic) && provenance == other.provenance;
-}
-
 void save_weights(const std::filesystem::path& path, const LearntWeights& weights) {
   check_savable(weights);
   const std::string text = format_weights(weights);
@@ -416,42 +404,4 @@ void check_layout(const LearntWeights& weights, const config::Config& config,
   }
 }
 
-LearntWeights learnt_weights(const ControllerDiagram& controller, const Context& context,
-                             const config::Config& config, const WeightsProvenance& provenance) {
-  if (controller.actor == nullptr || controller.critic == nullptr) {
-    throw std::invalid_argument("diagram '" + controller.name +
-                                "' has no critic and actor: it learns no weights");
-  }
-  LearntWeights weights;
-  const blocks::RbfParams rbf = rbf_params(config);
-  weights.centres = rbf.centres;
-  weights.width = rbf.width;
-  weights.normaliser = normaliser_params(config);
-  weights.actor = controller.actor->weights(context);
-  weights.critic = controller.critic->weights(context);
-  weights.provenance = provenance;
-  return weights;
-}
-
-void load_learnt_weights(const ControllerDiagram& controller, Context& context,
-                         const LearntWeights& weights) {
-  if (controller.actor == nullptr) {
-    throw std::invalid_argument("diagram '" + controller.name +
-                                "' has no actor to load weights into");
-  }
-  auto check = [&controller](const char* name, Eigen::Index size, int features) {
-    if (size != features) {
-      throw std::invalid_argument("the weights have " + std::to_string(size) + " " + name +
-                                  " weights; diagram '" + controller.name + "' has " +
-                                  std::to_string(features) + " features");
-    }
-  };
-  check("actor", weights.actor.size(), controller.actor->num_features());
-  if (controller.critic != nullptr) {
-    check("critic", weights.critic.size(), controller.critic->num_features());
-  }
-  controller.actor->mutable_weights(context) = weights.actor;
-  if (controller.critic != nullptr) controller.critic->mutable_weights(context) = weights.critic;
-}
-
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::results

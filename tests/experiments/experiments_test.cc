@@ -1,14 +1,18 @@
-#include "diagrams/experiments.h"
+#include "experiments/experiments.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "diagrams/controller_diagram.h"
-#include "diagrams/results_writer.h"
+#include "diagrams/presets.h"
 #include "plant/plant_ports.h"
+#include "results/results_writer.h"
 
-namespace cbbg::diagrams {
+namespace cbbg::experiments {
 namespace {
+
+using namespace cbbg::diagrams;
+using namespace cbbg::experiments;
+using namespace cbbg::results;
 
 using ::testing::HasSubstr;
 
@@ -20,83 +24,9 @@ config::Config quick_config() {
   return config;
 }
 
-bool has_block(const Diagram& diagram, const std::string& name) {
-  for (const auto& block : diagram.blocks()) {
-    if (block->name() == name) return true;
-  }
-  return false;
-}
-
-TEST(ControllerDiagram, EachArmHasTheBlocksItsNameSays) {
-  const config::Config config = quick_config();
-  const auto cbbg = build_controller_diagram("cbbg", config);
-  EXPECT_TRUE(has_block(*cbbg.diagram, "supervisor"));
-  EXPECT_TRUE(has_block(*cbbg.diagram, "critic"));
-  EXPECT_TRUE(has_block(*cbbg.diagram, "sampler"));
-  const auto bg_only = build_controller_diagram("bg_only", config);
-  EXPECT_FALSE(has_block(*bg_only.diagram, "supervisor"));
-  EXPECT_TRUE(has_block(*bg_only.diagram, "actor"));
-  const auto pd_only = build_controller_diagram("pd_only", config);
-  EXPECT_TRUE(has_block(*pd_only.diagram, "supervisor"));
-  EXPECT_FALSE(has_block(*pd_only.diagram, "actor"));
-  EXPECT_FALSE(pd_only.learns());
-  const auto policy = build_controller_diagram(kLearntActorDiagram, config);
-  EXPECT_TRUE(has_block(*policy.diagram, "actor"));
-  EXPECT_FALSE(has_block(*policy.diagram, "critic"));
-  EXPECT_FALSE(has_block(*policy.diagram, "supervisor"));
-  EXPECT_EQ(cbbg.telemetry->size(), kTelemetrySize);
-  EXPECT_THROW(build_controller_diagram("cbbg_fast", config), std::invalid_argument);
-}
-
-TEST(ControllerDiagram, OmegaFollowsTheArm) {
-  const config::Config config = quick_config();
-  for (const auto& [arm, omega] : {std::pair<const char*, double>{"bg_only", 1.0},
-                                   {"cb_only", 0.0},
-                                   {"cbbg", 0.0},  // the schedule starts at 0 (n2 = 500)
-                                   {"pd_only", 0.0}}) {
-    const auto controller = build_controller_diagram(arm, config);
-    auto context = controller.diagram->create_context(1);
-    EXPECT_EQ(controller.diagram->eval_output(*context, *controller.telemetry)[kTelemetryOmega],
-              omega)
-        << arm;
-  }
-}
-
-TEST(ControllerDiagram, ThePlantKindAndSupervisorKindSwapBlocks) {
-  config::Config config = quick_config();
-  config.set("supervisor.kind=lqr");
-  const auto lqr = build_controller_diagram("cbbg", config);
-  auto context = lqr.diagram->create_context(1);
-  // Leaning forward, both supervisors push the wheels forward (a_S > 0).
-  EXPECT_GT(lqr.diagram->eval_output(*context, *lqr.telemetry)[kTelemetrySupervisorAction], 0.0);
-  config.set("plant.kind=simbody");
-  const auto simbody = build_controller_diagram("cbbg", config);
-  auto simbody_context = simbody.diagram->create_context(1);
-  EXPECT_EQ(simbody.diagram->eval_output(*simbody_context, *simbody.telemetry)[kTelemetryThetaB],
-            config.number("trial.theta0"));
-}
-
-TEST(TrialRunner, WeightsCarryOverAndTheRobotRestarts) {
-  const config::Config config = quick_config();
-  const auto controller = build_controller_diagram("bg_only", config);
-  TrialRunner runner(controller, 1, config.number("trial.period"));
-  const TrialOutcome first = runner.run_trial(0.1744, 20.0);
-  EXPECT_EQ(first.status, TrialStatus::kFailed);  // a blank actor cannot balance
-  EXPECT_GT(std::abs(first.final_theta), config.number("trial.failure_angle"));
-  EXPECT_EQ(first.steps, runner.telemetry().num_samples());
-  const Vector learnt = controller.actor->weights(runner.context());
-  EXPECT_GT(learnt.norm(), 0.0);
-  controller.start_trial(runner.context(), 0.1);
-  EXPECT_EQ(controller.actor->weights(runner.context()), learnt);
-  EXPECT_EQ(runner.context().time(), 0.0);
-  EXPECT_EQ(
-      controller.diagram->eval_output(runner.context(), *controller.telemetry)[kTelemetryThetaB],
-      0.1);
-}
-
 TEST(TrialRunner, ATrialReachingItsDurationSucceeds) {
   const config::Config config = quick_config();
-  const auto controller = build_controller_diagram("pd_only", config);
+  const auto controller = build_preset("pd_only", config);
   TrialRunner runner(controller, 1, config.number("trial.period"));
   const TrialOutcome outcome = runner.run_trial(0.1744, 2.0);
   EXPECT_EQ(outcome.status, TrialStatus::kSuccess);
@@ -148,8 +78,9 @@ TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
   ASSERT_EQ(trials.size(), 3u);
   for (const TrialRecord& record : trials) {
     EXPECT_EQ(record.outcome.status, TrialStatus::kDiverged) << "trial " << record.trial;
-    EXPECT_THAT(record.outcome.message,
-                HasSubstr("'bg_only/critic': discrete state became non-finite"));
+    EXPECT_THAT(
+        record.outcome.message,
+        HasSubstr("'bg_only/controller/basal_ganglia/critic': discrete state became non-finite"));
   }
   EXPECT_FALSE(results.runs[0].succeeded);
   EXPECT_THAT(trials_csv(results), HasSubstr("bg_only,1,3,1,1,"));
@@ -174,6 +105,58 @@ TEST(Experiments, Exp2AnnealsK1TrialByTrial) {
   EXPECT_GT(trials[9].outcome.mean_temperature, 5.0 * 0.5);
 }
 
+TEST(Experiments, Exp1GivesEveryArmOfASeedTheSameRandomStreams) {
+  // Two arms with the same options under other names: paired seed by seed, bit for bit.
+  config::Config config = quick_config();
+  config.set("log.decimation=0");
+  const ControllerOptions options = preset("bg_only").options;
+  const ExperimentResults results =
+      run_exp1(config, {make_arm("first", options), make_arm("second", options)});
+  for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+    const SeedRun& first = results.run(0, s);
+    const SeedRun& second = results.run(1, s);
+    ASSERT_EQ(first.trials.size(), second.trials.size()) << "seed " << results.seeds[s];
+    for (std::size_t t = 0; t < first.trials.size(); ++t) {
+      EXPECT_EQ(first.trials[t].outcome.final_theta, second.trials[t].outcome.final_theta);
+      EXPECT_EQ(first.trials[t].outcome.mean_temperature,
+                second.trials[t].outcome.mean_temperature);
+    }
+    EXPECT_EQ(first.weights->actor, second.weights->actor);
+  }
+  EXPECT_NE(results.run(0, 0).weights->actor, results.run(0, 1).weights->actor);
+  EXPECT_THAT(
+      [&] {
+        run_exp1(config, {preset_arm("cbbg"), preset_arm("cbbg")});
+      },
+      ::testing::ThrowsMessage<std::invalid_argument>(
+          "exp1: two arms are named 'cbbg'; an arm's name must be unique"));
+}
+
+TEST(Experiments, Exp2CarriesTheCoordinatedTrialsLearningIntoOperantLearning) {
+  config::Config config = quick_config();
+  config.set("experiment=exp2");
+  config.set("seeds=1");
+  config.set("exp2.trials=2");
+  config.set("log.decimation=0");
+  const ExperimentResults results = run_experiment(config);
+  ASSERT_EQ(results.runs.front().trials.size(), 2u);
+  // By hand: one cbbg trial, then bg_only continuing from its context.
+  const ClosedLoop coordinated = build_preset("cbbg", config);
+  const ClosedLoop operant = build_preset("bg_only", config);
+  TrialRunner first(coordinated, 1, 0.01);
+  first.run_trial(0.1744, 20.0);
+  TrialRunner later(operant, 1, 0.01);
+  later.context().continue_from(first.context());
+  EXPECT_EQ(operant.learner.actor->weights(later.context()),
+            coordinated.learner.actor->weights(first.context()));
+  EXPECT_EQ(operant.learner.critic->weights(later.context()),
+            coordinated.learner.critic->weights(first.context()));
+  operant.learner.tropism->set_k1(later.context(), 10.0);
+  const TrialOutcome second = later.run_trial(0.1744, 20.0);
+  EXPECT_EQ(results.runs.front().trials[1].outcome.final_theta, second.final_theta);
+  EXPECT_EQ(results.runs.front().trials[1].outcome.steps, second.steps);
+}
+
 TEST(ResultsWriter, TrialsCsvHasOneRowPerTrial) {
   ExperimentResults results;
   results.experiment = "exp1";
@@ -193,4 +176,4 @@ TEST(ResultsWriter, TrialsCsvHasOneRowPerTrial) {
 }
 
 }  // namespace
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::experiments

@@ -8,22 +8,25 @@
 #include <filesystem>
 #include <string>
 
-#include "diagrams/experiments.h"
+#include "experiments/parallel_runs.h"
+#include "experiments/seed_run.h"
 
-namespace cbbg::diagrams {
+namespace cbbg::results {
 
-class TaskStore {
+using experiments::SeedRun;
+
+class TaskStore final : public experiments::TaskStorage {
  public:
   // Keeps tasks in `directory`, created if missing.
   explicit TaskStore(std::filesystem::path directory);
 
   // Fills `run` from a task finished earlier; false when the task has no record.
-  bool load(std::size_t task, SeedRun& run) const;
+  bool load(std::size_t task, SeedRun& run) const override;
   // Where the task's rows are written while it runs, and where they stay once it is saved.
-  std::filesystem::path pending_steps_path(std::size_t task) const;
+  std::filesystem::path pending_steps_path(std::size_t task) const override;
   std::filesystem::path steps_path(std::size_t task) const;
   // Keeps the task's rows and writes its record.
-  void save(std::size_t task, const SeedRun& run) const;
+  void save(std::size_t task, const SeedRun& run) const override;
 
   const std::filesystem::path& directory() const { return directory_; }
 
@@ -40,4 +43,4 @@ std::string serialize_run(const SeedRun& run);
 // Throws std::runtime_error naming `source` for a record that is not one.
 SeedRun parse_run(const std::string& text, const std::string& source);
 
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::results

@@ -8,9 +8,11 @@
 #include <string>
 
 #include "config/config.h"
-#include "diagrams/experiments.h"
+#include "experiments/seed_run.h"
 
-namespace cbbg::diagrams {
+namespace cbbg::results {
+
+using experiments::ExperimentResults;
 
 class TaskStore;
 
@@ -56,4 +58,4 @@ class RunDirectory {
   config::Config config_;
 };
 
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::results

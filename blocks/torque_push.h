@@ -4,7 +4,7 @@
 
 #include "framework/block.h"
 
-namespace cbbg::diagrams {
+namespace cbbg::blocks {
 
 // A push on the robot (cbbg eval --push-time, --push-torque, --push-duration).
 struct PushParams {
@@ -42,4 +42,4 @@ class TorquePush final : public Block {
   PushParams params_;
 };
 
-}  // namespace cbbg::diagrams
+}  // namespace cbbg::blocks

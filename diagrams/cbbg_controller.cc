@@ -1,0 +1,148 @@
+#include "diagrams/cbbg_controller.h"
+
+#include <limits>
+#include <stdexcept>
+
+#include "blocks/lqr_supervisor.h"
+#include "blocks/mixer.h"
+#include "blocks/normaliser.h"
+#include "blocks/pd_supervisor.h"
+#include "blocks/rbf_features.h"
+#include "diagrams/params_from_config.h"
+#include "framework/diagram_builder.h"
+#include "framework/primitives/constant_source.h"
+
+namespace cbbg::diagrams {
+namespace {
+
+std::unique_ptr<Block> configured_supervisor(const std::string& name,
+                                             const config::Config& config) {
+  if (config.text("supervisor.kind") == "lqr") {
+    return std::make_unique<blocks::LqrSupervisor>(name, robot_params(config),
+                                                   lqr_supervisor_params(config));
+  }
+  return std::make_unique<blocks::PdSupervisor>(name, pd_supervisor_params(config));
+}
+
+std::unique_ptr<Block> configured_normaliser(const std::string& name,
+                                             const config::Config& config) {
+  return std::make_unique<blocks::Normaliser>(name, normaliser_params(config));
+}
+
+std::unique_ptr<Block> configured_features(const std::string& name, const config::Config& config) {
+  return std::make_unique<blocks::RbfFeatures>(name, rbf_params(config));
+}
+
+// The slot's block: the user's where a factory is given, else the config's.
+std::unique_ptr<Block> fill_slot(const BlockFactory& user, const BlockFactory& configured,
+                                 const std::string& name, const config::Config& config) {
+  std::unique_ptr<Block> block = user ? user(name, config) : configured(name, config);
+  if (!block) throw std::invalid_argument("the factory of slot '" + name + "' returned null");
+  return block;
+}
+
+const OutputPort& constant(DiagramBuilder& builder, const std::string& name, double value) {
+  return builder.emplace<ConstantSource>(name, Vector::Constant(1, value)).output_port("y");
+}
+
+BasalGangliaParams basal_ganglia_params(const config::Config& config,
+                                        const ControllerOptions& options) {
+  BasalGangliaParams params;
+  params.critic = critic_params(config);
+  params.actor = actor_params(config);
+  if (options.actor_rule) params.actor.rule = *options.actor_rule;
+  params.critic.frozen = params.actor.frozen = !options.learning;
+  params.tropism = tropism_params(config);
+  params.sampler = sampler_params(config);
+  params.entropy = entropy_params(config);
+  params.period = config.number("trial.period");
+  params.exploration = options.exploration;
+  return params;
+}
+
+}  // namespace
+
+void ControllerOptions::validate() const {
+  if (!supervisor && !basal_ganglia) {
+    throw std::invalid_argument(
+        "controller options: with neither a supervisor nor basal ganglia nothing acts; keep "
+        "one of them");
+  }
+}
+
+CbbgController::CbbgController(std::string name, const config::Config& config,
+                               const ControllerOptions& options)
+    : Diagram(std::move(name)) {
+  options.validate();
+  DiagramBuilder builder(*this);
+  const OutputPort* supervisor_action = nullptr;
+  if (options.supervisor) {
+    auto& cerebellum = builder.emplace<Cerebellum>(
+        "cerebellum",
+        fill_slot(options.slots.supervisor, configured_supervisor, "supervisor", config));
+    cerebellum_ = &cerebellum;
+    measured_ = &builder.export_input(cerebellum.measured(), "measured");
+    supervisor_action = &cerebellum.action();
+  } else {
+    supervisor_action = &constant(builder, "no_supervisor", 0.0);
+  }
+  if (options.basal_ganglia) {
+    add_basal_ganglia(builder, config, options, *supervisor_action);
+  } else {
+    add_supervisor_alone(builder, *supervisor_action);
+  }
+  builder.build_into();
+}
+
+void CbbgController::add_basal_ganglia(DiagramBuilder& builder, const config::Config& config,
+                                       const ControllerOptions& options,
+                                       const OutputPort& supervisor_action) {
+  const double period = config.number("trial.period");
+  const Block& normaliser =
+      builder.add(fill_slot(options.slots.normaliser, configured_normaliser, "normaliser", config));
+  auto& basal_ganglia = builder.emplace<BasalGanglia>(
+      "basal_ganglia", fill_slot(options.slots.features, configured_features, "features", config),
+      basal_ganglia_params(config, options));
+  auto& omega =
+      builder.emplace<blocks::OmegaSchedule>("omega", omega_params(config, options.omega), period);
+  auto& mixer = builder.emplace<blocks::Mixer>("mixer");
+  basal_ganglia_ = &basal_ganglia;
+
+  measured_ = &builder.export_input(normaliser.input_port("measured"), "measured");
+  reward_ = &builder.export_input(basal_ganglia.reward());
+  failed_ = &builder.export_input(basal_ganglia.failed());
+  builder.connect(normaliser.output_port("x"), basal_ganglia.state());
+  builder.connect(supervisor_action, basal_ganglia.supervisor_action());
+  builder.connect(supervisor_action, mixer.input_port("supervisor_action"));
+  builder.connect(omega.output_port("omega"), basal_ganglia.omega());
+  builder.connect(omega.output_port("omega"), mixer.input_port("omega"));
+  builder.connect(basal_ganglia.exploration_action(), mixer.input_port("exploration_action"));
+
+  builder.export_output(mixer.output_port("action"), "action");
+  builder.export_output(supervisor_action, "supervisor_action");
+  builder.export_output(basal_ganglia.actor_action(), "actor_action");
+  builder.export_output(basal_ganglia.exploration_action(), "exploration_action");
+  builder.export_output(omega.output_port("omega"), "omega");
+  builder.export_output(basal_ganglia.value(), "value");
+  builder.export_output(basal_ganglia.td_error(), "td_error");
+  builder.export_output(basal_ganglia.temperature(), "temperature");
+  builder.export_output(basal_ganglia.entropy(), "entropy");
+}
+
+void CbbgController::add_supervisor_alone(DiagramBuilder& builder,
+                                          const OutputPort& supervisor_action) {
+  const OutputPort& no_omega = constant(builder, "no_omega", 0.0);
+  const OutputPort& not_learning =
+      constant(builder, "not_learning", std::numeric_limits<double>::quiet_NaN());
+  builder.export_output(supervisor_action, "action");
+  builder.export_output(supervisor_action, "supervisor_action");
+  for (const char* name : {"actor_action", "exploration_action"}) {
+    builder.export_output(not_learning, name);
+  }
+  builder.export_output(no_omega, "omega");
+  for (const char* name : {"value", "td_error", "temperature", "entropy"}) {
+    builder.export_output(not_learning, name);
+  }
+}
+
+}  // namespace cbbg::diagrams

@@ -1,0 +1,138 @@
+#include "diagrams/closed_loop.h"
+
+#include <stdexcept>
+
+#include "blocks/failure_detector.h"
+#include "blocks/reward.h"
+#include "blocks/sensors.h"
+#include "diagrams/params_from_config.h"
+#include "framework/diagram_builder.h"
+#include "framework/primitives/multiplexer.h"
+#include "framework/primitives/zero_order_hold.h"
+#include "plant/analytic_plant.h"
+#include "plant/simbody_plant.h"
+
+namespace cbbg::diagrams {
+namespace {
+
+std::unique_ptr<plant::RobotPlant> configured_plant(const std::string& name,
+                                                    const config::Config& config) {
+  const plant::RobotParams params = robot_params(config);
+  const double theta0 = config.number("trial.theta0");
+  if (config.text("plant.kind") == "analytic") {
+    return std::make_unique<plant::AnalyticPlant>(name, params, theta0);
+  }
+  return std::make_unique<plant::SimbodyPlant>(name, params, theta0);
+}
+
+void check_plant_ports(const plant::RobotPlant& robot) {
+  try {
+    if (robot.torque_input().size() == plant::kTorqueSize &&
+        robot.state_output().size() == plant::kStateSize) {
+      return;
+    }
+  } catch (const std::invalid_argument&) {
+    // A missing port: the message below says what a plant needs.
+  }
+  throw std::invalid_argument("plant '" + robot.name() +
+                              "' must have an input \"torque\" of size 2 and an output "
+                              "\"state\" of size 10 (plant/robot_plant.h)");
+}
+
+// The action sampled every tick and held (zero-order hold), optionally pushed, to both wheels.
+void wire_actuation(DiagramBuilder& builder, const config::Config& config, const OutputPort& action,
+                    const plant::RobotPlant& robot, const std::optional<blocks::PushParams>& push) {
+  const double period = config.number("trial.period");
+  auto& hold = builder.emplace<ZeroOrderHold>("hold", 1, period);
+  auto& wheel_torques = builder.emplace<Multiplexer>(
+      "wheel_torques", std::vector<Multiplexer::Input>{{"left", 1}, {"right", 1}});
+  builder.connect(action, hold.input_port("u"));
+  const OutputPort* wheel_torque = &hold.output_port("y");
+  if (push) {
+    auto& pusher = builder.emplace<blocks::TorquePush>("push", *push, period);
+    builder.connect(*wheel_torque, pusher.input_port("action"));
+    wheel_torque = &pusher.output_port("torque");
+  }
+  builder.connect(*wheel_torque, wheel_torques.input_port("left"));
+  builder.connect(*wheel_torque, wheel_torques.input_port("right"));
+  builder.connect(wheel_torques.output_port("y"), robot.torque_input());
+}
+
+// The multiplexer of telemetry.h's signals.
+const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& measured,
+                                 const CbbgController& controller, const OutputPort& reward) {
+  const std::vector<std::string> from_controller{
+      "supervisor_action", "actor_action", "exploration_action", "action", "omega", "value",
+      "td_error",          "temperature"};
+  std::vector<Multiplexer::Input> inputs{{"measured", measured.size()}};
+  for (const auto& name : from_controller) inputs.push_back({name, 1});
+  inputs.push_back({"reward", 1});
+  inputs.push_back({"entropy", 1});
+  auto& telemetry = builder.emplace<Multiplexer>("telemetry", inputs);
+  builder.connect(measured, telemetry.input_port("measured"));
+  for (const auto& name : from_controller) {
+    builder.connect(controller.output_port(name), telemetry.input_port(name));
+  }
+  builder.connect(reward, telemetry.input_port("reward"));
+  builder.connect(controller.output_port("entropy"), telemetry.input_port("entropy"));
+  return telemetry.output_port("y");
+}
+
+LearnerBlocks learner_of(const CbbgController& controller) {
+  const BasalGanglia* basal_ganglia = controller.basal_ganglia();
+  if (basal_ganglia == nullptr) return {};
+  return {&basal_ganglia->critic(), &basal_ganglia->actor(), basal_ganglia->tropism()};
+}
+
+}  // namespace
+
+void ClosedLoop::start_trial(Context& context, double theta0) const {
+  context.reset_trial_state();
+  plant->reset(context, theta0);
+}
+
+ClosedLoop build_closed_loop(std::string name, const config::Config& config,
+                             std::unique_ptr<CbbgController> controller,
+                             const ClosedLoopOptions& options) {
+  ClosedLoop loop;
+  loop.accuracy = config.number("plant.accuracy");
+  const double period = config.number("trial.period");
+  DiagramBuilder builder(std::move(name));
+  std::unique_ptr<plant::RobotPlant> made =
+      options.plant ? options.plant("plant", config) : configured_plant("plant", config);
+  if (!made) throw std::invalid_argument("the plant factory returned null");
+  check_plant_ports(*made);
+  const plant::RobotPlant& robot = builder.add(std::move(made));
+  auto& sensors = builder.emplace<blocks::Sensors>("sensors", sensors_params(config), period);
+  auto& failure =
+      builder.emplace<blocks::FailureDetector>("failure", failure_params(config), period);
+  auto& reward = builder.emplace<blocks::Reward>("reward", reward_params(config), period);
+  const CbbgController& brain = builder.add(std::move(controller));
+  loop.plant = &robot;
+  loop.learner = learner_of(brain);
+
+  builder.connect(robot.state_output(), sensors.input_port("plant_state"));
+  const OutputPort& measured = sensors.output_port("measured");
+  builder.connect(measured, failure.input_port("measured"));
+  builder.connect(measured, reward.input_port("measured"));
+  builder.connect(failure.output_port("failed"), reward.input_port("failed"));
+  builder.connect(measured, brain.measured());
+  if (brain.reward() != nullptr) builder.connect(reward.output_port("reward"), *brain.reward());
+  if (brain.failed() != nullptr) builder.connect(failure.output_port("failed"), *brain.failed());
+  wire_actuation(builder, config, brain.action(), robot, options.push);
+  loop.telemetry = &wire_telemetry(builder, measured, brain, reward.output_port("reward"));
+  loop.diagram = builder.build();
+  return loop;
+}
+
+ClosedLoopFactory closed_loop_factory(std::string name, ControllerOptions controller,
+                                      ClosedLoopOptions options) {
+  controller.validate();
+  return [name = std::move(name), controller = std::move(controller),
+          options = std::move(options)](const config::Config& config) {
+    return build_closed_loop(
+        name, config, std::make_unique<CbbgController>("controller", config, controller), options);
+  };
+}
+
+}  // namespace cbbg::diagrams

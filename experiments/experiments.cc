@@ -1,0 +1,169 @@
+#include "experiments/experiments.h"
+
+#include <stdexcept>
+
+#include "experiments/policy_evaluation.h"
+
+namespace cbbg::experiments {
+namespace {
+
+// k1 of `trial` under the annealing schedule (steps sorted by from_trial, the first at 1).
+double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial) {
+  double k1 = schedule.front().k1;
+  for (const auto& step : schedule) {
+    if (step.from_trial <= trial) k1 = step.k1;
+  }
+  return k1;
+}
+
+// The arm's learnt actor alone (no exploration, no supervisor, frozen) from each evaluation
+// angle, as `cbbg eval` runs it with this run's seed.
+void evaluate_learnt_actor(config::Config config, const diagrams::Arm& arm, SeedRun& run) {
+  config.set("seed=" + std::to_string(run.seed));
+  EvaluationSettings settings;
+  settings.angles = config.numbers("evaluation.angles");
+  const PolicyEvaluation evaluation = evaluate_policy(config, arm.policy, *run.weights, settings);
+  for (const AngleEvaluation& angle : evaluation.angles) {
+    run.evaluation.push_back({angle.theta0, angle.runs.front()});
+  }
+}
+
+WeightsProvenance provenance(const config::Config& config, const SeedRun& run) {
+  return {run.arm, run.seed, static_cast<long long>(run.trials.size()), config.text("plant.kind")};
+}
+
+void start_from(const diagrams::ClosedLoop& loop, TrialRunner& runner,
+                const LearntWeights* initial_weights) {
+  if (initial_weights != nullptr && loop.learner.learns()) {
+    load_learnt_weights(loop, runner.context(), *initial_weights);
+  }
+}
+
+void run_until_success(const config::Config& config, const diagrams::Arm& arm,
+                       const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
+                       SeedRun& run) {
+  const diagrams::ClosedLoop loop = arm.learner(config);
+  TrialRunner runner(loop, static_cast<std::uint64_t>(run.seed), config.number("trial.period"),
+                     telemetry);
+  start_from(loop, runner, initial_weights);
+  const long long max_trials = config.integer("max_trials");
+  const double k1 = config.number("tropism.k1");
+  for (int trial = 1; trial <= max_trials; ++trial) {
+    const TrialRecord record{
+        trial, k1,
+        runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"), trial)};
+    run.trials.push_back(record);
+    if (record.outcome.status == TrialStatus::kSuccess) {
+      run.succeeded = true;
+      break;
+    }
+    ++run.failures_before_success;
+  }
+  if (loop.learner.learns()) {
+    run.weights = learnt_weights(loop, runner.context(), config, provenance(config, run));
+    if (arm.policy) evaluate_learnt_actor(config, arm, run);
+  }
+}
+
+void set_k1(const diagrams::ClosedLoop& loop, Context& context, double k1) {
+  if (loop.learner.tropism == nullptr) {
+    throw std::invalid_argument("exp2 anneals k1: the closed loop '" + loop.diagram->name() +
+                                "' has no tropism");
+  }
+  loop.learner.tropism->set_k1(context, k1);
+}
+
+void run_annealing(const config::Config& config, const diagrams::Arm& coordinated,
+                   const diagrams::Arm& operant, const TelemetryOptions& telemetry,
+                   const LearntWeights* initial_weights, SeedRun& run) {
+  const double period = config.number("trial.period");
+  const double theta0 = config.number("trial.theta0");
+  const double duration = config.number("trial.duration");
+  const auto& schedule = config.annealing("annealing");
+  const diagrams::ClosedLoop first_loop = coordinated.learner(config);
+  const diagrams::ClosedLoop later_loop = operant.learner(config);
+  TrialRunner first(first_loop, static_cast<std::uint64_t>(run.seed), period, telemetry);
+  start_from(first_loop, first, initial_weights);
+  set_k1(first_loop, first.context(), annealed_k1(schedule, 1));
+  run.trials.push_back({1, annealed_k1(schedule, 1), first.run_trial(theta0, duration, 1)});
+
+  // The operant loop carries on: weights, the omega counter and the random streams.
+  TrialRunner later(later_loop, static_cast<std::uint64_t>(run.seed), period, telemetry);
+  later.context().continue_from(first.context());
+  for (int trial = 2; trial <= config.integer("exp2.trials"); ++trial) {
+    const double k1 = annealed_k1(schedule, trial);
+    set_k1(later_loop, later.context(), k1);
+    run.trials.push_back({trial, k1, later.run_trial(theta0, duration, trial)});
+  }
+  for (const auto& trial : run.trials) {
+    if (trial.outcome.status == TrialStatus::kSuccess && !run.succeeded) {
+      run.succeeded = true;
+      run.failures_before_success = trial.trial - 1;
+    }
+  }
+  if (!run.succeeded) run.failures_before_success = static_cast<int>(run.trials.size());
+  run.weights = learnt_weights(later_loop, later.context(), config, provenance(config, run));
+}
+
+std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {
+  std::vector<std::string> names;
+  for (const auto& arm : arms) names.push_back(arm.name);
+  return names;
+}
+
+}  // namespace
+
+ExperimentResults run_exp1(const config::Config& config, const std::vector<diagrams::Arm>& arms,
+                           const ExperimentOptions& options) {
+  for (std::size_t a = 0; a < arms.size(); ++a) {
+    for (std::size_t b = 0; b < a; ++b) {
+      if (arms[a].name == arms[b].name) {
+        throw std::invalid_argument("exp1: two arms are named '" + arms[a].name +
+                                    "'; an arm's name must be unique");
+      }
+    }
+  }
+  // Tasks are arm-major: the arm of a run is found by its name.
+  auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
+    for (const auto& arm : arms) {
+      if (arm.name == run.arm) {
+        run_until_success(config, arm, telemetry, options.initial_weights, run);
+        return;
+      }
+    }
+  };
+  ExperimentResults results = run_tasks(config, names_of(arms), body, options);
+  results.experiment = "exp1";
+  return results;
+}
+
+ExperimentResults run_exp2(const config::Config& config, const diagrams::Arm& coordinated,
+                           const diagrams::Arm& operant, const ExperimentOptions& options) {
+  auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
+    run_annealing(config, coordinated, operant, telemetry, options.initial_weights, run);
+  };
+  ExperimentResults results = run_tasks(config, {coordinated.name}, body, options);
+  results.experiment = "exp2";
+  return results;
+}
+
+std::vector<std::string> experiment_arms(const config::Config& config) {
+  const std::string& experiment = config.text("experiment");
+  if (experiment == "exp1") return config.names("arms");
+  if (experiment == "exp2") return {"cbbg"};
+  return {experiment};
+}
+
+ExperimentResults run_experiment(const config::Config& config, const ExperimentOptions& options) {
+  const std::string& experiment = config.text("experiment");
+  if (experiment == "exp2") {
+    return run_exp2(config, diagrams::preset_arm("cbbg"), diagrams::preset_arm("bg_only"), options);
+  }
+  std::vector<diagrams::Arm> arms;
+  for (const auto& name : experiment_arms(config)) arms.push_back(diagrams::preset_arm(name));
+  ExperimentResults results = run_exp1(config, arms, options);
+  results.experiment = experiment;
+  return results;
+}
+
+}  // namespace cbbg::experiments

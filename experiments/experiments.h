@@ -1,0 +1,44 @@
+#pragma once
+// The experiments (docs/model.md §3) over many seeds, in parallel threads (parallel_runs.h),
+// over any arms: an arm is a name and the closed-loop factories of diagrams/presets.h, so a
+// user's own diagram gets every protocol the presets get.
+//
+//   exp1   per arm and seed: trials until the first success (or max_trials); then the
+//          arm's learnt actor alone from each of evaluation.angles
+//   exp2   per seed: one trial of the coordinated arm (cbbg), then the operant arm (bg_only:
+//          omega = 1) carrying on what was learnt, with k1 from the annealing schedule, for
+//          exp2.trials trials
+//
+// Common random numbers: a block's random stream comes from the seed and its path below the
+// closed loop (framework/context.h), so seed k gives every arm of a comparison the same
+// streams where their blocks have the same paths.
+
+#include <string>
+#include <vector>
+
+#include "config/config.h"
+#include "diagrams/presets.h"
+#include "experiments/parallel_runs.h"
+#include "experiments/seed_run.h"
+
+namespace cbbg::experiments {
+
+// exp1 for each arm, over the config's seeds.
+ExperimentResults run_exp1(const config::Config& config, const std::vector<diagrams::Arm>& arms,
+                           const ExperimentOptions& options = {});
+
+// exp2: trial 1 in `coordinated`'s closed loop, the later trials in `operant`'s, which
+// carries on the learning of trial 1 (Context::continue_from). The results name the arm
+// `coordinated.name`.
+ExperimentResults run_exp2(const config::Config& config, const diagrams::Arm& coordinated,
+                           const diagrams::Arm& operant, const ExperimentOptions& options = {});
+
+// The preset names the config's experiment runs: exp1's `arms`, exp2's cbbg, or the one
+// preset `experiment` names.
+std::vector<std::string> experiment_arms(const config::Config& config);
+
+// The experiment the config names, over the named presets (what `cbbg run` runs).
+ExperimentResults run_experiment(const config::Config& config,
+                                 const ExperimentOptions& options = {});
+
+}  // namespace cbbg::experiments

@@ -1,0 +1,64 @@
+#include "experiments/learnt_weights.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "diagrams/params_from_config.h"
+
+namespace cbbg::experiments {
+
+int LearntWeights::num_features() const {
+  return static_cast<int>(centres.size() * centres.size());
+}
+
+bool LearntWeights::operator==(const LearntWeights& other) const {
+  auto same = [](const Vector& a, const Vector& b) {
+    return a.size() == b.size() && (a.size() == 0 || (a.array() == b.array()).all());
+  };
+  return centres == other.centres && width == other.width &&
+         normaliser.scale_theta == other.normaliser.scale_theta &&
+         normaliser.scale_dtheta == other.normaliser.scale_dtheta &&
+         normaliser.saturation == other.normaliser.saturation && same(actor, other.actor) &&
+         same(critic, other.critic) && provenance == other.provenance;
+}
+
+LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& context,
+                             const config::Config& config, const WeightsProvenance& provenance) {
+  if (loop.learner.actor == nullptr || loop.learner.critic == nullptr) {
+    throw std::invalid_argument("diagram '" + loop.diagram->name() +
+                                "' has no critic and actor: it learns no weights");
+  }
+  LearntWeights weights;
+  const blocks::RbfParams rbf = diagrams::rbf_params(config);
+  weights.centres = rbf.centres;
+  weights.width = rbf.width;
+  weights.normaliser = diagrams::normaliser_params(config);
+  weights.actor = loop.learner.actor->weights(context);
+  weights.critic = loop.learner.critic->weights(context);
+  weights.provenance = provenance;
+  return weights;
+}
+
+void load_learnt_weights(const diagrams::ClosedLoop& loop, Context& context,
+                         const LearntWeights& weights) {
+  if (loop.learner.actor == nullptr) {
+    throw std::invalid_argument("diagram '" + loop.diagram->name() +
+                                "' has no actor to load weights into");
+  }
+  auto check = [&loop](const char* name, Eigen::Index size, int features) {
+    if (size != features) {
+      throw std::invalid_argument("the weights have " + std::to_string(size) + " " + name +
+                                  " weights; diagram '" + loop.diagram->name() + "' has " +
+                                  std::to_string(features) + " features");
+    }
+  };
+  check("actor", weights.actor.size(), loop.learner.actor->num_features());
+  if (loop.learner.critic != nullptr) {
+    check("critic", weights.critic.size(), loop.learner.critic->num_features());
+  }
+  loop.learner.actor->mutable_weights(context) = weights.actor;
+  if (loop.learner.critic != nullptr)
+    loop.learner.critic->mutable_weights(context) = weights.critic;
+}
+
+}  // namespace cbbg::experiments

@@ -1,0 +1,53 @@
+#pragma once
+// What a learning arm has learnt: the critic's and the actor's weights with the feature
+// layout they were learnt on and where they come from; read from and written into a closed
+// loop's context. results/weights_file.h keeps them in files.
+
+#include <string>
+#include <vector>
+
+#include "blocks/normaliser.h"
+#include "config/config.h"
+#include "diagrams/closed_loop.h"
+#include "framework/context.h"
+#include "framework/types.h"
+
+namespace cbbg::experiments {
+
+// Where a set of weights comes from; recorded in the file, not checked on loading.
+struct WeightsProvenance {
+  std::string arm = "unknown";    // the arm that learnt them (one word)
+  long long seed = 0;             // its root seed
+  long long trials = 0;           // trials it learnt over
+  std::string plant = "unknown";  // plant.kind it learnt on (one word)
+  bool operator==(const WeightsProvenance&) const = default;
+};
+
+// The weights of the critic (V = w . phi) and the actor (a_A = theta . phi), and the layout
+// that gives phi its meaning: the normaliser's scales and the RBF grid. Weights are only
+// meaningful with the same layout (results::check_layout).
+struct LearntWeights {
+  std::vector<double> centres;          // rbf.centres
+  double width = 0.0;                   // rbf.width
+  blocks::NormaliserParams normaliser;  // normaliser.*
+  Vector actor;                         // theta, centres.size()^2 of them
+  Vector critic;                        // w, as many
+  WeightsProvenance provenance;
+
+  // The feature count of the layout: centres.size() squared.
+  int num_features() const;
+  bool operator==(const LearntWeights& other) const;
+};
+
+// The weights `loop` has learnt in `context`, with the layout of `config` (which built
+// `loop`). Throws std::invalid_argument when the loop has no critic and actor.
+LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& context,
+                             const config::Config& config, const WeightsProvenance& provenance);
+
+// Sets the actor's weights in `context`, and the critic's where the loop has one. Throws
+// std::invalid_argument when the loop has no actor or the feature counts differ;
+// results::check_layout first for a user's message.
+void load_learnt_weights(const diagrams::ClosedLoop& loop, Context& context,
+                         const LearntWeights& weights);
+
+}  // namespace cbbg::experiments

@@ -1,0 +1,94 @@
+#include "experiments/parallel_runs.h"
+
+#include <atomic>
+#include <exception>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace cbbg::experiments {
+namespace {
+
+// Runs one task, its steps rows into the store's file or into run.steps_csv.
+void run_task(const config::Config& config, std::size_t task, const TaskBody& body,
+              const TaskStorage* store, SeedRun& run) {
+  std::ofstream file;
+  std::ostringstream memory;
+  TelemetryOptions telemetry{.keep_in_memory = false,
+                             .steps = nullptr,
+                             .decimation = config.integer("log.decimation"),
+                             .row_prefix = run.arm + "," + std::to_string(run.seed) + ","};
+  if (telemetry.decimation > 0) {
+    if (store != nullptr) {
+      file.open(store->pending_steps_path(task), std::ios::binary | std::ios::trunc);
+      telemetry.steps = &file;
+    } else {
+      telemetry.steps = &memory;
+    }
+  }
+  body(run, telemetry);
+  if (store == nullptr) {
+    run.steps_csv = memory.str();
+    return;
+  }
+  file.close();
+  if (!file) {
+    throw std::runtime_error("cannot write '" + store->pending_steps_path(task).string() + "'");
+  }
+  store->save(task, run);
+}
+
+ExperimentResults empty_results(const config::Config& config,
+                                const std::vector<std::string>& arms) {
+  ExperimentResults results;
+  results.experiment = config.text("experiment");
+  results.arms = arms;
+  for (long long k = 0; k < config.integer("seeds"); ++k) {
+    results.seeds.push_back(config.integer("seed") + k);
+  }
+  for (const auto& arm : results.arms) {
+    for (const long long seed : results.seeds) {
+      SeedRun run;
+      run.arm = arm;
+      run.seed = seed;
+      results.runs.push_back(std::move(run));
+    }
+  }
+  return results;
+}
+
+}  // namespace
+
+ExperimentResults run_tasks(const config::Config& config, const std::vector<std::string>& arms,
+                            const TaskBody& body, const ExperimentOptions& options) {
+  ExperimentResults results = empty_results(config, arms);
+  // Workers take tasks in index order; each writes only its own slot.
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto work = [&]() {
+    for (std::size_t task = next++; task < results.runs.size(); task = next++) {
+      try {
+        SeedRun& run = results.runs[task];
+        if (options.store == nullptr || !options.store->load(task, run)) {
+          run_task(config, task, body, options.store, run);
+        }
+        if (options.progress) options.progress(run);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next = results.runs.size();  // stop handing out tasks
+      }
+    }
+  };
+  std::vector<std::thread> workers;
+  for (int j = 1; j < std::max(options.jobs, 1); ++j) workers.emplace_back(work);
+  work();
+  for (auto& worker : workers) worker.join();
+  if (failure) std::rethrow_exception(failure);
+  return results;
+}
+
+}  // namespace cbbg::experiments

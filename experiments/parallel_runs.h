@@ -1,0 +1,51 @@
+#pragma once
+// Runs the (arm, seed) tasks of an experiment in threads. Each task builds its own closed
+// loop and context and writes only its own slot of the results, so the results are the same
+// whatever the number of threads. A TaskStorage keeps finished tasks, so a killed run
+// resumes where it stopped.
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+
+#include "config/config.h"
+#include "experiments/seed_run.h"
+
+namespace cbbg::experiments {
+
+// Where finished tasks are kept between runs (results::TaskStore keeps them on disk).
+class TaskStorage {
+ public:
+  virtual ~TaskStorage() = default;
+  // Fills `run` from a task finished earlier; false when the task has no record.
+  virtual bool load(std::size_t task, SeedRun& run) const = 0;
+  // Where the task's steps.csv rows go while it runs.
+  virtual std::filesystem::path pending_steps_path(std::size_t task) const = 0;
+  // Keeps the finished task (its record and its rows).
+  virtual void save(std::size_t task, const SeedRun& run) const = 0;
+};
+
+// Called after each finished (arm, seed), from the worker thread that ran it.
+using ProgressCallback = std::function<void(const SeedRun&)>;
+
+struct ExperimentOptions {
+  int jobs = 1;  // threads (>= 1); the results do not depend on it
+  ProgressCallback progress{};
+  // With a store, each task found finished there is loaded instead of run, each task run is
+  // saved there, and its steps rows go to the store's files; without, to SeedRun::steps_csv.
+  const TaskStorage* store = nullptr;
+  // Where learning starts (cbbg run --load-weights); zero weights without.
+  const LearntWeights* initial_weights = nullptr;
+};
+
+// One task's work: fills `run` (its arm and seed set), writing steps rows through
+// `telemetry`.
+using TaskBody = std::function<void(SeedRun& run, const TelemetryOptions& telemetry)>;
+
+// Results for every arm of `arms` and every seed of the config (seed, seed + 1, ...,
+// `seeds` of them), each task run by `body` in `options.jobs` threads. The first task to
+// throw stops the others from starting and is rethrown.
+ExperimentResults run_tasks(const config::Config& config, const std::vector<std::string>& arms,
+                            const TaskBody& body, const ExperimentOptions& options);
+
+}  // namespace cbbg::experiments

@@ -1,0 +1,52 @@
+#pragma once
+// What an experiment produces: per (arm, seed) task a SeedRun, and all of them in
+// ExperimentResults, arm-major.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "experiments/learnt_weights.h"
+#include "experiments/trial_runner.h"
+
+namespace cbbg::experiments {
+
+struct TrialRecord {
+  int trial = 0;  // from 1
+  double k1 = 0.0;
+  TrialOutcome outcome;
+};
+
+// The learnt actor alone from one initial pitch (exp1, learning arms).
+struct EvaluationRecord {
+  double theta0 = 0.0;
+  TrialOutcome outcome;
+};
+
+struct SeedRun {
+  std::string arm;
+  long long seed = 0;
+  std::vector<TrialRecord> trials;
+  // Failed or diverged trials before the first success; all of them if none succeeded.
+  int failures_before_success = 0;
+  bool succeeded = false;
+  // steps.csv rows (no header), every log.decimation-th tick, when no TaskStorage keeps them.
+  std::string steps_csv;
+  // exp1: the learnt actor evaluated from each of evaluation.angles (empty for an arm that
+  // learns nothing).
+  std::vector<EvaluationRecord> evaluation;
+  // The weights learnt by the end of the run (none for an arm that learns nothing).
+  std::optional<LearntWeights> weights;
+};
+
+struct ExperimentResults {
+  std::string experiment;  // exp1, exp2 or the one arm's name
+  std::vector<std::string> arms;
+  std::vector<long long> seeds;
+  std::vector<SeedRun> runs;  // arm-major: runs[a * seeds.size() + s]
+  const SeedRun& run(std::size_t arm, std::size_t seed) const {
+    return runs[arm * seeds.size() + seed];
+  }
+};
+
+}  // namespace cbbg::experiments

@@ -1,0 +1,38 @@
+#pragma once
+// Learnt-weight checkpoints (experiments/learnt_weights.h) saved to and loaded from a text file
+// (docs/weights-format.md). A checkpoint lets a run start from weights learnt earlier and
+// `cbbg eval` measure a learnt policy without learning again.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "config/config.h"
+#include "experiments/learnt_weights.h"
+
+namespace cbbg::results {
+
+// The first line of every weights file this cbbg writes and the only one it reads.
+inline constexpr const char* kWeightsFormat = "cbbg-weights";
+inline constexpr int kWeightsFormatVersion = 1;
+
+using experiments::LearntWeights;
+
+// Writes `weights` to `path` in the text format, every number in the shortest text that
+// reads back to the same double. Writes a temporary file beside `path` and renames it, so
+// `path` is never half-written; creates missing parent directories. Throws
+// std::invalid_argument for weights the format cannot hold (a weight count that does not
+// match the layout, a provenance word with spaces) and std::runtime_error when writing fails.
+void save_weights(const std::filesystem::path& path, const LearntWeights& weights);
+
+// Reads a weights file. Every problem (missing file, other format or version, a malformed
+// line, a wrong count, a non-finite number) throws config::ConfigError: one line naming the
+// file, the line where it applies, and what is wrong.
+LearntWeights load_weights(const std::filesystem::path& path);
+
+// Throws config::ConfigError, naming `source` and both layouts, unless the weights were made
+// for the normaliser and RBF grid of `config` (the same numbers, bit for bit).
+void check_layout(const LearntWeights& weights, const config::Config& config,
+                  const std::filesystem::path& source);
+
+}  // namespace cbbg::results

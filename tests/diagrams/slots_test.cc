@@ -1,0 +1,137 @@
+// A user's own block in each slot, from user code only: a supervisor, a feature approximator
+// feeding critic and actor, and a plant. Each runs through the protocols as a preset does.
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "blocks/measured_signals.h"
+#include "diagrams/presets.h"
+#include "experiments/experiments.h"
+#include "framework/block_context.h"
+
+namespace cbbg::diagrams {
+namespace {
+
+config::Config quick_config() {
+  config::Config config;
+  config.set("plant.kind=analytic");
+  config.set("seeds=2");
+  config.set("log.decimation=0");
+  return config;
+}
+
+// A supervisor of the user's: a PD law on the pitch alone, a_S = 40 theta_b + 8 theta_b'.
+class PitchSupervisor final : public Block {
+ public:
+  explicit PitchSupervisor(std::string name) : Block(std::move(name)) {
+    const InputPort& measured = declare_input_port("measured", blocks::kMeasuredSize);
+    declare_output_port("action", 1,
+                        [&measured](const BlockContext& context, VectorRef action) {
+                          const auto y = context.input(measured);
+                          action[0] = 40.0 * y[blocks::kMeasuredThetaB] +
+                                      8.0 * y[blocks::kMeasuredThetaBDot];
+                        },
+                        {&measured});
+  }
+};
+
+// Features of the user's: a bias and the two state coordinates, phi = (1, x_0, x_1).
+class LinearFeatures final : public Block {
+ public:
+  explicit LinearFeatures(std::string name) : Block(std::move(name)) {
+    const InputPort& x = declare_input_port("x", 2);
+    declare_output_port("features", 3,
+                        [&x](const BlockContext& context, VectorRef phi) {
+                          phi[0] = 1.0;
+                          phi.tail(2) = context.input(x);
+                        },
+                        {&x});
+  }
+};
+
+// A plant of the user's: the pitch as a linear inverted pendulum and one wheel angle for
+// both wheels, theta'' = 24.5 theta - (tau_l + tau_r) / 2, phi'' = tau_l + tau_r.
+class PendulumRobot final : public plant::RobotPlant {
+ public:
+  explicit PendulumRobot(std::string name) : RobotPlant(std::move(name)) {
+    const InputPort& torque = declare_input_port("torque", plant::kTorqueSize);
+    declare_continuous_state(Vector::Zero(4), [&torque](const BlockContext& context, VectorRef d) {
+      const auto x = context.continuous_state();  // theta, theta', phi, phi'
+      const double tau = context.input(torque).sum();
+      d << x[1], 24.5 * x[0] - tau / 2.0, x[3], tau;
+    });
+    declare_output_port("state", plant::kStateSize,
+                        [](const BlockContext& context, VectorRef y) {
+                          const auto x = context.continuous_state();
+                          y.setZero();
+                          y[plant::kThetaB] = x[0];
+                          y[plant::kThetaBDot] = x[1];
+                          y[plant::kPhiLeft] = y[plant::kPhiRight] = x[2];
+                          y[plant::kPhiLeftDot] = y[plant::kPhiRightDot] = x[3];
+                        },
+                        {});
+  }
+  void reset(Context& context, double initial_pitch) const override {
+    auto x = context.continuous_state(*this);
+    x.setZero();
+    x[0] = initial_pitch;
+  }
+};
+
+TEST(Slots, AUsersSupervisorTakesTheCerebellumsPlace) {
+  ControllerOptions options = preset("cbbg").options;
+  options.slots.supervisor = [](const std::string& name, const config::Config&) {
+    return std::make_unique<PitchSupervisor>(name);
+  };
+  const Arm mine = make_arm("cbbg_pitch", options);
+  const ClosedLoop loop = mine.learner(quick_config());
+  auto context = loop.diagram->create_context(1);
+  // theta0 = 0.1744 at rest: a_S = 40 theta0.
+  EXPECT_DOUBLE_EQ(loop.diagram->eval_output(*context, *loop.telemetry)[kTelemetrySupervisorAction],
+                   40.0 * 0.1744);
+  const experiments::ExperimentResults results =
+      experiments::run_exp1(quick_config(), {preset_arm("cbbg"), mine});
+  ASSERT_EQ(results.arms, (std::vector<std::string>{"cbbg", "cbbg_pitch"}));
+  for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+    const auto& run = results.run(1, s);
+    EXPECT_FALSE(run.trials.empty());
+    EXPECT_TRUE(run.weights.has_value());
+    EXPECT_EQ(run.evaluation.size(), quick_config().numbers("evaluation.angles").size());
+  }
+}
+
+TEST(Slots, AUsersFeaturesFeedCriticAndActor) {
+  ControllerOptions options = preset("bg_only").options;
+  options.slots.features = [](const std::string& name, const config::Config&) {
+    return std::make_unique<LinearFeatures>(name);
+  };
+  const ClosedLoop loop = make_arm("bg_linear", options).learner(quick_config());
+  EXPECT_EQ(loop.learner.critic->num_features(), 3);
+  EXPECT_EQ(loop.learner.actor->num_features(), 3);
+  experiments::TrialRunner runner(loop, 1, 0.01);
+  runner.run_trial(0.1744, 2.0);
+  EXPECT_GT(loop.learner.critic->weights(runner.context()).norm(), 0.0);
+  EXPECT_GT(loop.learner.actor->weights(runner.context()).norm(), 0.0);
+}
+
+TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
+  ClosedLoopOptions pendulum;
+  pendulum.plant = [](const std::string& name, const config::Config&) {
+    return std::make_unique<PendulumRobot>(name);
+  };
+  // The paper's PD law balances the pendulum (50 > 2 * 24.5 / 2 ... stable), its absence not.
+  const ClosedLoop supervised = build_preset("pd_only", quick_config(), pendulum);
+  experiments::TrialRunner runner(supervised, 1, 0.01);
+  EXPECT_EQ(runner.run_trial(0.1744, 5.0).status, experiments::TrialStatus::kSuccess);
+  const experiments::ExperimentResults results =
+      experiments::run_exp1(quick_config(), {preset_arm("bg_only", pendulum)});
+  EXPECT_EQ(results.runs.size(), 2u);
+  EXPECT_GT(results.runs[0].trials.size(), 0u);
+  EXPECT_EQ(results.runs[0].trials.front().outcome.status, experiments::TrialStatus::kFailed);
+}
+
+}  // namespace
+}  // namespace cbbg::diagrams

@@ -1,0 +1,194 @@
+// The subsystems of the CB-BG controller and the closed loop: their ports, their blocks and
+// their messages.
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "blocks/pd_supervisor.h"
+#include "blocks/rbf_features.h"
+#include "diagrams/basal_ganglia.h"
+#include "diagrams/cerebellum.h"
+#include "diagrams/closed_loop.h"
+#include "diagrams/presets.h"
+#include "experiments/trial_runner.h"
+#include "framework/graphviz.h"
+#include "framework/primitives/gain.h"
+
+namespace cbbg::diagrams {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+config::Config analytic_config() {
+  config::Config config;
+  config.set("plant.kind=analytic");
+  return config;
+}
+
+std::vector<std::string> port_names(const Block& block, bool inputs) {
+  std::vector<std::string> names;
+  const int count = inputs ? block.num_input_ports() : block.num_output_ports();
+  for (int i = 0; i < count; ++i) {
+    names.push_back(inputs ? block.input_port(i).name() : block.output_port(i).name());
+  }
+  return names;
+}
+
+std::vector<std::string> child_names(const Diagram& diagram) {
+  std::vector<std::string> names;
+  for (const auto& block : diagram.blocks()) names.push_back(block->name());
+  return names;
+}
+
+BasalGanglia make_basal_ganglia(bool exploration) {
+  BasalGangliaParams params;
+  params.exploration = exploration;
+  return BasalGanglia("basal_ganglia",
+                      std::make_unique<blocks::RbfFeatures>("features", blocks::RbfParams{}),
+                      params);
+}
+
+TEST(BasalGanglia, HasTheDocumentedPortsAndBlocks) {
+  const BasalGanglia bg = make_basal_ganglia(true);
+  EXPECT_EQ(port_names(bg, true),
+            (std::vector<std::string>{"state", "reward", "failed", "supervisor_action", "omega"}));
+  EXPECT_EQ(port_names(bg, false),
+            (std::vector<std::string>{"actor_action", "exploration_action", "value", "td_error",
+                                      "temperature", "entropy"}));
+  EXPECT_EQ(bg.state().size(), 2);
+  EXPECT_EQ(&bg.state(), &bg.input_port("state"));
+  EXPECT_EQ(&bg.temperature(), &bg.output_port("temperature"));
+  EXPECT_EQ(child_names(bg), (std::vector<std::string>{"features", "critic", "actor", "tropism",
+                                                       "sampler", "entropy"}));
+  EXPECT_EQ(bg.critic().num_features(), 49);
+  ASSERT_NE(bg.tropism(), nullptr);
+}
+
+TEST(BasalGanglia, WithoutExplorationTheActorActsAloneAndTheTemperatureIsNaN) {
+  const BasalGanglia bg = make_basal_ganglia(false);
+  EXPECT_EQ(bg.tropism(), nullptr);
+  EXPECT_EQ(child_names(bg),
+            (std::vector<std::string>{"features", "critic", "actor", "no_exploration"}));
+  auto context = bg.create_context(1);
+  context->fix_input(bg.state(), Vector::Constant(2, 0.5));
+  for (const InputPort* port : {&bg.reward(), &bg.failed(), &bg.supervisor_action(), &bg.omega()}) {
+    context->fix_input(*port, Vector::Zero(1));
+  }
+  bg.actor().mutable_weights(*context).setConstant(0.25);
+  const double actor_action = bg.eval_output(*context, bg.actor_action())[0];
+  EXPECT_GT(actor_action, 0.0);
+  EXPECT_EQ(bg.eval_output(*context, bg.exploration_action())[0], actor_action);
+  EXPECT_TRUE(std::isnan(bg.eval_output(*context, bg.temperature())[0]));
+  EXPECT_TRUE(std::isnan(bg.eval_output(*context, bg.entropy())[0]));
+}
+
+TEST(BasalGanglia, RefusesAFeaturesBlockWithOtherPorts) {
+  EXPECT_THAT(
+      [] { BasalGanglia("bg", std::make_unique<Gain>("features", 1.0, 2), BasalGangliaParams{}); },
+      ThrowsMessage<std::invalid_argument>(
+          "basal ganglia 'bg': the features block 'features' must have one input \"x\" and one "
+          "output \"features\""));
+}
+
+TEST(Cerebellum, WrapsItsSupervisor) {
+  const Cerebellum cerebellum("cerebellum", std::make_unique<blocks::PdSupervisor>(
+                                                "supervisor", blocks::PdSupervisorParams{}));
+  EXPECT_EQ(port_names(cerebellum, true), std::vector<std::string>{"measured"});
+  EXPECT_EQ(port_names(cerebellum, false), std::vector<std::string>{"action"});
+  EXPECT_EQ(cerebellum.measured().size(), 6);
+  EXPECT_EQ(cerebellum.supervisor().name(), "supervisor");
+  auto context = cerebellum.create_context(1);
+  Vector measured = Vector::Zero(6);
+  measured[0] = 0.1;  // leaning forward: the PD law pushes the wheels forward
+  context->fix_input(cerebellum.measured(), measured);
+  EXPECT_DOUBLE_EQ(cerebellum.eval_output(*context, cerebellum.action())[0], 50.0 * 0.1);
+}
+
+TEST(Cerebellum, RefusesASupervisorWithOtherPorts) {
+  EXPECT_THAT([] { Cerebellum("cb", std::make_unique<Gain>("supervisor", 1.0, 1)); },
+              ThrowsMessage<std::invalid_argument>(
+                  "cerebellum 'cb': the supervisor block 'supervisor' must have one input "
+                  "\"measured\" and one output \"action\" of size 1"));
+}
+
+TEST(CbbgController, OffersTheDocumentedPortsWithAndWithoutBasalGanglia) {
+  const config::Config config = analytic_config();
+  const std::vector<std::string> outputs{
+      "action",   "supervisor_action", "actor_action", "exploration_action", "omega", "value",
+      "td_error", "temperature",       "entropy"};
+  const CbbgController full("controller", config, ControllerOptions{});
+  EXPECT_EQ(port_names(full, true), (std::vector<std::string>{"measured", "reward", "failed"}));
+  EXPECT_EQ(port_names(full, false), outputs);
+  EXPECT_EQ(child_names(full), (std::vector<std::string>{"cerebellum", "normaliser",
+                                                         "basal_ganglia", "omega", "mixer"}));
+  ControllerOptions alone;
+  alone.basal_ganglia = false;
+  const CbbgController supervisor("controller", config, alone);
+  EXPECT_EQ(port_names(supervisor, true), std::vector<std::string>{"measured"});
+  EXPECT_EQ(supervisor.reward(), nullptr);
+  EXPECT_EQ(supervisor.basal_ganglia(), nullptr);
+  EXPECT_EQ(port_names(supervisor, false), outputs);
+}
+
+TEST(CbbgController, RefusesOptionsWithNothingThatActs) {
+  ControllerOptions nothing;
+  nothing.supervisor = false;
+  nothing.basal_ganglia = false;
+  EXPECT_THAT([&] { CbbgController("controller", analytic_config(), nothing); },
+              ThrowsMessage<std::invalid_argument>(
+                  "controller options: with neither a supervisor nor basal ganglia nothing acts; "
+                  "keep one of them"));
+}
+
+TEST(ClosedLoop, AStartedTrialResetsPerTrialStateAndKeepsTheWeights) {
+  const config::Config config = analytic_config();
+  const ClosedLoop loop = build_preset("bg_only", config);
+  experiments::TrialRunner runner(loop, 1, config.number("trial.period"));
+  const experiments::TrialOutcome first = runner.run_trial(0.1744, 20.0);
+  EXPECT_EQ(first.status, experiments::TrialStatus::kFailed);  // a blank actor cannot balance
+  Context& context = runner.context();
+  const Vector learnt = loop.learner.actor->weights(context);
+  EXPECT_GT(learnt.norm(), 0.0);
+  const auto& critic = *loop.learner.critic;
+  EXPECT_GT(critic.discrete_state_part("trace").of(context.discrete_state(critic)).norm(), 0.0);
+  loop.start_trial(context, 0.1);
+  EXPECT_EQ(loop.learner.actor->weights(context), learnt);
+  EXPECT_EQ(critic.discrete_state_part("trace").of(context.discrete_state(critic)).norm(), 0.0);
+  EXPECT_EQ(context.time(), 0.0);
+  EXPECT_EQ(loop.diagram->eval_output(context, *loop.telemetry)[kTelemetryThetaB], 0.1);
+}
+
+TEST(ClosedLoop, RefusesAPlantWithoutTheRobotPorts) {
+  class Stub final : public plant::RobotPlant {
+   public:
+    explicit Stub(std::string name) : RobotPlant(std::move(name)) {
+      declare_input_port("torque", 1);
+    }
+    void reset(Context&, double) const override {}
+  };
+  ClosedLoopOptions options;
+  options.plant = [](const std::string& name, const config::Config&) {
+    return std::make_unique<Stub>(name);
+  };
+  EXPECT_THAT([&] { closed_loop_factory("stub", ControllerOptions{}, options)(analytic_config()); },
+              ThrowsMessage<std::invalid_argument>(
+                  "plant 'plant' must have an input \"torque\" of size 2 and an output \"state\" "
+                  "of size 10 (plant/robot_plant.h)"));
+}
+
+TEST(ClosedLoop, IsDrawnWithTheCerebellumAndTheBasalGangliaAsClusters) {
+  const ClosedLoop loop = build_preset("cbbg", analytic_config());
+  const std::string dot = to_dot(*loop.diagram, {.hidden_blocks = {"cbbg/telemetry"}});
+  EXPECT_THAT(dot, HasSubstr("subgraph \"cluster_cbbg/controller/cerebellum\""));
+  EXPECT_THAT(dot, HasSubstr("subgraph \"cluster_cbbg/controller/basal_ganglia\""));
+  EXPECT_THAT(dot, ::testing::Not(HasSubstr("\"cbbg/telemetry\"")));
+  EXPECT_THAT(to_dot(*loop.diagram), HasSubstr("\"cbbg/telemetry\""));
+}
+
+}  // namespace
+}  // namespace cbbg::diagrams
