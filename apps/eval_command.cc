@@ -15,7 +15,7 @@
 #include "diagrams/params_from_config.h"
 #include "diagrams/presets.h"
 #include "experiments/policy_evaluation.h"
-#include "results/weights_file.h"
+#include "store/weights_file.h"
 
 namespace cbbg::app {
 namespace {
@@ -150,8 +150,8 @@ int eval_command(const EvalOptions& options) {
     }
     loop.push = push_from(options);
     config = resolve(options);
-    weights = results::load_weights(options.weights_file);
-    results::check_layout(weights, config, options.weights_file);
+    weights = store::load_weights(options.weights_file);
+    store::check_layout(weights, config, options.weights_file);
     settings.angles = config.numbers("evaluation.angles");
     settings.repeats = options.repeats;
   } catch (const config::ConfigError& error) {

@@ -14,9 +14,9 @@
 #include "diagrams/params_from_config.h"
 #include "diagrams/presets.h"
 #include "experiments/experiments.h"
-#include "results/results_writer.h"
-#include "results/task_store.h"
-#include "results/weights_file.h"
+#include "store/results_writer.h"
+#include "store/task_store.h"
+#include "store/weights_file.h"
 
 namespace cbbg::app {
 namespace {
@@ -75,7 +75,7 @@ void print_summary(const experiments::ExperimentResults& results) {
       low = std::min(low, run.failures_before_success);
       high = std::max(high, run.failures_before_success);
     }
-    const double median = results::median(failures);
+    const double median = store::median(failures);
     std::printf("%-14s %8zu %10d %8.1f [%d, %d]  (failures before the first success)\n",
                 results.arms[a].c_str(), results.seeds.size(), succeeded, median, low, high);
   }
@@ -94,7 +94,7 @@ long long learning_runs(const config::Config& config) {
 
 int run_command(const RunOptions& options) {
   config::Config config;
-  std::optional<results::RunDirectory> directory;
+  std::optional<store::RunDirectory> directory;
   std::optional<experiments::LearntWeights> initial_weights;
   try {
     if (!options.resume.empty()) {
@@ -104,7 +104,7 @@ int run_command(const RunOptions& options) {
             "--resume continues with the config and weights of the interrupted run; drop "
             "--config, --set, --experiment, --seeds, --seed and --load-weights");
       }
-      directory = results::RunDirectory::resume(options.resume);
+      directory = store::RunDirectory::resume(options.resume);
       config = directory->config();
       diagrams::validate_all(config);
     } else {
@@ -117,14 +117,14 @@ int run_command(const RunOptions& options) {
           " (use --experiment ARM --seeds 1; every run's weights are in DIR/weights/)");
     }
     if (!options.load_weights.empty()) {
-      initial_weights = results::load_weights(options.load_weights);
-      results::check_layout(*initial_weights, config, options.load_weights);
+      initial_weights = store::load_weights(options.load_weights);
+      store::check_layout(*initial_weights, config, options.load_weights);
     }
     if (!directory) {
-      directory = results::RunDirectory::create(options.out, config);
-      if (initial_weights) results::save_weights(directory->initial_weights(), *initial_weights);
+      directory = store::RunDirectory::create(options.out, config);
+      if (initial_weights) store::save_weights(directory->initial_weights(), *initial_weights);
     } else if (std::filesystem::exists(directory->initial_weights())) {
-      initial_weights = results::load_weights(directory->initial_weights());
+      initial_weights = store::load_weights(directory->initial_weights());
     }
   } catch (const config::ConfigError& error) {
     std::cerr << "cbbg: error: " << error.what() << "\n";
@@ -136,7 +136,7 @@ int run_command(const RunOptions& options) {
                config.text("experiment"), config.integer("seeds"), arms, config.text("plant.kind"),
                options.jobs, options.resume.empty() ? "" : ", resumed");
   try {
-    const results::TaskStore store(directory->tasks());
+    const store::TaskStore store(directory->tasks());
     Progress progress(tasks, ::isatty(STDERR_FILENO) == 1);
     experiments::ExperimentOptions experiment;
     experiment.jobs = options.jobs;
@@ -145,13 +145,13 @@ int run_command(const RunOptions& options) {
     if (initial_weights) experiment.initial_weights = &*initial_weights;
     const experiments::ExperimentResults results = experiments::run_experiment(config, experiment);
     progress.close();
-    results::write_result_files(results, config, directory->work(), &store);
+    store::write_result_files(results, config, directory->work(), &store);
     if (options.figures) draw_figures(directory->work(), config, /*quiet=*/true);
     directory->commit();
     print_summary(results);
     if (!options.save_weights.empty()) {
       for (const auto& run : results.runs) {
-        if (run.weights) results::save_weights(options.save_weights, *run.weights);
+        if (run.weights) store::save_weights(options.save_weights, *run.weights);
       }
       spdlog::info("weights in {}", options.save_weights.string());
     }

@@ -8,7 +8,7 @@
 
 namespace cbbg::blocks {
 
-// Config key actor.rule: how the actor's weights learn (SPEC 2.11).
+// Config key actor.rule: how the actor's weights learn (docs/model.md §2.11).
 enum class ActorRule {
   kImproved,  // "improved": paper eq. 11, the TD error modulates the supervised error too
   kWeighted,  // "weighted": paper eq. 7, Rosenstein & Barto's supervised actor-critic
@@ -30,7 +30,8 @@ struct ActorParams {
   void validate() const;
 };
 
-/// Actor: the action network a_A = theta . phi(s) and its learning rule (SPEC 2.3, 2.11).
+/// Actor: the action network a_A = theta . phi(s) and its learning rule (docs/model.md §2.3,
+/// §2.11).
 ///
 /// | port               | dir | size | meaning                                 |
 /// |--------------------|-----|------|-----------------------------------------|

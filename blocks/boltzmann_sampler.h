@@ -9,14 +9,15 @@ namespace cbbg::blocks {
 // Config key sampler.k_b.
 struct SamplerParams {
   // sampler.k_b: K_B, temperature to action variance. The default 1 reads the temperature in
-  // action units; the paper's literal Boltzmann constant 1.38e-23 is accepted too (SPEC 2.6).
+  // action units; the paper's literal Boltzmann constant 1.38e-23 is accepted too (docs/model.md
+  // §2.6).
   double k_b = 1.0;
 
   // Throws naming sampler.k_b unless it is finite and > 0.
   void validate() const;
 };
 
-/// BoltzmannSampler: the basal ganglia's exploratory action (SPEC 2.6).
+/// BoltzmannSampler: the basal ganglia's exploratory action (docs/model.md §2.6).
 ///
 /// | port         | dir | size | meaning                        |
 /// |--------------|-----|------|--------------------------------|

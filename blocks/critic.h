@@ -21,7 +21,7 @@ struct CriticParams {
   void validate() const;
 };
 
-/// Critic: the value function V(s) = w . phi(s), learnt by TD(lambda) (SPEC 2.3, 2.10).
+/// Critic: the value function V(s) = w . phi(s), learnt by TD(lambda) (docs/model.md §2.3, §2.10).
 ///
 /// | port     | dir | size | meaning                                              |
 /// |----------|-----|------|------------------------------------------------------|

@@ -14,7 +14,7 @@ struct EntropyParams {
   void validate() const;
 };
 
-/// Entropy: the differential entropy of the exploration law, for logging (SPEC 2.12).
+/// Entropy: the differential entropy of the exploration law, for logging (docs/model.md §2.12).
 ///
 /// | port        | dir | size | meaning                            |
 /// |-------------|-----|------|------------------------------------|

@@ -14,7 +14,7 @@ struct FailureDetectorParams {
   void validate() const;
 };
 
-/// FailureDetector: ends the trial when the robot falls (SPEC 3).
+/// FailureDetector: ends the trial when the robot falls (docs/model.md §3).
 ///
 /// | port     | dir | size | meaning                                  |
 /// |----------|-----|------|------------------------------------------|

@@ -6,7 +6,7 @@
 
 namespace cbbg::blocks {
 
-/// Mixer: the action sent to the motors, between exploration and supervision (SPEC 2.8).
+/// Mixer: the action sent to the motors, between exploration and supervision (docs/model.md §2.8).
 ///
 /// | port               | dir | size | meaning                     |
 /// |--------------------|-----|------|-----------------------------|

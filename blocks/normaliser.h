@@ -16,7 +16,7 @@ struct NormaliserParams {
   void validate() const;
 };
 
-/// Normaliser: pitch and pitch rate in grid units, saturated to the RBF grid (SPEC 2.2).
+/// Normaliser: pitch and pitch rate in grid units, saturated to the RBF grid (docs/model.md §2.2).
 ///
 /// | port     | dir | size | meaning                                  |
 /// |----------|-----|------|------------------------------------------|

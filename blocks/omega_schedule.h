@@ -10,7 +10,7 @@ namespace cbbg::blocks {
 
 // Config key omega.mode: where omega comes from.
 enum class OmegaMode {
-  kSchedule,  // "schedule": SPEC 2.7's exponential rise (the CB-BG arms)
+  kSchedule,  // "schedule": docs/model.md §2.7's exponential rise (the CB-BG arms)
   kZero,      // "zero": omega = 0, the supervisor alone drives (cb_only)
   kOne,       // "one": omega = 1, exploration alone drives (bg_only)
 };
@@ -29,7 +29,8 @@ struct OmegaParams {
   void validate() const;
 };
 
-/// OmegaSchedule: the coordination factor between cerebellum and basal ganglia (SPEC 2.7).
+/// OmegaSchedule: the coordination factor between cerebellum and basal ganglia (docs/model.md
+/// §2.7).
 ///
 /// | port  | dir | size | meaning               |
 /// |-------|-----|------|-----------------------|

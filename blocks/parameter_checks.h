@@ -1,6 +1,6 @@
 #pragma once
 // Checks of block parameters against their allowed ranges. Each failure throws
-// std::invalid_argument naming the config key (SPEC section 4), the allowed range and the
+// std::invalid_argument naming the config key (docs/model.md §4), the allowed range and the
 // value given, e.g. "critic.gamma must be in (0, 1]; got 1.5".
 
 #include <string>

@@ -17,7 +17,8 @@ struct PdSupervisorParams {
   void validate() const;
 };
 
-/// PdSupervisor: the cerebellum's target action, a PD law on pitch and wheel angle (SPEC 2.4).
+/// PdSupervisor: the cerebellum's target action, a PD law on pitch and wheel angle (docs/model.md
+/// §2.4).
 ///
 /// | port     | dir | size | meaning                                 |
 /// |----------|-----|------|-----------------------------------------|

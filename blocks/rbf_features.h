@@ -18,7 +18,8 @@ struct RbfParams {
   void validate() const;
 };
 
-/// RbfFeatures: the Gaussian radial-basis features of the critic and the actor (SPEC 2.3).
+/// RbfFeatures: the Gaussian radial-basis features of the critic and the actor (docs/model.md
+/// §2.3).
 ///
 /// | port     | dir | size | meaning                                  |
 /// |----------|-----|------|------------------------------------------|

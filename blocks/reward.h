@@ -16,7 +16,7 @@ struct RewardParams {
   void validate() const;
 };
 
-/// Reward: the sliding-surface reward of SPEC 2.9.
+/// Reward: the sliding-surface reward of docs/model.md §2.9.
 ///
 /// | port     | dir | size | meaning                                              |
 /// |----------|-----|------|------------------------------------------------------|

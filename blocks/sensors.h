@@ -19,7 +19,7 @@ struct SensorsParams {
   void validate() const;
 };
 
-/// Sensors: the plant state to the signals the controller measures (SPEC 2.1).
+/// Sensors: the plant state to the signals the controller measures (docs/model.md §2.1).
 ///
 /// | port        | dir | size | meaning                                                  |
 /// |-------------|-----|------|----------------------------------------------------------|

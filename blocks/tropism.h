@@ -16,7 +16,7 @@ struct TropismParams {
   void validate() const;
 };
 
-/// Tropism: the exploration temperature from the critic's value (SPEC 2.5).
+/// Tropism: the exploration temperature from the critic's value (docs/model.md §2.5).
 ///
 /// | port        | dir | size | meaning                       |
 /// |-------------|-----|------|-------------------------------|

@@ -1,15 +1,15 @@
 # Install rules and a CMake package: find_package(cbbg) gives every library as a target
-# (cbbg::framework, plant, blocks, config, diagrams, experiments, results), the `cbbg`
+# (cbbg::framework, plant, blocks, config, diagrams, experiments, store), the `cbbg`
 # command and its plotting script. Headers install under include/cbbg/ with their tree
 # (framework/..., diagrams/...), as the sources include them.
 include(CMakePackageConfigHelpers)
 
 set(CBBG_LIBRARIES cbbg_framework cbbg_plant cbbg_blocks cbbg_config cbbg_diagrams
-                   cbbg_experiments cbbg_results)
+                   cbbg_experiments cbbg_store)
 install(TARGETS ${CBBG_LIBRARIES} EXPORT cbbgTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(folder framework plant blocks config diagrams experiments results)
+foreach(folder framework plant blocks config diagrams experiments store)
   install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/${folder}
           FILES_MATCHING PATTERN "*.h")
 endforeach()

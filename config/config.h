@@ -1,5 +1,5 @@
 #pragma once
-// The configuration tree of a cbbg run: every key of SPEC section 4 (and the keys added
+// The configuration tree of a cbbg run: every key of docs/model.md §4 (and the keys added
 // since) with its type, default and meaning, merged from the built-in defaults, a YAML file
 // and `--set key.path=value` overrides, in that order. Types, choices and simple ranges are
 // checked here, as each value arrives; ranges a block owns are checked by its params'

@@ -1,4 +1,4 @@
-// The keys of a cbbg config: SPEC section 4's names, types, defaults and meanings.
+// The keys of a cbbg config: docs/model.md §4's names, types, defaults and meanings.
 
 #include <limits>
 
@@ -97,8 +97,8 @@ std::vector<KeySpec> make_schema() {
       numbers("rbf.centres", {-3, -2, -1, 0, 1, 2, 3}, "grid coordinates per axis (n x n units)",
               0),
       positive("rbf.width", 0.5, "b: Gaussian width of every unit, grid units"),
-      text("supervisor.kind", "pd", "pd (SPEC 2.4) | lqr (Riccati gains of the linearised robot)",
-           {"pd", "lqr"}),
+      text("supervisor.kind", "pd",
+           "pd (docs/model.md §2.4) | lqr (Riccati gains of the linearised robot)", {"pd", "lqr"}),
       number("supervisor.k_theta", 50.0, "PD gain on theta_b, N m/rad"),
       number("supervisor.k_dtheta", 10.0, "PD gain on theta_b', N m s/rad"),
       number("supervisor.k_phi", 1.0, "PD gain on (phi_l + phi_r)/2, N m/rad"),

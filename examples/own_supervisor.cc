@@ -20,8 +20,8 @@
 #include "experiments/experiments.h"
 #include "framework/block_context.h"
 #include "framework/graphviz.h"
-#include "results/results_writer.h"
-#include "results/task_store.h"
+#include "store/results_writer.h"
+#include "store/task_store.h"
 
 namespace {
 
@@ -80,11 +80,11 @@ int main(int argc, char** argv) {
     const std::vector<diagrams::Arm> arms{diagrams::preset_arm("cbbg"),
                                           diagrams::make_arm("cbbg_saturated_pd", mine)};
 
-    results::RunDirectory directory = results::RunDirectory::create(argv[1], config);
-    const results::TaskStore store(directory.tasks());
+    store::RunDirectory directory = store::RunDirectory::create(argv[1], config);
+    const store::TaskStore store(directory.tasks());
     const experiments::ExperimentResults results =
         experiments::run_exp1(config, arms, {.jobs = 2, .store = &store});
-    results::write_result_files(results, config, directory.work(), &store);
+    store::write_result_files(results, config, directory.work(), &store);
     render(arms[1], config, directory.work() / "figures");
     directory.commit();
 

@@ -25,7 +25,7 @@ struct WeightsProvenance {
 
 // The weights of the critic (V = w . phi) and the actor (a_A = theta . phi), and the layout
 // that gives phi its meaning: the normaliser's scales and the RBF grid. Weights are only
-// meaningful with the same layout (results::check_layout).
+// meaningful with the same layout (store::check_layout).
 struct LearntWeights {
   std::vector<double> centres;          // rbf.centres
   double width = 0.0;                   // rbf.width
@@ -46,7 +46,7 @@ LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& co
 
 // Sets the actor's weights in `context`, and the critic's where the loop has one. Throws
 // std::invalid_argument when the loop has no actor or the feature counts differ;
-// results::check_layout first for a user's message.
+// store::check_layout first for a user's message.
 void load_learnt_weights(const diagrams::ClosedLoop& loop, Context& context,
                          const LearntWeights& weights);
 

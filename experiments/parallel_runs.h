@@ -13,7 +13,7 @@
 
 namespace cbbg::experiments {
 
-// Where finished tasks are kept between runs (results::TaskStore keeps them on disk).
+// Where finished tasks are kept between runs (store::TaskStore keeps them on disk).
 class TaskStorage {
  public:
   virtual ~TaskStorage() = default;

@@ -46,7 +46,7 @@ struct PolicyEvaluation {
 // Runs the policy of `weights` in the closed loop `policy` builds for `config` (plant.kind,
 // trial.duration, trial.period, trial.failure_angle, sensors.*) from each angle,
 // settings.repeats times. The weights' feature count must match the loop's features
-// (results::check_layout gives the user's message; here a mismatch throws
+// (store::check_layout gives the user's message; here a mismatch throws
 // std::invalid_argument, as does a loop without an actor).
 PolicyEvaluation evaluate_policy(const config::Config& config,
                                  const diagrams::ClosedLoopFactory& policy,

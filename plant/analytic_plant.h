@@ -9,7 +9,7 @@
 
 namespace cbbg::plant {
 
-/// AnalyticPlant: the robot of SPEC section 1 as its equations of motion (robot_dynamics.h),
+/// AnalyticPlant: the robot of docs/model.md §1 as its equations of motion (robot_dynamics.h),
 /// integrated by the Simulator's error-controlled Dormand–Prince 5(4) stepper (Boost.Odeint)
 /// at SimulatorOptions::accuracy (the experiments set it from plant.accuracy).
 ///

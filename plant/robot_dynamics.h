@@ -1,5 +1,5 @@
 #pragma once
-// The robot's equations of motion (SPEC section 1), shared by the analytic plant, the
+// The robot's equations of motion (docs/model.md §1), shared by the analytic plant, the
 // linearisation and the tests: M(q) q'' + N(q, q') = E T.
 //
 // q = (theta_b, phi_l, phi_r), T = (tau_l, tau_r), E = [[-1, -1], [1, 0], [0, 1]].
@@ -16,15 +16,15 @@
 // K is the yaw inertia about the axle midpoint: the body's J_z c^2 + J_x s^2, its mass's
 // M L^2 s^2 and the wheels' diameters' 2 I_d.
 //
-// Two differences from SPEC's equations, both acting only while the robot turns (psi' != 0):
+// Two differences from the paper's equations, both acting only while the robot turns (psi' != 0):
 // - the terms -/+ M L R rho s psi' phi' of n2 and n3 come from the sideways momentum of the
 //   leaning body, M L s psi', turning with the yaw rate. The no-slip constraints on x and y
-//   are not integrable, so substituting them into the Lagrangian (as SPEC's derivation does)
+//   are not integrable, so substituting them into the Lagrangian (as the paper's derivation does)
 //   loses these terms; Lagrange's equations with the constraints (or the Simbody model)
 //   keep them. They do no work, so an energy test cannot see them; the turning comparison
 //   with the Simbody plant does.
 // - J_x and I_d (see RobotParams). With J_x = J_z, I_d = 0 and those two terms removed,
-//   these are SPEC's equations letter for letter.
+//   these are the paper's equations letter for letter.
 //
 // The planar pose follows from rolling without slip: forward speed v = R (phi_l' + phi_r') / 2,
 // x' = v cos psi, y' = v sin psi, yaw rate psi' as above.

@@ -1,5 +1,5 @@
 // CPU time per trial tick of the cbbg diagram on the analytic plant, run by the
-// TrialRunner, against SPEC section 2 as one plain loop (tests/diagrams/plain_loop.h) that
+// TrialRunner, against docs/model.md §2 as one plain loop (tests/diagrams/plain_loop.h) that
 // tests/diagrams proves bit-identical to it. Each iteration is the first trial of a fresh
 // learner from the default theta0 and root seed 1, so both sides do exactly the same
 // arithmetic and tick count; building the learner is left out of the timing.

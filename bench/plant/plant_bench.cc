@@ -1,4 +1,4 @@
-// CPU cost of one 10 ms step of each robot plant under the PD law of SPEC 2.4 (zero-order
+// CPU cost of one 10 ms step of each robot plant under the PD law of docs/model.md §2.4 (zero-order
 // hold, 20 s trials from theta_b = 0.1744), and what the diagram adds to the Simbody plant:
 // the same Simbody model stepped by a plain loop that does the same work (read the state,
 // PD law, saturate, hold the torque, integrate 10 ms).

@@ -5,14 +5,14 @@
 
 #include "diagrams/presets.h"
 #include "plant/plant_ports.h"
-#include "results/results_writer.h"
+#include "store/results_writer.h"
 
 namespace cbbg::experiments {
 namespace {
 
 using namespace cbbg::diagrams;
 using namespace cbbg::experiments;
-using namespace cbbg::results;
+using namespace cbbg::store;
 
 using ::testing::HasSubstr;
 

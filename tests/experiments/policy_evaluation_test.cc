@@ -21,14 +21,14 @@
 #include "framework/diagram_builder.h"
 #include "framework/primitives/constant_source.h"
 #include "framework/simulator.h"
-#include "results/weights_file.h"
+#include "store/weights_file.h"
 
 namespace cbbg::experiments {
 namespace {
 
 using namespace cbbg::diagrams;
 using namespace cbbg::experiments;
-using namespace cbbg::results;
+using namespace cbbg::store;
 using blocks::PushParams;
 
 using ::testing::HasSubstr;

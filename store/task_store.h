@@ -11,7 +11,7 @@
 #include "experiments/parallel_runs.h"
 #include "experiments/seed_run.h"
 
-namespace cbbg::results {
+namespace cbbg::store {
 
 using experiments::SeedRun;
 
@@ -43,4 +43,4 @@ std::string serialize_run(const SeedRun& run);
 // Throws std::runtime_error naming `source` for a record that is not one.
 SeedRun parse_run(const std::string& text, const std::string& source);
 
-}  // namespace cbbg::results
+}  // namespace cbbg::store

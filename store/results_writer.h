@@ -10,7 +10,7 @@
 #include "config/config.h"
 #include "experiments/seed_run.h"
 
-namespace cbbg::results {
+namespace cbbg::store {
 
 using experiments::ExperimentResults;
 
@@ -58,4 +58,4 @@ class RunDirectory {
   config::Config config_;
 };
 
-}  // namespace cbbg::results
+}  // namespace cbbg::store

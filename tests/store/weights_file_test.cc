@@ -1,4 +1,4 @@
-#include "results/weights_file.h"
+#include "store/weights_file.h"
 #include "tests/support/scratch_directory.h"
 
 #include <bit>
@@ -17,12 +17,12 @@
 
 #include "diagrams/presets.h"
 
-namespace cbbg::results {
+namespace cbbg::store {
 namespace {
 
 using namespace cbbg::diagrams;
 using namespace cbbg::experiments;
-using namespace cbbg::results;
+using namespace cbbg::store;
 
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
@@ -399,4 +399,4 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
 }
 
 }  // namespace
-}  // namespace cbbg::results
+}  // namespace cbbg::store

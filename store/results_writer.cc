@@ -1,7 +1,7 @@
-#include "results/results_writer.h"
+#include "store/results_writer.h"
 
-#include "results/task_store.h"
-#include "results/weights_file.h"
+#include "store/task_store.h"
+#include "store/weights_file.h"
 
 #include <algorithm>
 #include <charconv>
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace cbbg::results {
+namespace cbbg::store {
 
 using experiments::EvaluationRecord;
 using experiments::SeedRun;
@@ -208,4 +208,4 @@ void RunDirectory::commit() {
   if (!previous.empty()) std::filesystem::remove_all(previous);
 }
 
-}  // namespace cbbg::results
+}  // namespace cbbg::store

@@ -1,4 +1,4 @@
-#include "results/weights_file.h"
+#include "store/weights_file.h"
 
 #include <atomic>
 #include <charconv>
@@ -14,7 +14,7 @@
 
 #include "diagrams/params_from_config.h"
 
-namespace cbbg::results {
+namespace cbbg::store {
 
 using experiments::LearntWeights;
 using experiments::WeightsProvenance;
@@ -404,4 +404,4 @@ void check_layout(const LearntWeights& weights, const config::Config& config,
   }
 }
 
-}  // namespace cbbg::results
+}  // namespace cbbg::store

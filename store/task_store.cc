@@ -1,12 +1,12 @@
-#include "results/task_store.h"
-#include "results/weights_file.h"
+#include "store/task_store.h"
+#include "store/weights_file.h"
 
 #include <charconv>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-namespace cbbg::results {
+namespace cbbg::store {
 
 using experiments::EvaluationRecord;
 using experiments::steps_csv_header;
@@ -181,4 +181,4 @@ void TaskStore::save(std::size_t task, const SeedRun& run) const {
   std::filesystem::rename(temporary, record_path(task));
 }
 
-}  // namespace cbbg::results
+}  // namespace cbbg::store

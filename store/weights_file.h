@@ -10,7 +10,7 @@
 #include "config/config.h"
 #include "experiments/learnt_weights.h"
 
-namespace cbbg::results {
+namespace cbbg::store {
 
 // The first line of every weights file this cbbg writes and the only one it reads.
 inline constexpr const char* kWeightsFormat = "cbbg-weights";
@@ -35,4 +35,4 @@ LearntWeights load_weights(const std::filesystem::path& path);
 void check_layout(const LearntWeights& weights, const config::Config& config,
                   const std::filesystem::path& source);
 
-}  // namespace cbbg::results
+}  // namespace cbbg::store
