@@ -1,33 +1,17 @@
 #include "diagrams/basal_ganglia.h"
 
 #include <limits>
-#include <stdexcept>
 
+#include "diagrams/slot_check.h"
 #include "framework/diagram_builder.h"
 #include "framework/primitives/constant_source.h"
 
 namespace cbbg::diagrams {
-namespace {
-
-// The feature block must map "x" to "features"; say so before a port lookup fails.
-void check_features_block(const Block* features, const std::string& diagram) {
-  if (features == nullptr) {
-    throw std::invalid_argument("basal ganglia '" + diagram + "': the features block is null");
-  }
-  if (features->num_input_ports() != 1 || features->input_port(0).name() != "x" ||
-      features->num_output_ports() != 1 || features->output_port(0).name() != "features") {
-    throw std::invalid_argument("basal ganglia '" + diagram + "': the features block '" +
-                                features->name() +
-                                "' must have one input \"x\" and one output \"features\"");
-  }
-}
-
-}  // namespace
 
 BasalGanglia::BasalGanglia(std::string name, std::unique_ptr<Block> features,
                            const BasalGangliaParams& params)
     : Diagram(std::move(name)) {
-  check_features_block(features.get(), this->name());
+  check_slot_block(features.get(), "basal ganglia '" + this->name() + "'", "x", "features");
   DiagramBuilder builder(*this);
   const Block& phi = builder.add(std::move(features));
   const int n = phi.output_port("features").size();

@@ -81,10 +81,10 @@ int main(int argc, char** argv) {
                                           diagrams::make_arm("cbbg_saturated_pd", mine)};
 
     store::RunDirectory directory = store::RunDirectory::create(argv[1], config);
-    const store::TaskStore store(directory.tasks());
+    const store::TaskStore tasks(directory.tasks());
     const experiments::ExperimentResults results =
-        experiments::run_exp1(config, arms, {.jobs = 2, .store = &store});
-    store::write_result_files(results, config, directory.work(), &store);
+        experiments::run_exp1(config, arms, {.jobs = 2, .store = &tasks});
+    store::write_result_files(results, config, directory.work(), &tasks);
     render(arms[1], config, directory.work() / "figures");
     directory.commit();
 

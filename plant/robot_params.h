@@ -23,13 +23,13 @@ struct RobotParams {
   double torque_limit = 5.0;           // |tau_l|, |tau_r| saturate here, N m
   double accuracy = 1.0e-6;            // relative and absolute integrator tolerance
 
-  // Two inertias the paper's equations leave out, which a rigid body cannot do without. SPEC's
-  // equations take the body's yaw inertia as J_z at every pitch, which needs a roll inertia
+  // Two inertias the paper's equations leave out, which a rigid body cannot do without. The
+  // paper's equations take the body's yaw inertia as J_z at every pitch, which needs a roll inertia
   // J_x = J_z; with J_y = 1.5417 > 2 J_z that breaks the triangle inequality every rigid
   // body obeys (J_y <= J_x + J_z), and Simbody rejects it. They also give the wheels no
   // inertia about a diameter. Both only act while the robot turns (yaw rate != 0), never in
   // the straight-line trials of the experiments. With body_roll_inertia = body_yaw_inertia
-  // and wheel_diametral_inertia = 0 the inertia terms are SPEC's (analytic plant only;
+  // and wheel_diametral_inertia = 0 the inertia terms are the paper's (analytic plant only;
   // robot_dynamics.h lists the one other difference from the paper's equations).
   double body_roll_inertia = 1.5417;          // J_x, body roll about its centre of mass, kg m^2;
                                               // default J_y: a body symmetric about its long axis

@@ -163,7 +163,7 @@ TEST(Actor, ZeroTdErrorLeavesTheImprovedRuleStill) {
 }
 
 TEST(Actor, ZeroTdErrorLeavesTheWeightedRuleOnlyItsSupervisedTerm) {
-  // SPEC 2.11's weighted rule does not scale the supervised term by delta: with delta = 0
+  // docs/model.md §2.11's weighted rule does not scale the supervised term by delta: with delta = 0
   // it is still (1 - omega) alpha (a_S - a_A) phi, and nothing at all when omega = 1.
   for (const double omega : {1.0, 0.25}) {
     Harness harness("actor", 2, params_with(ActorRule::kWeighted), kPeriod);

@@ -33,7 +33,7 @@ TEST(Normaliser, DividesPitchAndRateByTheirScales) {
   EXPECT_NEAR(x[0], 1.5, 1e-15);
   EXPECT_NEAR(x[1], -0.5, 1e-15);
 
-  // pi/54 rad is one grid unit (SPEC 2.2): 0.1744 rad is about 3 units.
+  // pi/54 rad is one grid unit (docs/model.md §2.2): 0.1744 rad is about 3 units.
   harness.set_input("measured", measured(std::numbers::pi / 54.0, 0.0));
   x = harness.output("x");
   EXPECT_NEAR(x[0], 1.0, 1e-7);

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -151,6 +152,9 @@ std::vector<Topology> topologies() {
        {}},
   };
 }
+
+// gtest prints a parameter by this: the block's name, not its bytes.
+void PrintTo(const Topology& topology, std::ostream* out) { *out << topology.block; }
 
 class BlockTopology : public ::testing::TestWithParam<Topology> {};
 

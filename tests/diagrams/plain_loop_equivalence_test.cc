@@ -1,5 +1,5 @@
-// The diagram wiring test: the named diagrams, run by the TrialRunner, must give the same
-// doubles, tick by tick, as SPEC section 2 written as one plain loop (plain_loop.h) for the
+// The diagram wiring test: every preset, run by the TrialRunner, must give the same
+// doubles, tick by tick, as docs/model.md §2 written as one plain loop (plain_loop.h) for the
 // same root seed. Any wiring slip (a wrong port, a signal a tick late, an update reading a
 // post-update value, a sampler on another stream) shows as a first differing signal.
 

@@ -91,8 +91,8 @@ TEST(BasalGanglia, RefusesAFeaturesBlockWithOtherPorts) {
   EXPECT_THAT(
       [] { BasalGanglia("bg", std::make_unique<Gain>("features", 1.0, 2), BasalGangliaParams{}); },
       ThrowsMessage<std::invalid_argument>(
-          "basal ganglia 'bg': the features block 'features' must have one input \"x\" and one "
-          "output \"features\""));
+          "basal ganglia 'bg': the block 'features' must have one input \"x\" and one output "
+          "\"features\""));
 }
 
 TEST(Cerebellum, WrapsItsSupervisor) {
@@ -112,8 +112,8 @@ TEST(Cerebellum, WrapsItsSupervisor) {
 TEST(Cerebellum, RefusesASupervisorWithOtherPorts) {
   EXPECT_THAT([] { Cerebellum("cb", std::make_unique<Gain>("supervisor", 1.0, 1)); },
               ThrowsMessage<std::invalid_argument>(
-                  "cerebellum 'cb': the supervisor block 'supervisor' must have one input "
-                  "\"measured\" and one output \"action\" of size 1"));
+                  "cerebellum 'cb': the block 'supervisor' must have one input \"measured\" and "
+                  "one output \"action\" of size 1"));
 }
 
 TEST(CbbgController, OffersTheDocumentedPortsWithAndWithoutBasalGanglia) {

@@ -1,5 +1,5 @@
 // The analytic plant and the Simbody plant are two routes to the same mechanics: they must
-// give the same trajectory, both at accuracy 1e-8 (SPEC section 1 and the tests).
+// give the same trajectory, both at accuracy 1e-8 (docs/model.md §1.4).
 
 #include <cmath>
 

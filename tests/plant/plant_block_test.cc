@@ -261,7 +261,7 @@ INSTANTIATE_TEST_SUITE_P(BothPlants, PlantBlock,
                          [](const auto& parameter) { return plant_name(parameter.param); });
 
 TEST(SimbodyPlant, RejectsInertiasNoRigidBodyHas) {
-  RobotParams literal;  // SPEC's equations read literally: yaw inertia J_z at every pitch
+  RobotParams literal;  // the paper's equations read literally: yaw inertia J_z at every pitch
   literal.body_roll_inertia = literal.body_yaw_inertia;
   EXPECT_THAT([&] { SimbodyPlant("plant", literal); },
               ::testing::ThrowsMessage<std::invalid_argument>(

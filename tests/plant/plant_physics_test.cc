@@ -1,5 +1,5 @@
 // Physics both plants must obey: energy conservation, the upright equilibrium, balance under
-// the PD law of SPEC 2.4, and parameters acting the way mechanics says.
+// the PD law of docs/model.md §2.4, and parameters acting the way mechanics says.
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 #pragma once
-// Test rigs for the plants: the PD law of SPEC 2.4 as small test-local blocks (the project's
-// PD supervisor block lives in blocks/ and is tested there), and diagrams that put either
+// Test rigs for the plants: the PD law of docs/model.md §2.4 as small test-local blocks (the
+// project's PD supervisor block lives in blocks/ and is tested there), and diagrams that put either
 // plant behind them.
 
 #include <cmath>
@@ -24,7 +24,8 @@ namespace cbbg::plant::testing {
 inline constexpr double kPeriod = 0.01;  // trial.period
 
 // a = sign (50 theta_b + 10 theta_b' + (phi_l + phi_r) / 2 + (phi_l' + phi_r') / 2),
-// tau_l = tau_r = a (SPEC 2.4; the plant saturates). Direct feedthrough: a hold follows it.
+// tau_l = tau_r = a (docs/model.md §2.4; the plant saturates). Direct feedthrough: a hold follows
+// it.
 inline double pd_action(const ConstVectorView& x, double sign) {
   return sign * (50.0 * x[kThetaB] + 10.0 * x[kThetaBDot] + (x[kPhiLeft] + x[kPhiRight]) / 2.0 +
                  (x[kPhiLeftDot] + x[kPhiRightDot]) / 2.0);

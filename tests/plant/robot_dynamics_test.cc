@@ -106,7 +106,7 @@ double momentum(const RobotParams& p, double theta, const Velocities& z, int i) 
 TEST(RobotDynamics, MatchesLagrangesEquationsWithTheRollingConstraints) {
   std::mt19937_64 generator(7);
   std::uniform_real_distribution<double> draw(-2.0, 2.0);
-  RobotParams literal = frictionless();  // SPEC's inertias, unphysical but fine for equations
+  RobotParams literal = frictionless();  // the paper's inertias, unphysical but fine for equations
   literal.body_roll_inertia = literal.body_yaw_inertia;
   literal.wheel_diametral_inertia = 0.0;
   for (const RobotParams& p : {frictionless(), literal}) {

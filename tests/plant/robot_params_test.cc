@@ -38,7 +38,7 @@ TEST(RobotParams, DefaultsAreTheSpecValues) {
   EXPECT_EQ(p.torque_limit, 5.0);
   EXPECT_EQ(p.accuracy, 1e-6);
   EXPECT_EQ(kDefaultInitialPitch, 0.1744);
-  // The two inertias SPEC leaves out: a body symmetric about its long axis, a thin disc.
+  // The two inertias the paper leaves out: a body symmetric about its long axis, a thin disc.
   EXPECT_EQ(p.body_roll_inertia, p.body_pitch_inertia);
   EXPECT_EQ(p.wheel_diametral_inertia, p.wheel_mass * p.wheel_radius * p.wheel_radius / 4.0);
   EXPECT_NO_THROW(p.validate_rigid_bodies());
@@ -112,8 +112,8 @@ TEST(RobotParams, AccuracyMustLieBetweenZeroAndOne) {
 }
 
 TEST(RobotParams, RigidBodiesNeedTheTriangleInequalityOfInertias) {
-  // SPEC's equations read literally (yaw inertia J_z at every pitch) need J_x = J_z, which
-  // with SPEC's J_y no rigid body has: fine for the equations, not for Simbody.
+  // the paper's equations read literally (yaw inertia J_z at every pitch) need J_x = J_z, which
+  // with the paper's J_y no rigid body has: fine for the equations, not for Simbody.
   RobotParams literal;
   literal.body_roll_inertia = literal.body_yaw_inertia;
   literal.wheel_diametral_inertia = 0.0;
