@@ -3,23 +3,25 @@
 // running, 2 bad input (config, command line).
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace cbbg::app {
 
 struct RunOptions {
-  std::string experiment;             // empty: the config's
-  std::filesystem::path config_file;  // empty: defaults only
-  std::vector<std::string> sets;      // key.path=value overrides, in order
-  long long seeds = 0;                // 0: the config's
-  long long seed = -1;                // < 0: the config's
+  std::optional<std::string> experiment;  // unset: the config's
+  std::filesystem::path config_file;      // empty: defaults only
+  std::vector<std::string> sets;          // key.path=value overrides, in order
+  std::optional<std::string> seeds;       // as typed; unset: the config's
+  std::optional<std::string> seed;        // as typed; unset: the config's
   int jobs = 1;
   std::filesystem::path out = "results";
-  std::filesystem::path resume;        // non-empty: continue the interrupted run into it
-  std::filesystem::path load_weights;  // non-empty: learning starts from these weights
-  std::filesystem::path save_weights;  // non-empty: the one learning run's weights go here
+  std::optional<std::filesystem::path> resume;  // set: continue the interrupted run into it
+  std::filesystem::path load_weights;           // non-empty: learning starts from these weights
+  std::filesystem::path save_weights;           // non-empty: the one learning run's weights go here
   bool figures = true;
+  bool replace = false;  // a finished results directory at --out may be replaced
 };
 int run_command(const RunOptions& options);
 

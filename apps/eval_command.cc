@@ -1,6 +1,7 @@
 // cbbg eval: load learnt weights, check them against the config, run the policy alone.
 
 #include "apps/eval_command.h"
+#include "apps/errors.h"
 
 #include <charconv>
 #include <cmath>
@@ -19,6 +20,9 @@
 
 namespace cbbg::app {
 namespace {
+
+// More runs per angle than this is a typing slip, not a study.
+constexpr int kMaxRepeats = 10000;
 
 std::string format_number(double value) {
   if (std::isnan(value)) return "nan";
@@ -141,13 +145,11 @@ int eval_command(const EvalOptions& options) {
   diagrams::ClosedLoopOptions loop;
   try {
     if (options.weights_file.empty()) throw config::ConfigError("--load-weights FILE is required");
-    if (options.repeats < 1) {
-      throw config::ConfigError("--repeats must be >= 1; got " + std::to_string(options.repeats));
+    if (options.repeats < 1 || options.repeats > kMaxRepeats) {
+      throw config::ConfigError("--repeats must be from 1 to " + std::to_string(kMaxRepeats) +
+                                "; got " + std::to_string(options.repeats));
     }
-    if (!options.out.empty() && std::filesystem::exists(options.out) &&
-        !std::filesystem::is_directory(options.out)) {
-      throw config::ConfigError("--out '" + options.out.string() + "' is a file, not a directory");
-    }
+    if (!options.out.empty()) check_output_directory(options.out, "--out");
     loop.push = push_from(options);
     config = resolve(options);
     weights = store::load_weights(options.weights_file);
@@ -155,8 +157,9 @@ int eval_command(const EvalOptions& options) {
     settings.angles = config.numbers("evaluation.angles");
     settings.repeats = options.repeats;
   } catch (const config::ConfigError& error) {
-    std::cerr << "cbbg: error: " << error.what() << "\n";
-    return 2;
+    return report_error(kUserError, error.what());
+  } catch (const std::exception& error) {
+    return report_error(kMachineError, describe(error));
   }
   try {
     const experiments::PolicyEvaluation evaluation = experiments::evaluate_policy(
@@ -169,8 +172,7 @@ int eval_command(const EvalOptions& options) {
     }
     print_table(evaluation, config, weights, options);
   } catch (const std::exception& error) {
-    std::cerr << "cbbg: error: " << error.what() << "\n";
-    return 1;
+    return report_error(kMachineError, describe(error));
   }
   return 0;
 }

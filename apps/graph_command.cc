@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "apps/commands.h"
+#include "apps/errors.h"
 #include "apps/figures.h"
 #include "diagrams/params_from_config.h"
 #include "diagrams/presets.h"
@@ -18,13 +19,16 @@ int graph_command(const GraphOptions& options) {
     for (const auto& assignment : options.sets) config.set(assignment);
     diagrams::validate_all(config);
     if (diagram.empty()) diagram = experiments::experiment_arms(config).front();
-    diagrams::preset(diagram);
+    try {
+      diagrams::preset(diagram);
+    } catch (const std::invalid_argument& error) {
+      throw config::ConfigError(std::string("--diagram: ") + error.what());
+    }
+    check_output_file(options.output, "-o");
   } catch (const config::ConfigError& error) {
-    std::cerr << "cbbg: error: " << error.what() << "\n";
-    return 2;
-  } catch (const std::invalid_argument& error) {
-    std::cerr << "cbbg: error: --diagram: " << error.what() << "\n";
-    return 2;
+    return report_error(kUserError, error.what());
+  } catch (const std::exception& error) {
+    return report_error(kMachineError, describe(error));
   }
   try {
     draw_diagram(
@@ -33,11 +37,9 @@ int graph_command(const GraphOptions& options) {
                         .hidden_blocks = options.show_telemetry ? std::vector<std::string>{}
                                                                 : telemetry_blocks(diagram)});
   } catch (const std::invalid_argument& error) {
-    std::cerr << "cbbg: error: " << error.what() << "\n";
-    return 2;
+    return report_error(kUserError, error.what());
   } catch (const std::exception& error) {
-    std::cerr << "cbbg: error: " << error.what() << "\n";
-    return 1;
+    return report_error(kMachineError, describe(error));
   }
   std::cout << "wrote " << options.output.string() << "\n";
   return 0;

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/commands.h"
+#include "apps/errors.h"
 #include "apps/eval_command.h"
 
 int main(int argc, char** argv) {
@@ -19,23 +20,31 @@ int main(int argc, char** argv) {
   RunOptions run;
   run.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   CLI::App* run_app = app.add_subcommand("run", "run an experiment over many seeds (the default)");
-  run_app->add_option("--experiment", run.experiment,
-                      "exp1 | exp2 | a diagram name (default: the config's, exp1)");
+  std::string experiment;
+  std::string seeds;
+  std::string seed;
+  std::filesystem::path resume;
+  auto* experiment_option = run_app->add_option(
+      "--experiment", experiment, "exp1 | exp2 | a diagram name (default: the config's, exp1)");
   run_app->add_option("--config", run.config_file, "a YAML config (keys: `cbbg list`)")
       ->check(CLI::ExistingFile);
   run_app->add_option("--set", run.sets, "override one key: --set critic.gamma=0.9 (repeatable)");
-  run_app->add_option("--seeds", run.seeds, "independent runs per arm")->check(CLI::PositiveNumber);
-  run_app->add_option("--seed", run.seed, "root seed; run k uses seed + k")
-      ->check(CLI::NonNegativeNumber);
+  // Numbers are checked by the config's schema, with the project's messages and limits.
+  auto* seeds_option = run_app->add_option("--seeds", seeds, "independent runs per arm");
+  auto* seed_option = run_app->add_option("--seed", seed, "root seed; run k uses seed + k");
   run_app->add_option("--jobs,-j", run.jobs, "threads (results are the same for any count)")
       ->check(CLI::Range(1, 1024));
   auto* out_option =
-      run_app->add_option("--out,-o", run.out, "results directory (replaced when the run ends)");
-  run_app
-      ->add_option("--resume", run.resume,
-                   "continue the interrupted run into DIR (its DIR.partial), redoing only the "
-                   "unfinished seeds")
-      ->excludes(out_option);
+      run_app->add_option("--out,-o", run.out, "results directory (a new path, or --replace)");
+  auto* resume_option =
+      run_app
+          ->add_option("--resume", resume,
+                       "continue the interrupted run into DIR (its DIR.partial), redoing only "
+                       "the unfinished seeds")
+          ->excludes(out_option);
+  run_app->add_flag("--replace", run.replace,
+                    "replace the results of an earlier run at --out (kept until the new ones "
+                    "are complete)");
   run_app->add_flag("!--no-figures", run.figures, "skip the figures");
   run_app->add_option("--load-weights", run.load_weights,
                       "start learning from a weights file (docs/weights-format.md)");
@@ -92,12 +101,22 @@ int main(int argc, char** argv) {
     app.exit(error);
     return 2;  // command-line misuse, like a bad config
   }
+  if (experiment_option->count() > 0) run.experiment = experiment;
+  if (seeds_option->count() > 0) run.seeds = seeds;
+  if (seed_option->count() > 0) run.seed = seed;
+  if (resume_option->count() > 0) run.resume = resume;
   spdlog::set_level(spdlog::level::from_str(log_level));
   spdlog::set_pattern("[%H:%M:%S] %^%l%$ %v");
 
-  if (eval_app->parsed()) return eval_command(eval);
-  if (graph_app->parsed()) return graph_command(graph);
-  if (plot_app->parsed()) return plot_command(plot_directory);
-  if (list_app->parsed()) return list_command();
-  return run_command(run);  // `cbbg` alone runs exp1 with the paper's defaults
+  // Each command reports its own errors; this catches what slips past them, so nothing ends
+  // in std::terminate.
+  try {
+    if (eval_app->parsed()) return eval_command(eval);
+    if (graph_app->parsed()) return graph_command(graph);
+    if (plot_app->parsed()) return plot_command(plot_directory);
+    if (list_app->parsed()) return list_command();
+    return run_command(run);  // `cbbg` alone runs exp1 with the paper's defaults
+  } catch (const std::exception& error) {
+    return report_error(kMachineError, describe(error));
+  }
 }

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 
 #include "apps/commands.h"
+#include "apps/errors.h"
 #include "apps/figures.h"
 #include "diagrams/presets.h"
 #include "experiments/experiments.h"
@@ -76,16 +77,19 @@ void draw_diagram(const std::string& name, const config::Config& config,
 std::vector<std::string> telemetry_blocks(const std::string& name) { return {name + "/telemetry"}; }
 
 int plot_command(const std::filesystem::path& directory) {
-  if (!std::filesystem::is_directory(directory)) {
-    std::cerr << "cbbg: error: '" << directory.string() << "' is not a results directory\n";
-    return 2;
-  }
   config::Config config;
   try {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(directory / "config.yaml", error)) {
+      throw config::ConfigError("'" + directory.string() +
+                                "' is not a results directory (it has no config.yaml)");
+    }
     config.merge_file(directory / "config.yaml");
+    check_output_directory(directory / "figures", "cbbg plot");
   } catch (const config::ConfigError& error) {
-    std::cerr << "cbbg: error: " << error.what() << "\n";
-    return 2;
+    return report_error(kUserError, error.what());
+  } catch (const std::exception& error) {
+    return report_error(kMachineError, describe(error));
   }
   return draw_figures(directory, config, /*quiet=*/false) ? 0 : 1;
 }

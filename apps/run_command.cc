@@ -9,12 +9,14 @@
 #include <unistd.h>
 
 #include "apps/commands.h"
+#include "apps/errors.h"
 #include "apps/figures.h"
 #include "apps/progress.h"
 #include "diagrams/params_from_config.h"
 #include "diagrams/presets.h"
 #include "experiments/experiments.h"
 #include "store/results_writer.h"
+#include "store/run_directory.h"
 #include "store/task_store.h"
 #include "store/weights_file.h"
 
@@ -26,13 +28,14 @@ config::Config resolve(const RunOptions& options) {
   config::Config config;
   if (!options.config_file.empty()) config.merge_file(options.config_file);
   for (const auto& assignment : options.sets) config.set(assignment);
-  if (!options.experiment.empty()) {
-    config.set("experiment=" + options.experiment, "--experiment " + options.experiment);
+  if (options.experiment) {
+    if (options.experiment->empty()) {
+      throw config::ConfigError("--experiment needs a name: exp1, exp2 or a diagram (cbbg list)");
+    }
+    config.set("experiment=" + *options.experiment, "--experiment " + *options.experiment);
   }
-  if (options.seeds > 0) {
-    config.set("seeds=" + std::to_string(options.seeds), "--seeds");
-  }
-  if (options.seed >= 0) config.set("seed=" + std::to_string(options.seed), "--seed");
+  if (options.seeds) config.set("seeds=" + *options.seeds, "--seeds " + *options.seeds);
+  if (options.seed) config.set("seed=" + *options.seed, "--seed " + *options.seed);
   diagrams::validate_all(config);
   return config;
 }
@@ -81,8 +84,6 @@ void print_summary(const experiments::ExperimentResults& results) {
   }
 }
 
-}  // namespace
-
 // Learning runs of the experiment: every (arm, seed) of an arm with basal ganglia.
 long long learning_runs(const config::Config& config) {
   const std::vector<std::string> arms = experiments::experiment_arms(config);
@@ -92,77 +93,117 @@ long long learning_runs(const config::Config& config) {
   return learning * config.integer("seeds");
 }
 
-int run_command(const RunOptions& options) {
+// What a run needs before it starts: everything checked, the work directory made.
+struct PreparedRun {
   config::Config config;
   std::optional<store::RunDirectory> directory;
   std::optional<experiments::LearntWeights> initial_weights;
-  try {
-    if (!options.resume.empty()) {
-      if (!options.config_file.empty() || !options.sets.empty() || !options.experiment.empty() ||
-          options.seeds > 0 || options.seed >= 0 || !options.load_weights.empty()) {
-        throw config::ConfigError(
-            "--resume continues with the config and weights of the interrupted run; drop "
-            "--config, --set, --experiment, --seeds, --seed and --load-weights");
-      }
-      directory = store::RunDirectory::resume(options.resume);
-      config = directory->config();
-      diagrams::validate_all(config);
-    } else {
-      config = resolve(options);
-    }
-    if (!options.save_weights.empty() && learning_runs(config) != 1) {
+};
+
+void check_resume_alone(const RunOptions& options) {
+  if (!options.config_file.empty() || !options.sets.empty() || options.experiment ||
+      options.seeds || options.seed || !options.load_weights.empty() || options.replace ||
+      !options.figures) {
+    throw config::ConfigError(
+        "--resume continues with the config, weights and options of the interrupted run; drop "
+        "--config, --set, --experiment, --seeds, --seed, --load-weights, --replace and "
+        "--no-figures");
+  }
+}
+
+PreparedRun prepare(const RunOptions& options) {
+  PreparedRun run;
+  if (options.resume) {
+    check_resume_alone(options);
+    run.directory = store::RunDirectory::resume(*options.resume);
+    run.config = run.directory->config();
+    if (run.directory->published()) return run;
+    diagrams::validate_all(run.config);
+  } else {
+    run.config = resolve(options);
+  }
+  if (!options.save_weights.empty()) {
+    if (learning_runs(run.config) != 1) {
       throw config::ConfigError(
           "--save-weights keeps the weights of one learning run; this run has " +
-          std::to_string(learning_runs(config)) +
+          std::to_string(learning_runs(run.config)) +
           " (use --experiment ARM --seeds 1; every run's weights are in DIR/weights/)");
     }
-    if (!options.load_weights.empty()) {
-      initial_weights = store::load_weights(options.load_weights);
-      store::check_layout(*initial_weights, config, options.load_weights);
-    }
-    if (!directory) {
-      directory = store::RunDirectory::create(options.out, config);
-      if (initial_weights) store::save_weights(directory->initial_weights(), *initial_weights);
-    } else if (std::filesystem::exists(directory->initial_weights())) {
-      initial_weights = store::load_weights(directory->initial_weights());
-    }
-  } catch (const config::ConfigError& error) {
-    std::cerr << "cbbg: error: " << error.what() << "\n";
-    return 2;
+    check_output_file(options.save_weights, "--save-weights");
   }
+  if (!options.load_weights.empty()) {
+    run.initial_weights = store::load_weights(options.load_weights);
+    store::check_layout(*run.initial_weights, run.config, options.load_weights);
+  }
+  if (!run.directory) {
+    run.directory = store::RunDirectory::create(
+        options.out, run.config, {.figures = options.figures, .replace = options.replace});
+    if (run.initial_weights) {
+      store::save_weights(run.directory->initial_weights(), *run.initial_weights);
+    }
+  } else if (std::filesystem::exists(run.directory->initial_weights())) {
+    run.initial_weights = store::load_weights(run.directory->initial_weights());
+  }
+  return run;
+}
+
+void execute(const RunOptions& options, PreparedRun& run) {
+  const config::Config& config = run.config;
+  store::RunDirectory& directory = *run.directory;
   const std::size_t arms = experiments::experiment_arms(config).size();
   const std::size_t tasks = arms * static_cast<std::size_t>(config.integer("seeds"));
   spdlog::info("{}: {} seed(s) x {} arm(s) on the {} plant, {} thread(s){}",
                config.text("experiment"), config.integer("seeds"), arms, config.text("plant.kind"),
-               options.jobs, options.resume.empty() ? "" : ", resumed");
+               options.jobs, options.resume ? ", resumed" : "");
+  const store::TaskStore store(directory.tasks());
+  Progress progress(tasks, ::isatty(STDERR_FILENO) == 1);
+  experiments::ExperimentOptions experiment;
+  experiment.jobs = options.jobs;
+  experiment.progress = [&progress](const experiments::SeedRun& seed) { progress.finished(seed); };
+  experiment.store = &store;
+  if (run.initial_weights) experiment.initial_weights = &*run.initial_weights;
+  const experiments::ExperimentResults results = experiments::run_experiment(config, experiment);
+  progress.close();
+  store::write_result_files(results, config, directory.work(), &store);
+  if (directory.shape().figures) draw_figures(directory.work(), config, /*quiet=*/true);
+  directory.commit();
+  print_summary(results);
+  if (!options.save_weights.empty()) {
+    for (const auto& seed : results.runs) {
+      if (seed.weights) store::save_weights(options.save_weights, *seed.weights);
+    }
+    spdlog::info("weights in {}", options.save_weights.string());
+  }
+  spdlog::info("results in {}", directory.target().string());
+}
+
+}  // namespace
+
+int run_command(const RunOptions& options) {
+  PreparedRun run;
   try {
-    const store::TaskStore store(directory->tasks());
-    Progress progress(tasks, ::isatty(STDERR_FILENO) == 1);
-    experiments::ExperimentOptions experiment;
-    experiment.jobs = options.jobs;
-    experiment.progress = [&progress](const experiments::SeedRun& run) { progress.finished(run); };
-    experiment.store = &store;
-    if (initial_weights) experiment.initial_weights = &*initial_weights;
-    const experiments::ExperimentResults results = experiments::run_experiment(config, experiment);
-    progress.close();
-    store::write_result_files(results, config, directory->work(), &store);
-    if (options.figures) draw_figures(directory->work(), config, /*quiet=*/true);
-    directory->commit();
-    print_summary(results);
-    if (!options.save_weights.empty()) {
-      for (const auto& run : results.runs) {
-        if (run.weights) store::save_weights(options.save_weights, *run.weights);
-      }
-      spdlog::info("weights in {}", options.save_weights.string());
-    }
-    spdlog::info("results in {}", directory->target().string());
+    run = prepare(options);
+  } catch (const config::ConfigError& error) {
+    return report_error(kUserError, error.what());
   } catch (const std::exception& error) {
-    std::cerr << "cbbg: error: " << error.what() << "\n";
-    if (std::filesystem::exists(directory->work())) {
-      std::cerr << "cbbg: the finished seeds are kept in '" << directory->work().string()
-                << "'; continue with --resume " << directory->target().string() << "\n";
+    return report_error(kMachineError, describe(error));
+  }
+  try {
+    if (run.directory->published()) {
+      run.directory->commit();
+      spdlog::info("results in {} (the interrupted commit is finished)",
+                   run.directory->target().string());
+      return 0;
     }
-    return 1;
+    execute(options, run);
+  } catch (const std::exception& error) {
+    report_error(kMachineError, describe(error));
+    std::error_code ignored;
+    if (std::filesystem::exists(run.directory->work(), ignored)) {
+      std::cerr << "cbbg: the finished seeds are kept in '" << run.directory->work().string()
+                << "'; continue with --resume " << run.directory->target().string() << "\n";
+    }
+    return kMachineError;
   }
   return 0;
 }

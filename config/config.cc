@@ -48,12 +48,17 @@ std::string shown(const YAML::Node& node) {
 std::string range_text(const KeySpec& spec) {
   const bool has_min = std::isfinite(spec.min);
   const bool has_max = std::isfinite(spec.max);
+  // Integer bounds read as integers: "in [1, 100000]", not "1e+05".
+  auto bound = [&spec](double value) {
+    return spec.kind == Kind::kInteger ? std::to_string(static_cast<long long>(value))
+                                       : format_number(value);
+  };
   if (has_min && has_max) {
-    return "in " + std::string(spec.min_exclusive ? "(" : "[") + format_number(spec.min) + ", " +
-           format_number(spec.max) + (spec.max_exclusive ? ")" : "]");
+    return "in " + std::string(spec.min_exclusive ? "(" : "[") + bound(spec.min) + ", " +
+           bound(spec.max) + (spec.max_exclusive ? ")" : "]");
   }
-  if (has_min) return std::string(spec.min_exclusive ? "> " : ">= ") + format_number(spec.min);
-  if (has_max) return std::string(spec.max_exclusive ? "< " : "<= ") + format_number(spec.max);
+  if (has_min) return std::string(spec.min_exclusive ? "> " : ">= ") + bound(spec.min);
+  if (has_max) return std::string(spec.max_exclusive ? "< " : "<= ") + bound(spec.max);
   return "any finite number";
 }
 
@@ -100,7 +105,7 @@ class Parser {
                           const YAML::Node& node) const {
     const double value = parse_number(label, node, "an integer");
     if (value != std::floor(value) || std::abs(value) > 9.0e15) {
-      fail(label + " must be an integer; got " + shown(node));
+      fail(label + " must be an integer " + range_text(spec) + "; got " + shown(node));
     }
     if (!in_range(spec, value)) {
       fail(label + " must be an integer " + range_text(spec) + "; got " + format_number(value));
@@ -204,10 +209,16 @@ class Parser {
   // Merges a map node found at `prefix` ("" for the top level) into `values`.
   void merge(const YAML::Node& node, const std::string& prefix,
              std::map<std::string, Value, std::less<>>& values) const {
+    std::vector<std::string> seen;
     for (const auto& entry : node) {
       if (!entry.first.IsScalar()) fail("keys must be plain names; got " + shown(entry.first));
       const std::string path =
           prefix.empty() ? entry.first.Scalar() : prefix + "." + entry.first.Scalar();
+      if (std::find(seen.begin(), seen.end(), path) != seen.end()) {
+        fail("key '" + path + "' appears twice (again at line " +
+             std::to_string(entry.first.Mark().line + 1) + "); give each key once");
+      }
+      seen.push_back(path);
       assign(path, entry.second, values);
     }
   }
@@ -325,6 +336,16 @@ void Config::merge_yaml(const std::string& text, const std::string& source) {
 }
 
 void Config::merge_file(const std::filesystem::path& path) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw ConfigError("config file '" + path.string() + "' is not a regular file");
+  }
+  if (std::filesystem::exists(status) &&
+      std::filesystem::file_size(path, error) > kMaxConfigFileBytes) {
+    throw ConfigError("config file '" + path.string() + "' is larger than " +
+                      std::to_string(kMaxConfigFileBytes / 1024) + " KiB; a config is a few keys");
+  }
   std::ifstream in(path);
   if (!in) {
     throw ConfigError("config file '" + path.string() + "' cannot be read (missing or unreadable)");

@@ -5,6 +5,7 @@
 // checked here, as each value arrives; ranges a block owns are checked by its params'
 // validate() when the diagram is built.
 
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -21,6 +22,14 @@ class ConfigError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// A config file larger than this is refused before it is read.
+inline constexpr std::uintmax_t kMaxConfigFileBytes = 1024 * 1024;
+// Bounds of the run's size: seeds per arm, the root seed, trials per seed (max_trials,
+// exp2.trials); what a run may ask for before it is refused as a typing slip.
+inline constexpr double kMaxSeeds = 10000;
+inline constexpr double kMaxSeed = 1e12;
+inline constexpr double kMaxTrials = 100000;
 
 // exp2's schedule: k1 from trial `from_trial` on (trials count from 1).
 struct AnnealingStep {

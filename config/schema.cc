@@ -1,6 +1,7 @@
 // The keys of a cbbg config: docs/model.md §4's names, types, defaults and meanings.
 
 #include <limits>
+#include <numbers>
 
 #include "config/config.h"
 
@@ -19,8 +20,9 @@ KeySpec positive(std::string path, double value, std::string meaning) {
   return number(std::move(path), value, std::move(meaning), 0.0, true);
 }
 
-KeySpec integer(std::string path, long long value, std::string meaning, double min) {
-  return {std::move(path), Kind::kInteger, value, std::move(meaning), {}, min, kInf,
+KeySpec integer(std::string path, long long value, std::string meaning, double min,
+                double max = kInf) {
+  return {std::move(path), Kind::kInteger, value, std::move(meaning), {}, min, max,
           false,           false,          0};
 }
 
@@ -64,9 +66,10 @@ std::vector<KeySpec> make_schema() {
            experiment_choices()),
       {"arms", Kind::kNames, std::vector<std::string>{"cbbg", "bg_only"},
        "diagrams compared in one run (exp1)", diagram_names(), -kInf, kInf, false, false, 0},
-      integer("seeds", 20, "independent runs per arm; run k uses root seed + k", 1),
-      integer("seed", 1, "root seed", 0),
-      integer("max_trials", 100, "exp1: give up after this many trials without a success", 1),
+      integer("seeds", 20, "independent runs per arm; run k uses root seed + k", 1, kMaxSeeds),
+      integer("seed", 1, "root seed", 0, kMaxSeed),
+      integer("max_trials", 100, "exp1: give up after this many trials without a success", 1,
+              kMaxTrials),
       text("plant.kind", "simbody", "simbody (3-D multibody, reference) | analytic (fast)",
            {"simbody", "analytic"}),
       positive("plant.wheel_mass", 1.0, "m_l = m_r, kg"),
@@ -89,7 +92,8 @@ std::vector<KeySpec> make_schema() {
       positive("plant.accuracy", 1e-6, "integrator error tolerance (relative and absolute)"),
       number("trial.theta0", 0.1744, "initial pitch of every trial, rad"),
       positive("trial.duration", 20.0, "a trial that lasts this long succeeds, s"),
-      positive("trial.failure_angle", 0.5236, "|theta_b| beyond this fails the trial, rad"),
+      number("trial.failure_angle", 0.5236, "|theta_b| beyond this fails the trial, rad", 0.0, true,
+             std::numbers::pi / 2.0),
       positive("trial.period", 0.01, "sampling period Ts of the controller, s"),
       positive("normaliser.scale_theta", 0.05817764, "n_theta: pitch per grid unit, rad"),
       positive("normaliser.scale_dtheta", 0.05817764, "n_dtheta: pitch rate per grid unit, rad/s"),
@@ -135,7 +139,8 @@ std::vector<KeySpec> make_schema() {
        false,
        false,
        0},
-      integer("exp2.trials", 30, "exp2: trials in all, the CB-coordinated one included", 2),
+      integer("exp2.trials", 30, "exp2: trials in all, the CB-coordinated one included", 2,
+              kMaxTrials),
       integer("log.decimation", 1, "steps.csv keeps every n-th tick; 0 writes no steps.csv", 0),
       numbers("evaluation.angles", {0.05, 0.1, 0.15, 0.2, 0.25},
               "initial pitches the learnt actor is evaluated from, rad", 0),

@@ -1,7 +1,12 @@
 #include "diagrams/params_from_config.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "framework/number_text.h"
 
 namespace cbbg::diagrams {
 namespace {
@@ -175,6 +180,30 @@ void validate_all(const config::Config& c) {
   omega_params(c, blocks::OmegaMode::kSchedule);
   reward_params(c);
   failure_params(c);
+  check_trial_keys(c);
+}
+
+void check_trial_keys(const config::Config& c) {
+  const double period = c.number("trial.period");
+  const double duration = c.number("trial.duration");
+  if (duration < period) {
+    throw config::ConfigError("trial.duration (" + format_number(duration) +
+                              " s) must be at least one trial.period (" + format_number(period) +
+                              " s)");
+  }
+  const double failure = c.number("trial.failure_angle");
+  auto inside = [failure](const std::string& key, double angle) {
+    if (!(std::abs(angle) < failure)) {
+      throw config::ConfigError(key + " (" + format_number(angle) +
+                                " rad) must lie inside trial.failure_angle (" +
+                                format_number(failure) + " rad): a trial from there fails at once");
+    }
+  };
+  inside("trial.theta0", c.number("trial.theta0"));
+  const std::vector<double>& angles = c.numbers("evaluation.angles");
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    inside("evaluation.angles[" + std::to_string(i) + "]", angles[i]);
+  }
 }
 
 }  // namespace cbbg::diagrams

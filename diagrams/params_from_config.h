@@ -35,8 +35,13 @@ blocks::OmegaParams omega_params(const config::Config& config, blocks::OmegaMode
 blocks::RewardParams reward_params(const config::Config& config);
 blocks::FailureDetectorParams failure_params(const config::Config& config);
 
-// Builds and validates every params struct above: the whole config's ranges at once.
-// Throws config::ConfigError with the block's message.
+// Builds and validates every params struct above, and check_trial_keys: the whole config's
+// ranges at once. Throws config::ConfigError with the block's message.
 void validate_all(const config::Config& config);
+
+// The rules across keys: trial.duration >= trial.period; trial.theta0 and every
+// evaluation.angles entry strictly inside trial.failure_angle. Throws config::ConfigError
+// naming both keys and their values.
+void check_trial_keys(const config::Config& config);
 
 }  // namespace cbbg::diagrams

@@ -21,6 +21,7 @@
 #include "framework/block_context.h"
 #include "framework/graphviz.h"
 #include "store/results_writer.h"
+#include "store/run_directory.h"
 #include "store/task_store.h"
 
 namespace {
@@ -80,7 +81,7 @@ int main(int argc, char** argv) {
     const std::vector<diagrams::Arm> arms{diagrams::preset_arm("cbbg"),
                                           diagrams::make_arm("cbbg_saturated_pd", mine)};
 
-    store::RunDirectory directory = store::RunDirectory::create(argv[1], config);
+    store::RunDirectory directory = store::RunDirectory::create(argv[1], config, {});
     const store::TaskStore tasks(directory.tasks());
     const experiments::ExperimentResults results =
         experiments::run_exp1(config, arms, {.jobs = 2, .store = &tasks});

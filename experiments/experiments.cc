@@ -32,6 +32,16 @@ WeightsProvenance provenance(const config::Config& config, const SeedRun& run) {
   return {run.arm, run.seed, static_cast<long long>(run.trials.size()), config.text("plant.kind")};
 }
 
+// Keeps what was learnt, unless it stopped being finite (a diverged learner): then the run
+// says so instead, and nothing evaluates or saves it.
+void keep_weights(LearntWeights weights, SeedRun& run) {
+  if (weights.actor.allFinite() && weights.critic.allFinite()) {
+    run.weights = std::move(weights);
+  } else {
+    run.weights_diverged = true;
+  }
+}
+
 void start_from(const diagrams::ClosedLoop& loop, TrialRunner& runner,
                 const LearntWeights* initial_weights) {
   if (initial_weights != nullptr && loop.learner.learns()) {
@@ -60,8 +70,8 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
     ++run.failures_before_success;
   }
   if (loop.learner.learns()) {
-    run.weights = learnt_weights(loop, runner.context(), config, provenance(config, run));
-    if (arm.policy) evaluate_learnt_actor(config, arm, run);
+    keep_weights(learnt_weights(loop, runner.context(), config, provenance(config, run)), run);
+    if (arm.policy && run.weights) evaluate_learnt_actor(config, arm, run);
   }
 }
 
@@ -102,7 +112,7 @@ void run_annealing(const config::Config& config, const diagrams::Arm& coordinate
     }
   }
   if (!run.succeeded) run.failures_before_success = static_cast<int>(run.trials.size());
-  run.weights = learnt_weights(later_loop, later.context(), config, provenance(config, run));
+  keep_weights(learnt_weights(later_loop, later.context(), config, provenance(config, run)), run);
 }
 
 std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {

@@ -1,6 +1,8 @@
 #include "experiments/parallel_runs.h"
 
 #include <atomic>
+#include <cerrno>
+#include <cstring>
 #include <exception>
 #include <fstream>
 #include <mutex>
@@ -33,9 +35,12 @@ void run_task(const config::Config& config, std::size_t task, const TaskBody& bo
     run.steps_csv = memory.str();
     return;
   }
-  file.close();
-  if (!file) {
-    throw std::runtime_error("cannot write '" + store->pending_steps_path(task).string() + "'");
+  if (telemetry.steps != nullptr) {
+    file.close();
+    if (!file) {
+      throw std::runtime_error("cannot write '" + store->pending_steps_path(task).string() +
+                               "': " + std::strerror(errno));
+    }
   }
   store->save(task, run);
 }

@@ -35,8 +35,10 @@ struct SeedRun {
   // exp1: the learnt actor evaluated from each of evaluation.angles (empty for an arm that
   // learns nothing).
   std::vector<EvaluationRecord> evaluation;
-  // The weights learnt by the end of the run (none for an arm that learns nothing).
+  // The weights learnt by the end of the run (none for an arm that learns nothing, nor when
+  // they stopped being finite: then weights_diverged).
   std::optional<LearntWeights> weights;
+  bool weights_diverged = false;
 };
 
 struct ExperimentResults {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "framework/number_text.h"
 #include "plant/plant_ports.h"
 
 namespace cbbg::experiments {
@@ -76,6 +77,19 @@ void TrialRunner::record(double time, const double* values) {
     out.put('\n');
   }
   ++ticks_;
+  check_learning_signals(time, values);
+}
+
+void TrialRunner::check_learning_signals(double time, const double* values) const {
+  const diagrams::LearnerBlocks& learner = loop_->learner;
+  const bool value_ok = learner.critic == nullptr || std::isfinite(values[kTelemetryValue]);
+  const bool temperature_ok =
+      learner.tropism == nullptr || std::isfinite(values[kTelemetryTemperature]);
+  if (value_ok && temperature_ok) return;
+  const Block& block = value_ok ? static_cast<const Block&>(*learner.tropism) : *learner.critic;
+  throw SimulationError("block '" + block.path() +
+                        "': " + (value_ok ? "the temperature T" : "the value V") +
+                        " stopped being finite at t = " + format_number(time) + " s");
 }
 
 TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
@@ -107,6 +121,12 @@ TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
   const double ticks = static_cast<double>(std::max<long long>(ticks_, 1));
   outcome.mean_temperature = temperature_sum_ / ticks;
   outcome.mean_entropy = entropy_sum_ / ticks;
+  if (outcome.status != TrialStatus::kDiverged && loop_->learner.tropism != nullptr &&
+      !(std::isfinite(outcome.mean_temperature) && std::isfinite(outcome.mean_entropy))) {
+    // Finite at every tick, but too large to sum: as unusable as a NaN.
+    outcome.status = TrialStatus::kDiverged;
+    outcome.message = "the trial's mean temperature or entropy is not finite";
+  }
   return outcome;
 }
 

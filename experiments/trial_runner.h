@@ -55,6 +55,10 @@ class TrialRunner {
 
  private:
   void record(double time, const double* values);
+  // A learner whose value or temperature stops being finite has diverged, even while the
+  // robot's state stays finite (the plant saturates any finite torque): throws
+  // SimulationError, which ends the trial as diverged.
+  void check_learning_signals(double time, const double* values) const;
 
   const diagrams::ClosedLoop* loop_;
   Simulator simulator_;

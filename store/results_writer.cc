@@ -1,5 +1,6 @@
 #include "store/results_writer.h"
 
+#include "store/fault_point.h"
 #include "store/task_store.h"
 #include "store/weights_file.h"
 
@@ -39,6 +40,46 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << text;
   if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+// The learnt actor alone: per evaluation angle, the seeds whose policy balanced for a whole
+// trial, of the seeds that have a policy ("" when none has: no key).
+std::string evaluation_json(const ExperimentResults& results, std::size_t arm) {
+  const std::vector<experiments::EvaluationRecord>* angles = nullptr;
+  int evaluated = 0;
+  for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+    const auto& evaluation = results.run(arm, s).evaluation;
+    if (evaluation.empty()) continue;
+    ++evaluated;
+    if (angles == nullptr) angles = &evaluation;
+  }
+  if (angles == nullptr) return "";
+  std::string json = ",\n      \"evaluation\": {\"theta0\": [";
+  for (std::size_t e = 0; e < angles->size(); ++e) {
+    json += (e ? ", " : "") + number((*angles)[e].theta0);
+  }
+  json += "], \"balanced\": [";
+  for (std::size_t e = 0; e < angles->size(); ++e) {
+    int balanced = 0;
+    for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+      const auto& evaluation = results.run(arm, s).evaluation;
+      balanced += e < evaluation.size() && evaluation[e].outcome.status == TrialStatus::kSuccess;
+    }
+    json += (e ? ", " : "") + std::to_string(balanced);
+  }
+  return json + "], \"of\": " + std::to_string(evaluated) + "}";
+}
+
+// Per seed, whether its weights stopped being finite ("" when none did: no key).
+std::string weights_diverged_json(const ExperimentResults& results, std::size_t arm) {
+  std::string flags;
+  bool any = false;
+  for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+    const bool diverged = results.run(arm, s).weights_diverged;
+    any = any || diverged;
+    flags += std::string(s ? ", " : "") + (diverged ? "true" : "false");
+  }
+  return any ? ",\n      \"weights_diverged\": [" + flags + "]" : "";
 }
 
 }  // namespace
@@ -106,22 +147,7 @@ std::string summary_json(const ExperimentResults& results, const config::Config&
     json << "      \"median\": " << json_number(median(failures)) << ",\n";
     json << "      \"min\": " << *std::min_element(failures.begin(), failures.end()) << ",\n";
     json << "      \"max\": " << *std::max_element(failures.begin(), failures.end());
-    // The learnt actor alone: per evaluation angle, the seeds whose policy balanced 20 s.
-    const auto& first = results.run(a, 0).evaluation;
-    if (!first.empty()) {
-      json << ",\n      \"evaluation\": {\"theta0\": [";
-      for (std::size_t e = 0; e < first.size(); ++e)
-        json << (e ? ", " : "") << number(first[e].theta0);
-      json << "], \"balanced\": [";
-      for (std::size_t e = 0; e < first.size(); ++e) {
-        int balanced = 0;
-        for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-          balanced += results.run(a, s).evaluation[e].outcome.status == TrialStatus::kSuccess;
-        }
-        json << (e ? ", " : "") << balanced;
-      }
-      json << "], \"of\": " << results.seeds.size() << "}";
-    }
+    json << evaluation_json(results, a) << weights_diverged_json(results, a);
     json << "\n    }";
   }
   json << "\n  },\n  \"paper\": {";
@@ -137,6 +163,7 @@ void write_result_files(const ExperimentResults& results, const config::Config& 
                         const std::filesystem::path& directory, const TaskStore* store) {
   write_text(directory / "config.yaml", config.to_yaml());
   write_text(directory / "summary.json", summary_json(results, config));
+  fault_point("commit:results");  // a kill here leaves half the files: resume rewrites them
   write_text(directory / "trials.csv", trials_csv(results));
   if (results.experiment != "exp2") {
     write_text(directory / "evaluation.csv", evaluation_csv(results));
@@ -161,51 +188,6 @@ void write_result_files(const ExperimentResults& results, const config::Config& 
     if (rows.peek() != std::ifstream::traits_type::eof()) steps << rows.rdbuf();
   }
   if (!steps) throw std::runtime_error("cannot write '" + path.string() + "'");
-}
-
-RunDirectory::RunDirectory(std::filesystem::path target, config::Config config)
-    : target_(std::move(target)), config_(std::move(config)) {
-  if (target_.filename().empty()) target_ = target_.parent_path();
-  work_ = target_;
-  work_ += ".partial";
-}
-
-RunDirectory RunDirectory::create(const std::filesystem::path& target,
-                                  const config::Config& config) {
-  RunDirectory directory(target, config);
-  if (std::filesystem::exists(directory.work_)) {
-    throw config::ConfigError("'" + directory.work_.string() +
-                              "' holds an interrupted run: continue it with --resume " +
-                              directory.target_.string() + ", or delete it");
-  }
-  std::filesystem::create_directories(directory.tasks());
-  write_text(directory.work_ / "config.yaml", config.to_yaml());
-  return directory;
-}
-
-RunDirectory RunDirectory::resume(const std::filesystem::path& target) {
-  RunDirectory directory(target, config::Config());
-  const std::filesystem::path config_file = directory.work_ / "config.yaml";
-  if (!std::filesystem::exists(config_file)) {
-    throw config::ConfigError("nothing to resume: '" + directory.work_.string() +
-                              "' does not hold an interrupted run");
-  }
-  directory.config_.merge_file(config_file);
-  std::filesystem::create_directories(directory.tasks());
-  return directory;
-}
-
-void RunDirectory::commit() {
-  std::filesystem::remove_all(tasks());
-  std::filesystem::path previous;
-  if (std::filesystem::exists(target_)) {
-    previous = target_;
-    previous += ".previous";
-    std::filesystem::remove_all(previous);
-    std::filesystem::rename(target_, previous);
-  }
-  std::filesystem::rename(work_, target_);
-  if (!previous.empty()) std::filesystem::remove_all(previous);
 }
 
 }  // namespace cbbg::store

@@ -1,4 +1,5 @@
 #include "store/task_store.h"
+#include "store/fault_point.h"
 #include "store/weights_file.h"
 
 #include <charconv>
@@ -68,6 +69,7 @@ std::string serialize_run(const SeedRun& run) {
   out << kRecordFormat << "\narm " << run.arm << "\nseed " << run.seed << "\nsucceeded "
       << (run.succeeded ? 1 : 0) << "\nfailures_before_success " << run.failures_before_success
       << "\n";
+  if (run.weights_diverged) out << "weights_diverged 1\n";
   for (const TrialRecord& record : run.trials) {
     out << "trial " << record.trial << ' ' << number(record.k1);
     write_outcome(out, record.outcome);
@@ -102,6 +104,10 @@ SeedRun parse_run(const std::string& text, const std::string& source) {
       int succeeded = 0;
       in >> succeeded;
       run.succeeded = succeeded != 0;
+    } else if (key == "weights_diverged") {
+      int diverged = 0;
+      in >> diverged;
+      run.weights_diverged = diverged != 0;
     } else if (key == "failures_before_success") {
       in >> run.failures_before_success;
     } else if (key == "trial") {
@@ -168,10 +174,13 @@ bool TaskStore::load(std::size_t task, SeedRun& run) const {
 }
 
 void TaskStore::save(std::size_t task, const SeedRun& run) const {
+  fault_point("task:steps");
   if (std::filesystem::exists(pending_steps_path(task))) {
     std::filesystem::rename(pending_steps_path(task), steps_path(task));
   }
+  fault_point("task:weights");
   if (run.weights) save_weights(weights_path(task), *run.weights);
+  fault_point("task:record");
   const std::filesystem::path temporary = record_path(task).string() + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

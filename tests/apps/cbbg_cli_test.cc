@@ -97,8 +97,8 @@ TEST_F(CbbgCommand, EveryKindOfBadValueExitsTwoWithItsMessageAndWritesNothing) {
       {"--set plant.body_mass=-1", "plant.body_mass must be > 0; got -1"},
       {"--set rbf.width=-0.5", "rbf.width must be > 0; got -0.5"},
       {"--set critic.lambda=1", "critic.lambda must be in [0, 1); got 1"},
-      {"--set seed=-4", "seed must be an integer >= 0; got -4"},
-      {"--set max_trials=2.5", "max_trials must be an integer; got '2.5'"},
+      {"--set seed=-4", "seed must be an integer in [0, 1000000000000]; got -4"},
+      {"--set max_trials=2.5", "max_trials must be an integer in [1, 100000]; got '2.5'"},
       {"--set 'annealing=[{from_trial: 1, k1: 10}, {from_trial: 1, k1: 5}]'",
        "annealing must list trials in increasing order"},
       {"--set sampler.k_b=.inf", "sampler.k_b must be a finite number; got '.inf'"},
@@ -302,9 +302,11 @@ TEST_F(CbbgCommand, AKilledRunLeavesNoResultsAndResumesToTheSameBytes) {
   EXPECT_THAT(blocked.output, HasSubstr("holds an interrupted run: continue it with --resume"));
   EXPECT_EQ(cbbg("run --resume " + out.string() + " --seeds 3").exit_code, 2);
 
-  const Outcome resumed = cbbg("run --no-figures --jobs 2 --resume " + out.string());
+  // The resume restores the run's own options: --no-figures too.
+  const Outcome resumed = cbbg("run --jobs 2 --resume " + out.string());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   EXPECT_FALSE(fs::exists(scratch_ / "killed.partial"));
+  EXPECT_FALSE(fs::exists(out / "figures"));
   for (const char* file :
        {"config.yaml", "summary.json", "trials.csv", "evaluation.csv", "steps.csv"}) {
     const std::string whole = read_file(scratch_ / "whole" / file);

@@ -1,11 +1,18 @@
 #include "config/config.h"
 
+#include <filesystem>
+#include <fstream>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include "tests/support/error_of.h"
+#include "tests/support/scratch_directory.h"
 
 namespace cbbg::config {
 namespace {
 
+using cbbg::testing::error_of;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
@@ -66,7 +73,8 @@ TEST(Config, SuggestsTheKeyMeantForAnUnknownOne) {
 
 TEST(Config, RejectsWrongTypesNamingKeyAndAllowedValues) {
   EXPECT_EQ(error_of_yaml("seeds: many"), "my.yaml: seeds must be an integer; got 'many'");
-  EXPECT_EQ(error_of_yaml("seeds: 2.5"), "my.yaml: seeds must be an integer; got '2.5'");
+  EXPECT_EQ(error_of_yaml("seeds: 2.5"),
+            "my.yaml: seeds must be an integer in [1, 10000]; got '2.5'");
   EXPECT_EQ(error_of_yaml("critic: {beta: fast}"),
             "my.yaml: critic.beta must be a number; got 'fast'");
   EXPECT_EQ(error_of_yaml("actor: {rule: improvd}"),
@@ -80,14 +88,39 @@ TEST(Config, RejectsWrongTypesNamingKeyAndAllowedValues) {
   EXPECT_EQ(error_of_yaml("- 1\n- 2\n"), "my.yaml: a config is a map of keys; got [1, 2]");
 }
 
+TEST(Config, RejectsADuplicateKeyNamingItsLine) {
+  EXPECT_EQ(error_of_yaml("seeds: 2\nseed: 4\nseeds: 3\n"),
+            "my.yaml: key 'seeds' appears twice (again at line 3); give each key once");
+  EXPECT_EQ(error_of_yaml("critic:\n  beta: 0.1\n  beta: 0.2\n"),
+            "my.yaml: key 'critic.beta' appears twice (again at line 3); give each key once");
+}
+
+TEST(Config, RefusesFilesThatAreNoConfigBeforeReadingThem) {
+  Config config;
+  EXPECT_EQ(error_of<ConfigError>([&] { config.merge_file("/dev/zero"); }),
+            "config file '/dev/zero' is not a regular file");
+  cbbg::testing::ScratchDirectory scratch;
+  const std::filesystem::path huge = scratch.path() / "huge.yaml";
+  std::ofstream(huge) << std::string(kMaxConfigFileBytes + 1, '#');
+  EXPECT_EQ(error_of<ConfigError>([&] { config.merge_file(huge); }),
+            "config file '" + huge.string() + "' is larger than 1024 KiB; a config is a few keys");
+}
+
 TEST(Config, RejectsOutOfRangeValues) {
   EXPECT_EQ(error_of_yaml("critic: {gamma: 1.5}"),
             "my.yaml: critic.gamma must be in (0, 1]; got 1.5");
   EXPECT_EQ(error_of_yaml("critic: {gamma: 0}"), "my.yaml: critic.gamma must be in (0, 1]; got 0");
   EXPECT_EQ(error_of_yaml("critic: {lambda: 1}"),
             "my.yaml: critic.lambda must be in [0, 1); got 1");
-  EXPECT_EQ(error_of_yaml("seed: -1"), "my.yaml: seed must be an integer >= 0; got -1");
-  EXPECT_EQ(error_of_yaml("seeds: 0"), "my.yaml: seeds must be an integer >= 1; got 0");
+  EXPECT_EQ(error_of_yaml("seed: -1"),
+            "my.yaml: seed must be an integer in [0, 1000000000000]; got -1");
+  EXPECT_EQ(error_of_yaml("seeds: 0"), "my.yaml: seeds must be an integer in [1, 10000]; got 0");
+  EXPECT_EQ(error_of_yaml("seeds: 10001"),
+            "my.yaml: seeds must be an integer in [1, 10000]; got 10001");
+  EXPECT_EQ(error_of_yaml("max_trials: 100001"),
+            "my.yaml: max_trials must be an integer in [1, 100000]; got 100001");
+  EXPECT_EQ(error_of_yaml("trial: {failure_angle: 1.6}"),
+            "my.yaml: trial.failure_angle must be in (0, 1.5707963267948966]; got 1.6");
   EXPECT_EQ(error_of_yaml("trial: {period: 0}"), "my.yaml: trial.period must be > 0; got 0");
   EXPECT_EQ(error_of_yaml("plant: {body_mass: -10}"),
             "my.yaml: plant.body_mass must be > 0; got -10");
@@ -169,7 +202,8 @@ TEST(Config, RejectsMalformedSetOverrides) {
             "--set critic.gamma=: critic.gamma has no value after '='");
   EXPECT_EQ(error_of_set("critic.gama=0.5"),
             "--set critic.gama=0.5: unknown key 'critic.gama'; did you mean 'critic.gamma'?");
-  EXPECT_EQ(error_of_set("seeds=-3"), "--set seeds=-3: seeds must be an integer >= 1; got -3");
+  EXPECT_EQ(error_of_set("seeds=-3"),
+            "--set seeds=-3: seeds must be an integer in [1, 10000]; got -3");
   EXPECT_EQ(error_of_set("critic.gamma=nan"),
             "--set critic.gamma=nan: critic.gamma must be a number; got 'nan'");
 }

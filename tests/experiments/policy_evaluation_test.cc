@@ -266,7 +266,7 @@ TEST_F(EvalCommand, BadWeightsOrConfigExitTwoWithOneLine) {
 TEST_F(EvalCommand, BadOptionsExitTwoWithOneLine) {
   app::EvalOptions bad = options();
   bad.repeats = 0;
-  EXPECT_EQ(refused(bad), "cbbg: error: --repeats must be >= 1; got 0\n");
+  EXPECT_EQ(refused(bad), "cbbg: error: --repeats must be from 1 to 10000; got 0\n");
   bad = options();
   bad.angles = {0.05, std::numeric_limits<double>::infinity()};
   EXPECT_EQ(refused(bad), "cbbg: error: --angles: every angle must be a finite number; got inf\n");
