@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "config/config.h"
+#include "tests/apps/cbbg_process.h"
 #include "tests/support/scratch_directory.h"
 
 namespace {
@@ -26,29 +27,10 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int exit_code;
-  std::string output;  // stdout and stderr together
-};
-
-Outcome cbbg(const std::string& arguments) {
-  const std::string command = std::string(CBBG_BINARY) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer{};
-  while (const std::size_t read = fread(buffer.data(), 1, buffer.size(), pipe)) {
-    output.append(buffer.data(), read);
-  }
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using cbbg::testing::cbbg;
+using cbbg::testing::Outcome;
+using cbbg::testing::read_file;
+using cbbg::testing::start_cbbg;
 
 class CbbgCommand : public ::testing::Test {
  protected:
@@ -246,24 +228,6 @@ TEST_F(CbbgCommand, WeightsSavedByARunLoadIntoEvalAndTheNextRun) {
   EXPECT_THAT(layout.output, HasSubstr("was made for rbf.centres"));
   EXPECT_FALSE(fs::exists(scratch_ / "third"));
   EXPECT_FALSE(fs::exists(scratch_ / "fourth"));
-}
-
-// Starts `cbbg` with `arguments` (split on spaces) without waiting; returns its pid.
-pid_t start_cbbg(const std::string& arguments) {
-  std::vector<std::string> words{CBBG_BINARY};
-  std::istringstream split(arguments);
-  for (std::string word; split >> word;) words.push_back(word);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    std::vector<char*> argv;
-    for (auto& word : words) argv.push_back(word.data());
-    argv.push_back(nullptr);
-    freopen("/dev/null", "w", stdout);
-    freopen("/dev/null", "w", stderr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  return pid;
 }
 
 TEST_F(CbbgCommand, AKilledRunLeavesNoResultsAndResumesToTheSameBytes) {
