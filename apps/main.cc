@@ -1,5 +1,7 @@
 // cbbg: run the paper's experiments, draw the diagrams, plot results, list what exists.
 
+#include <charconv>
+#include <string>
 #include <thread>
 
 #include <spdlog/spdlog.h>
@@ -8,6 +10,21 @@
 #include "apps/commands.h"
 #include "apps/errors.h"
 #include "apps/eval_command.h"
+
+namespace {
+
+// --jobs as typed: an integer from 1 to 1024.
+bool parse_jobs(const std::string& text, int& jobs) {
+  int value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < 1 || value > 1024) {
+    return false;
+  }
+  jobs = value;
+  return true;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace cbbg::app;
@@ -26,14 +43,14 @@ int main(int argc, char** argv) {
   std::filesystem::path resume;
   auto* experiment_option = run_app->add_option(
       "--experiment", experiment, "exp1 | exp2 | a diagram name (default: the config's, exp1)");
-  run_app->add_option("--config", run.config_file, "a YAML config (keys: `cbbg list`)")
-      ->check(CLI::ExistingFile);
+  run_app->add_option("--config", run.config_file, "a YAML config (keys: `cbbg list`)");
   run_app->add_option("--set", run.sets, "override one key: --set critic.gamma=0.9 (repeatable)");
   // Numbers are checked by the config's schema, with the project's messages and limits.
   auto* seeds_option = run_app->add_option("--seeds", seeds, "independent runs per arm");
   auto* seed_option = run_app->add_option("--seed", seed, "root seed; run k uses seed + k");
-  run_app->add_option("--jobs,-j", run.jobs, "threads (results are the same for any count)")
-      ->check(CLI::Range(1, 1024));
+  std::string jobs;
+  auto* jobs_option = run_app->add_option(
+      "--jobs,-j", jobs, "threads, 1 to 1024 (results are the same for any count)");
   auto* out_option =
       run_app->add_option("--out,-o", run.out, "results directory (a new path, or --replace)");
   auto* resume_option =
@@ -56,9 +73,7 @@ int main(int argc, char** argv) {
   auto* diagram_option =
       graph_app->add_option("--diagram", graph.diagram,
                             "cbbg | cbbg_weighted | bg_only | cb_only | pd_only | learnt_actor");
-  graph_app->add_option("--config", graph.config_file, "a YAML config")
-      ->check(CLI::ExistingFile)
-      ->excludes(diagram_option);
+  graph_app->add_option("--config", graph.config_file, "a YAML config")->excludes(diagram_option);
   graph_app->add_option("--set", graph.sets, "override one key (repeatable)");
   graph_app->add_option("--depth", graph.max_depth, "nesting levels to expand (default: all)");
   graph_app->add_option("-o,--output", graph.output, "FILE.dot | FILE.svg | FILE.png")->required();
@@ -75,8 +90,7 @@ int main(int argc, char** argv) {
   eval_app
       ->add_option("--load-weights", eval.weights_file, "a weights file (cbbg run --save-weights)")
       ->required();
-  eval_app->add_option("--config", eval.config_file, "a YAML config (keys: `cbbg list`)")
-      ->check(CLI::ExistingFile);
+  eval_app->add_option("--config", eval.config_file, "a YAML config (keys: `cbbg list`)");
   eval_app->add_option("--set", eval.sets,
                        "override one key: --set plant.kind=analytic (repeatable)");
   eval_app->add_option("--angles", eval.angles, "initial pitches, rad (default: evaluation.angles)")
@@ -98,8 +112,12 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
-    app.exit(error);
-    return 2;  // command-line misuse, like a bad config
+    // Command-line misuse, like a bad config: one line, exit 2.
+    return report_error(
+        kUserError, std::string(error.what()) + " (cbbg --help lists the commands and options)");
+  }
+  if (jobs_option->count() > 0 && !parse_jobs(jobs, run.jobs)) {
+    return report_error(kUserError, "--jobs must be an integer from 1 to 1024; got '" + jobs + "'");
   }
   if (experiment_option->count() > 0) run.experiment = experiment;
   if (seeds_option->count() > 0) run.seeds = seeds;

@@ -103,7 +103,8 @@ class Parser {
 
   long long parse_integer(const KeySpec& spec, const std::string& label,
                           const YAML::Node& node) const {
-    const double value = parse_number(label, node, "an integer");
+    const std::string wanted = "an integer " + range_text(spec);
+    const double value = parse_number(label, node, wanted.c_str());
     if (value != std::floor(value) || std::abs(value) > 9.0e15) {
       fail(label + " must be an integer " + range_text(spec) + "; got " + shown(node));
     }

@@ -72,7 +72,8 @@ TEST(Config, SuggestsTheKeyMeantForAnUnknownOne) {
 }
 
 TEST(Config, RejectsWrongTypesNamingKeyAndAllowedValues) {
-  EXPECT_EQ(error_of_yaml("seeds: many"), "my.yaml: seeds must be an integer; got 'many'");
+  EXPECT_EQ(error_of_yaml("seeds: many"),
+            "my.yaml: seeds must be an integer in [1, 10000]; got 'many'");
   EXPECT_EQ(error_of_yaml("seeds: 2.5"),
             "my.yaml: seeds must be an integer in [1, 10000]; got '2.5'");
   EXPECT_EQ(error_of_yaml("critic: {beta: fast}"),

@@ -1,0 +1,182 @@
+// Bad input of every kind, across every subcommand: one line in the project's words naming
+// the key, flag or path and what is allowed, exit 2 for what the user typed, and nothing
+// written or changed.
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "tests/apps/cbbg_process.h"
+#include "tests/support/scratch_directory.h"
+
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+struct BadInput {
+  std::string arguments;  // after `cbbg`; {S} stands for the scratch directory
+  std::string message;    // a part of the one line printed
+};
+
+std::string expand(std::string text, const std::string& scratch) {
+  for (std::size_t at = text.find("{S}"); at != std::string::npos; at = text.find("{S}")) {
+    text.replace(at, 3, scratch);
+  }
+  return text;
+}
+
+std::vector<BadInput> bad_inputs() {
+  const std::string quick = "run --set plant.kind=analytic --seeds 1 --out {S}/out ";
+  const std::string any_seeds = "run --set plant.kind=analytic --out {S}/out ";
+  const std::string eval = "eval --set plant.kind=analytic --load-weights {S}/w.txt ";
+  const std::string graph = "graph --diagram cbbg ";
+  const std::string digits309 = "1" + std::string(308, '0');
+  return {
+      // Keys and values, from --set.
+      {quick + "--set critic.gama=0.5", "unknown key 'critic.gama'; did you mean 'critic.gamma'?"},
+      {quick + "--set colour=red", "unknown key 'colour'; `cbbg list` shows every key"},
+      {quick + "--set seeds=0", "seeds must be an integer in [1, 10000]; got 0"},
+      {quick + "--set max_trials=0", "max_trials must be an integer in [1, 100000]; got 0"},
+      {quick + "--set max_trials=100001", "max_trials must be an integer in [1, 100000]"},
+      {quick + "--set exp2.trials=1", "exp2.trials must be an integer in [2, 100000]; got 1"},
+      {quick + "--set trial.period=0", "trial.period must be > 0; got 0"},
+      {quick + "--set trial.duration=0.001",
+       "trial.duration (0.001 s) must be at least one trial.period (0.01 s)"},
+      {quick + "--set trial.theta0=0.6",
+       "trial.theta0 (0.6 rad) must lie inside trial.failure_angle (0.5236 rad)"},
+      {quick + "--set trial.theta0=-0.6", "trial.theta0 (-0.6 rad) must lie inside"},
+      {quick + "--set trial.failure_angle=0",
+       "trial.failure_angle must be in (0, 1.5707963267948966]; got 0"},
+      {quick + "--set trial.failure_angle=3.2", "trial.failure_angle must be in (0, 1.57"},
+      {quick + "--set evaluation.angles=[0.1,0.6]",
+       "evaluation.angles[1] (0.6 rad) must lie inside trial.failure_angle"},
+      {quick + "--set evaluation.angles=[]", "evaluation.angles must be a non-empty list"},
+      {quick + "--set critic.gamma=nan", "critic.gamma must be a number; got 'nan'"},
+      {quick + "--set critic.gamma=1.5", "critic.gamma must be in (0, 1]; got 1.5"},
+      {quick + "--set critic.lambda=1", "critic.lambda must be in [0, 1); got 1"},
+      {quick + "--set sampler.k_b=.inf", "sampler.k_b must be a finite number"},
+      {quick + "--set actor.alpha=-1", "actor.alpha"},
+      {quick + "--set actor.rule=best", "actor.rule must be one of improved, weighted; got 'best'"},
+      {quick + "--set plant.kind=mujoco", "plant.kind must be one of simbody, analytic"},
+      {quick + "--set plant.body_mass=-10", "plant.body_mass must be > 0; got -10"},
+      {quick + "--set supervisor.kind=mpc", "supervisor.kind must be one of pd, lqr"},
+      {quick + "--set arms=[cbbg,cbbg]", "arms lists 'cbbg' twice"},
+      {quick + "--set arms=[cbbg,nope]", "arms[1] must be one of"},
+      {quick + "--set 'annealing=[{from_trial: 2, k1: 10}]'", "must start at from_trial 1"},
+      {quick + "--set trial=3", "trial is a section: give a map of its keys"},
+      {quick + "--set =3", "expected key.path=value"},
+      {quick + "--set seeds", "expected key.path=value"},
+      {quick + "--set seeds=", "seeds has no value after '='"},
+      {quick + "--set log.decimation=-1", "log.decimation must be an integer >= 0; got -1"},
+      {quick + "--set rbf.width=0", "rbf.width"},
+      // The run's own flags.
+      {any_seeds + "--seeds 0", "--seeds 0: seeds must be an integer in [1, 10000]; got 0"},
+      {any_seeds + "--seeds 10001", "seeds must be an integer in [1, 10000]; got 10001"},
+      {any_seeds + "--seeds many", "seeds must be an integer in [1, 10000]; got 'many'"},
+      {quick + "--seed -1", "seed must be an integer in [0, 1000000000000]; got -1"},
+      {quick + "--seed " + digits309, "seed must be an integer in [0, 1000000000000]; got '1000"},
+      {quick + "--jobs 0", "--jobs must be an integer from 1 to 1024; got '0'"},
+      {quick + "--jobs many", "--jobs must be an integer from 1 to 1024; got 'many'"},
+      {quick + "--experiment ''", "--experiment needs a name"},
+      {quick + "--experiment exp9", "experiment must be one of exp1, exp2"},
+      {"run --set plant.kind=analytic --out ''", "--out needs a directory path"},
+      {"run --out {S}/file", "--out '{S}/file' is a file; give a directory path"},
+      {"run --out {S}/mine", "--out '{S}/mine' exists and was not made by cbbg run"},
+      {"run --resume ''", "--resume needs the results directory of the interrupted run"},
+      {"run --resume {S}/never", "nothing to resume: neither '{S}/never.partial' nor"},
+      {"run --resume {S}/mine --seeds 2",
+       "--resume continues with the config, weights and options"},
+      {any_seeds + "--seeds 2 --save-weights {S}/x.txt",
+       "--save-weights keeps the weights of one learning run; this run has 4"},
+      {"run --set plant.kind=analytic --experiment bg_only --seeds 1 --out {S}/out "
+       "--save-weights {S}/mine",
+       "--save-weights '{S}/mine' is a directory; give a file path"},
+      {"run --set plant.kind=analytic --experiment bg_only --seeds 1 --out {S}/out "
+       "--save-weights {S}/none/x.txt",
+       "the directory '{S}/none' does not exist"},
+      {quick + "--load-weights {S}/missing.txt", "missing.txt"},
+      {quick + "--load-weights {S}/file", "{S}/file"},
+      {quick + "--no-such-flag", "--no-such-flag (cbbg --help lists the commands and options)"},
+      // Config files.
+      {quick + "--config {S}/missing.yaml",
+       "config file '{S}/missing.yaml' cannot be read (missing or unreadable)"},
+      {quick + "--config {S}/mine", "config file '{S}/mine' is not a regular file"},
+      {quick + "--config /dev/zero", "config file '/dev/zero' is not a regular file"},
+      {quick + "--config {S}/huge.yaml", "is larger than 1024 KiB"},
+      {quick + "--config {S}/twice.yaml", "key 'seeds' appears twice (again at line 2)"},
+      {quick + "--config {S}/malformed.yaml", "malformed YAML at line"},
+      {quick + "--config {S}/list.yaml", "a config is a map of keys"},
+      // graph.
+      {"graph --diagram nope -o {S}/x.dot", "--diagram: unknown diagram 'nope'; the presets are"},
+      {graph + "-o {S}/x.pdf", "unknown extension '.pdf'"},
+      {graph + "-o {S}/mine", "-o '{S}/mine' is a directory; give a file path"},
+      {graph + "-o {S}/none/x.dot", "the directory '{S}/none' does not exist"},
+      {graph + "-o ''", "-o needs a file path"},
+      {graph + "--set trial.theta0=1 -o {S}/x.dot", "trial.theta0 (1 rad) must lie inside"},
+      {"graph", "--output is required"},
+      // plot.
+      {"plot {S}/never", "'{S}/never' is not a results directory (it has no config.yaml)"},
+      {"plot {S}/mine", "'{S}/mine' is not a results directory (it has no config.yaml)"},
+      {"plot {S}/broken", "unknown key 'colour'"},
+      // eval.
+      {"eval", "--load-weights is required"},
+      {"eval --load-weights {S}/missing.txt", "missing.txt"},
+      {"eval --load-weights {S}/file", "{S}/file"},
+      {eval + "--repeats 0", "--repeats must be from 1 to 10000; got 0"},
+      {eval + "--repeats 10001", "--repeats must be from 1 to 10000; got 10001"},
+      {eval + "--angles 0.1,inf", "--angles: every angle must be a finite number; got inf"},
+      {eval + "--angles 0.7", "evaluation.angles[0] (0.7 rad) must lie inside"},
+      {eval + "--push-time 1", "--push-time, --push-torque and --push-duration go together"},
+      {eval + "--push-time 1 --push-torque 2 --push-duration 0",
+       "--push-duration must be a finite number > 0 (s); got 0"},
+      {eval + "--push-time -1 --push-torque 2 --push-duration 1",
+       "--push-time must be a finite number >= 0 (s); got -1"},
+      {eval + "--out {S}/file", "--out '{S}/file' is a file, not a directory"},
+      {eval + "--set rbf.centres=[-1,0,1]", "was made for rbf.centres"},
+      // Other commands.
+      {"list --bogus", "--bogus"},
+      {"frobnicate", "frobnicate"},
+  };
+}
+
+TEST(BadInput, EveryCaseExitsTwoWithOneLineAndLeavesEverythingAsItWas) {
+  cbbg::testing::ScratchDirectory scratch_directory;
+  const fs::path scratch = scratch_directory.path();
+  fs::create_directories(scratch / "mine");
+  std::ofstream(scratch / "mine" / "notes.txt") << "my notes\n";
+  std::ofstream(scratch / "file") << "a file\n";
+  std::ofstream(scratch / "huge.yaml") << std::string(2 * 1024 * 1024, '#');
+  std::ofstream(scratch / "twice.yaml") << "seeds: 2\nseeds: 3\n";
+  std::ofstream(scratch / "malformed.yaml") << "critic:\n  gamma: [0.5\n";
+  std::ofstream(scratch / "list.yaml") << "- 1\n- 2\n";
+  fs::create_directories(scratch / "broken");
+  std::ofstream(scratch / "broken" / "config.yaml") << "colour: red\n";
+  const cbbg::testing::Outcome learnt = cbbg::testing::cbbg(
+      "--log-level warn run --set plant.kind=analytic --experiment bg_only --seeds 1 "
+      "--no-figures --out " +
+      (scratch / "learnt").string() + " --save-weights " + (scratch / "w.txt").string());
+  ASSERT_EQ(learnt.exit_code, 0) << learnt.output;
+  const auto before = cbbg::testing::tree_of(scratch);
+
+  const std::vector<BadInput> cases = bad_inputs();
+  EXPECT_GE(cases.size(), 60u);
+  for (const BadInput& input : cases) {
+    const std::string arguments = expand(input.arguments, scratch.string());
+    SCOPED_TRACE(arguments);
+    const cbbg::testing::Outcome outcome = cbbg::testing::cbbg(arguments);
+    EXPECT_EQ(outcome.exit_code, 2);
+    EXPECT_THAT(outcome.output, ::testing::StartsWith("cbbg: error: "));
+    EXPECT_THAT(outcome.output, HasSubstr(expand(input.message, scratch.string())));
+    EXPECT_EQ(std::count(outcome.output.begin(), outcome.output.end(), '\n'), 1);
+    EXPECT_EQ(cbbg::testing::tree_of(scratch), before) << "something was written or changed";
+  }
+}
+
+}  // namespace
