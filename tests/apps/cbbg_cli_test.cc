@@ -123,6 +123,15 @@ TEST_F(CbbgCommand, CommandLineMisuseExitsTwo) {
   EXPECT_THAT(help.output, HasSubstr("--experiment"));
 }
 
+TEST_F(CbbgCommand, DecimationZeroWritesNoStepsFile) {
+  const fs::path out = scratch_ / "quiet";
+  const Outcome outcome = cbbg(std::string("run ") + kQuick +
+                               " --seeds 1 --set log.decimation=0 --out " + out.string());
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.output;
+  EXPECT_TRUE(fs::exists(out / "trials.csv"));
+  EXPECT_FALSE(fs::exists(out / "steps.csv"));
+}
+
 TEST_F(CbbgCommand, RunWritesTheResultsDirectory) {
   const fs::path out = scratch_ / "results";
   const Outcome outcome = cbbg(std::string("run ") + kQuick + " --seeds 2 --out " + out.string());

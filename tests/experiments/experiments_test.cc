@@ -84,6 +84,28 @@ TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
   EXPECT_FALSE(results.runs[0].succeeded);
   EXPECT_THAT(trials_csv(results), HasSubstr("bg_only,1,3,1,1,"));
   EXPECT_THAT(trials_csv(results), HasSubstr(",nan,diverged\n"));
+  // Weights that stopped being finite are marked, neither saved nor evaluated.
+  EXPECT_TRUE(results.runs[0].weights_diverged);
+  EXPECT_FALSE(results.runs[0].weights.has_value());
+  EXPECT_TRUE(results.runs[0].evaluation.empty());
+  EXPECT_THAT(summary_json(results, config), HasSubstr("\"weights_diverged\": [true]"));
+}
+
+TEST(Experiments, ATemperatureTooLargeToAverageEndsTheTrialAsDiverged) {
+  // k1 = 1e306 keeps every tick's T finite, but no trial's mean of them is.
+  config::Config config = quick_config();
+  config.set("experiment=bg_only");
+  config.set("seeds=1");
+  config.set("max_trials=2");
+  config.set("tropism.k1=1e306");
+  const ExperimentResults results = run_experiment(config);
+  bool diverged = false;
+  for (const TrialRecord& record : results.runs.at(0).trials) {
+    EXPECT_NE(record.outcome.status, TrialStatus::kSuccess) << "trial " << record.trial;
+    diverged = diverged || record.outcome.status == TrialStatus::kDiverged;
+  }
+  EXPECT_TRUE(diverged);
+  EXPECT_FALSE(results.runs[0].succeeded);
 }
 
 TEST(Experiments, Exp2AnnealsK1TrialByTrial) {
