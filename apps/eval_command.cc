@@ -6,16 +6,14 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <stdexcept>
-
-#include <unistd.h>
 
 #include "config/config.h"
 #include "diagrams/params_from_config.h"
 #include "diagrams/presets.h"
 #include "experiments/policy_evaluation.h"
+#include "store/files.h"
 #include "store/weights_file.h"
 
 namespace cbbg::app {
@@ -96,25 +94,6 @@ std::string evaluation_csv(const experiments::PolicyEvaluation& evaluation) {
   return csv;
 }
 
-// Writes `text` to directory/name through a temporary file and a rename.
-void write_atomically(const std::filesystem::path& directory, const std::string& name,
-                      const std::string& text) {
-  std::filesystem::create_directories(directory);
-  const std::filesystem::path target = directory / name;
-  std::filesystem::path temporary = target;
-  temporary += ".partial-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::filesystem::remove(temporary);
-      throw std::runtime_error("cannot write '" + target.string() + "'");
-    }
-  }
-  std::filesystem::rename(temporary, target);
-}
-
 void print_table(const experiments::PolicyEvaluation& evaluation, const config::Config& config,
                  const experiments::LearntWeights& weights, const EvalOptions& options) {
   const experiments::WeightsProvenance& from = weights.provenance;
@@ -168,7 +147,8 @@ int eval_command(const EvalOptions& options) {
                                       diagrams::preset(diagrams::kLearntActor).options, loop),
         weights, settings);
     if (!options.out.empty()) {
-      write_atomically(options.out, "evaluation.csv", evaluation_csv(evaluation));
+      std::filesystem::create_directories(options.out);
+      store::write_atomically(options.out / "evaluation.csv", evaluation_csv(evaluation));
     }
     print_table(evaluation, config, weights, options);
   } catch (const std::exception& error) {

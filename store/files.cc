@@ -33,6 +33,14 @@ void write_atomically(const std::filesystem::path& path, const std::string& text
   }
 }
 
+std::string quoted_path(const std::filesystem::path& path) {
+  // Built by appends: GCC 12 warns falsely (-Wrestrict) on "'" + text + "'".
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
+}
+
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read '" + path.string() + "'");

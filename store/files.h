@@ -11,6 +11,9 @@ namespace cbbg::store {
 // never half-written. Throws std::runtime_error naming `path` with the system's reason.
 void write_atomically(const std::filesystem::path& path, const std::string& text);
 
+// 'path', quoted as messages name paths.
+std::string quoted_path(const std::filesystem::path& path);
+
 // The whole file; throws std::runtime_error naming `path` when it cannot be read.
 std::string read_text(const std::filesystem::path& path);
 

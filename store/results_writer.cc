@@ -1,6 +1,7 @@
 #include "store/results_writer.h"
 
 #include "store/fault_point.h"
+#include "store/files.h"
 #include "store/task_store.h"
 #include "store/weights_file.h"
 
@@ -35,12 +36,6 @@ std::string number(double value) {
 }
 
 std::string json_number(double value) { return std::isfinite(value) ? number(value) : "null"; }
-
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
-}
 
 // The learnt actor alone: per evaluation angle, the seeds whose policy balanced for a whole
 // trial, of the seeds that have a policy ("" when none has: no key).
@@ -161,12 +156,12 @@ std::string summary_json(const ExperimentResults& results, const config::Config&
 
 void write_result_files(const ExperimentResults& results, const config::Config& config,
                         const std::filesystem::path& directory, const TaskStore* store) {
-  write_text(directory / "config.yaml", config.to_yaml());
-  write_text(directory / "summary.json", summary_json(results, config));
+  write_atomically(directory / "config.yaml", config.to_yaml());
+  write_atomically(directory / "summary.json", summary_json(results, config));
   fault_point("commit:results");  // a kill here leaves half the files: resume rewrites them
-  write_text(directory / "trials.csv", trials_csv(results));
+  write_atomically(directory / "trials.csv", trials_csv(results));
   if (results.experiment != "exp2") {
-    write_text(directory / "evaluation.csv", evaluation_csv(results));
+    write_atomically(directory / "evaluation.csv", evaluation_csv(results));
   }
   for (const SeedRun& run : results.runs) {
     if (run.weights) {

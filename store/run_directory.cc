@@ -18,14 +18,6 @@ namespace cbbg::store {
 namespace fs = std::filesystem;
 namespace {
 
-// Built by appends: GCC 12 warns falsely (-Wrestrict) on "'" + text + "'".
-std::string quoted(const fs::path& path) {
-  std::string text = "'";
-  text += path.string();
-  text += '\'';
-  return text;
-}
-
 bool has(const fs::path& directory, const char* marker) {
   std::error_code error;
   return fs::is_directory(directory, error) && fs::exists(directory / marker, error);
@@ -76,26 +68,26 @@ void check_target(const fs::path& target, bool replace) {
   const auto status = fs::status(target, error);
   if (!fs::exists(status)) return;
   if (!fs::is_directory(status)) {
-    throw config::ConfigError("--out " + quoted(target) + " is a file; give a directory path");
+    throw config::ConfigError("--out " + quoted_path(target) + " is a file; give a directory path");
   }
   if (has(target, kWorkMarker)) {
-    throw config::ConfigError("--out " + quoted(target) +
+    throw config::ConfigError("--out " + quoted_path(target) +
                               " holds a run whose commit was interrupted; finish it with "
                               "--resume " +
                               target.string());
   }
   if (!has(target, kResultsMarker)) {
-    throw config::ConfigError("--out " + quoted(target) +
+    throw config::ConfigError("--out " + quoted_path(target) +
                               " exists and was not made by cbbg run; cbbg never replaces what it "
                               "did not make: give a new path");
   }
   if (!replace) {
-    throw config::ConfigError("--out " + quoted(target) +
+    throw config::ConfigError("--out " + quoted_path(target) +
                               " holds the results of an earlier run; add --replace to replace "
                               "them (they are kept until the new results are complete)");
   }
   if (const std::string foreign = foreign_entry(target); !foreign.empty()) {
-    throw config::ConfigError("--out " + quoted(target) + " holds '" + foreign +
+    throw config::ConfigError("--out " + quoted_path(target) + " holds '" + foreign +
                               "', which cbbg did not write; move it away before --replace");
   }
 }
@@ -105,14 +97,17 @@ void check_work_free(const fs::path& work, const fs::path& target) {
   std::error_code error;
   if (!fs::exists(fs::symlink_status(work, error))) return;
   if (!has(work, kWorkMarker)) {
-    throw config::ConfigError(quoted(work) + " is in the way and was not made by cbbg; move it " +
-                              "away (cbbg works there while it runs into " + quoted(target) + ")");
+    throw config::ConfigError(
+        quoted_path(work) + " is in the way and was not made by cbbg; move it " +
+        "away (cbbg works there while it runs into " + quoted_path(target) + ")");
   }
   if (DirectoryLock::held(work / kLockFile)) {
-    throw config::ConfigError(quoted(work) + " is in use by another cbbg run; wait for it to end");
+    throw config::ConfigError(quoted_path(work) +
+                              " is in use by another cbbg run; wait for it to end");
   }
-  throw config::ConfigError(quoted(work) + " holds an interrupted run: continue it with --resume " +
-                            target.string() + ", or remove " + quoted(work) + " to start anew");
+  throw config::ConfigError(
+      quoted_path(work) + " holds an interrupted run: continue it with --resume " +
+      target.string() + ", or remove " + quoted_path(work) + " to start anew");
 }
 
 void create_parent(const fs::path& path) {
@@ -120,14 +115,14 @@ void create_parent(const fs::path& path) {
   std::error_code error;
   if (!parent.empty() && !fs::is_directory(parent, error) &&
       !fs::create_directories(parent, error) && error) {
-    throw std::runtime_error("cannot create " + quoted(parent) + ": " + error.message());
+    throw std::runtime_error("cannot create " + quoted_path(parent) + ": " + error.message());
   }
 }
 
 // Swaps two directories in one atomic step (Linux renameat2, RENAME_EXCHANGE).
 void exchange(const fs::path& a, const fs::path& b) {
   if (::renameat2(AT_FDCWD, a.c_str(), AT_FDCWD, b.c_str(), RENAME_EXCHANGE) != 0) {
-    throw std::runtime_error("cannot swap " + quoted(a) + " and " + quoted(b) + ": " +
+    throw std::runtime_error("cannot swap " + quoted_path(a) + " and " + quoted_path(b) + ": " +
                              std::strerror(errno));
   }
 }
@@ -136,7 +131,7 @@ void rename_or_throw(const fs::path& from, const fs::path& to) {
   std::error_code error;
   fs::rename(from, to, error);
   if (error) {
-    throw std::runtime_error("cannot move " + quoted(from) + " to " + quoted(to) + ": " +
+    throw std::runtime_error("cannot move " + quoted_path(from) + " to " + quoted_path(to) + ": " +
                              error.message());
   }
 }
@@ -165,7 +160,8 @@ RunDirectory RunDirectory::create(const fs::path& target, const config::Config& 
   std::error_code error;
   fs::create_directories(staging / "tasks", error);
   if (error) {
-    throw std::runtime_error("cannot create " + quoted(directory.work_) + ": " + error.message());
+    throw std::runtime_error("cannot create " + quoted_path(directory.work_) + ": " +
+                             error.message());
   }
   directory.lock_.emplace(staging / kLockFile, directory.work_.string());
   const std::string yaml = config.to_yaml();
@@ -175,7 +171,8 @@ RunDirectory RunDirectory::create(const fs::path& target, const config::Config& 
   if (error) {
     fs::remove_all(staging);
     check_work_free(directory.work_, directory.target_);  // another run got there first
-    throw std::runtime_error("cannot create " + quoted(directory.work_) + ": " + error.message());
+    throw std::runtime_error("cannot create " + quoted_path(directory.work_) + ": " +
+                             error.message());
   }
   directory.config_ = config;
   directory.shape_ = shape;
@@ -198,8 +195,8 @@ RunDirectory RunDirectory::resume(const fs::path& target) {
   std::error_code error;
   if (fs::exists(fs::symlink_status(work, error))) {
     if (!has(work, kWorkMarker)) {
-      throw config::ConfigError(quoted(work) + " is in the way and was not made by cbbg; move " +
-                                "it away");
+      throw config::ConfigError(quoted_path(work) +
+                                " is in the way and was not made by cbbg; move " + "it away");
     }
     directory.lock_.emplace(work / kLockFile, work.string());
     directory.read_marker();
@@ -207,11 +204,11 @@ RunDirectory RunDirectory::resume(const fs::path& target) {
     return directory;
   }
   if (has(directory.target_, kResultsMarker)) {
-    throw config::ConfigError("nothing to resume: " + quoted(directory.target_) +
+    throw config::ConfigError("nothing to resume: " + quoted_path(directory.target_) +
                               " holds finished results");
   }
-  throw config::ConfigError("nothing to resume: neither " + quoted(work) + " nor " +
-                            quoted(directory.target_) + " holds an interrupted run");
+  throw config::ConfigError("nothing to resume: neither " + quoted_path(work) + " nor " +
+                            quoted_path(directory.target_) + " holds an interrupted run");
 }
 
 void RunDirectory::read_marker() {
@@ -228,15 +225,15 @@ void RunDirectory::read_marker() {
     if (key == "replace") marker >> replace;
   }
   if (word != "cbbg-run" || version != 1 || hash.empty()) {
-    throw config::ConfigError(quoted(work_ / kWorkMarker) + " is not a cbbg run marker");
+    throw config::ConfigError(quoted_path(work_ / kWorkMarker) + " is not a cbbg run marker");
   }
   const fs::path config_file = work_ / "config.yaml";
   std::error_code error;
   if (!fs::is_regular_file(config_file, error) || text_hash(read_text(config_file)) != hash) {
-    throw config::ConfigError(quoted(config_file) +
+    throw config::ConfigError(quoted_path(config_file) +
                               " is not the config the run began with (it was edited or "
                               "removed); put it back, or remove " +
-                              quoted(work_) + " and start anew");
+                              quoted_path(work_) + " and start anew");
   }
   config_.merge_file(config_file);
   shape_.figures = figures != 0;
@@ -251,7 +248,7 @@ void RunDirectory::remove_replaced() const {
   std::error_code error;
   fs::remove_all(work_, error);
   if (error) {
-    throw std::runtime_error("cannot remove the replaced results " + quoted(work_) + ": " +
+    throw std::runtime_error("cannot remove the replaced results " + quoted_path(work_) + ": " +
                              error.message());
   }
 }
@@ -274,14 +271,15 @@ void RunDirectory::commit() {
     std::error_code error;
     fs::remove_all(target_ / name, error);
     if (error) {
-      throw std::runtime_error("cannot remove " + quoted(target_ / name) + ": " + error.message());
+      throw std::runtime_error("cannot remove " + quoted_path(target_ / name) + ": " +
+                               error.message());
     }
   }
   fault_point("commit:unmark");
   std::error_code error;
   fs::remove(target_ / kLockFile, error);
   if (!fs::remove(target_ / kWorkMarker, error) && error) {
-    throw std::runtime_error("cannot remove " + quoted(target_ / kWorkMarker) + ": " +
+    throw std::runtime_error("cannot remove " + quoted_path(target_ / kWorkMarker) + ": " +
                              error.message());
   }
 }
