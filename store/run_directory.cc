@@ -185,7 +185,7 @@ RunDirectory RunDirectory::resume(const fs::path& target) {
   }
   RunDirectory directory(target);
   if (has(directory.target_, kWorkMarker)) {
-    // Published (commit step 4), not yet cleaned up: only step 5 remains.
+    // Published (commit step 3), not yet cleaned up: only step 4 remains.
     directory.lock_.emplace(directory.target_ / kLockFile, directory.target_.string());
     directory.published_ = true;
     directory.config_.merge_file(directory.target_ / "config.yaml");
@@ -196,7 +196,7 @@ RunDirectory RunDirectory::resume(const fs::path& target) {
   if (fs::exists(fs::symlink_status(work, error))) {
     if (!has(work, kWorkMarker)) {
       throw config::ConfigError(quoted_path(work) +
-                                " is in the way and was not made by cbbg; move " + "it away");
+                                " is in the way and was not made by cbbg; move it away");
     }
     directory.lock_.emplace(work / kLockFile, work.string());
     directory.read_marker();
