@@ -67,7 +67,9 @@ std::string shown(const config::Value& value) {
 int list_command() {
   std::printf("Experiments (--experiment):\n");
   for (const auto& entry : kExperiments) std::printf("  %-15s %s\n", entry.name, entry.meaning);
-  std::printf("\nDiagrams (presets; --experiment NAME runs one, arms: [...] compares several):\n");
+  std::printf(
+      "\nDiagrams (presets; --experiment NAME runs an arm, arms: [...] compares several, "
+      "cbbg graph draws any):\n");
   for (const auto& preset : diagrams::presets()) {
     std::printf("  %-15s %s\n", preset.name.c_str(), preset.description.c_str());
   }
