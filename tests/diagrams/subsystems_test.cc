@@ -164,21 +164,22 @@ TEST(ClosedLoop, AStartedTrialResetsPerTrialStateAndKeepsTheWeights) {
 }
 
 TEST(ClosedLoop, RefusesAPlantWithoutTheRobotPorts) {
-  class Stub final : public plant::RobotPlant {
+  class OneInputPlant final : public plant::RobotPlant {
    public:
-    explicit Stub(std::string name) : RobotPlant(std::move(name)) {
+    explicit OneInputPlant(std::string name) : RobotPlant(std::move(name)) {
       declare_input_port("torque", 1);
     }
     void reset(Context&, double) const override {}
   };
   ClosedLoopOptions options;
   options.plant = [](const std::string& name, const config::Config&) {
-    return std::make_unique<Stub>(name);
+    return std::make_unique<OneInputPlant>(name);
   };
-  EXPECT_THAT([&] { closed_loop_factory("stub", ControllerOptions{}, options)(analytic_config()); },
-              ThrowsMessage<std::invalid_argument>(
-                  "plant 'plant' must have an input \"torque\" of size 2 and an output \"state\" "
-                  "of size 10 (plant/robot_plant.h)"));
+  EXPECT_THAT(
+      [&] { closed_loop_factory("one_input", ControllerOptions{}, options)(analytic_config()); },
+      ThrowsMessage<std::invalid_argument>(
+          "plant 'plant' must have an input \"torque\" of size 2 and an output \"state\" "
+          "of size 10 (plant/robot_plant.h)"));
 }
 
 TEST(ClosedLoop, IsDrawnWithTheCerebellumAndTheBasalGangliaAsClusters) {
