@@ -48,6 +48,10 @@ plant::RobotParams robot_params(const config::Config& c) {
   p.axle_friction = c.number("plant.axle_friction");
   p.torque_limit = c.number("plant.torque_limit");
   p.accuracy = c.number("plant.accuracy");
+  const std::string& integrator = c.text("plant.simbody_integrator");
+  p.simbody_integrator = integrator == "rk3"      ? plant::SimbodyIntegrator::kRungeKutta3
+                         : integrator == "verlet" ? plant::SimbodyIntegrator::kVerlet
+                                                  : plant::SimbodyIntegrator::kMerson;
   validated(p);
   if (c.text("plant.kind") == "simbody") {
     // A multibody model also needs inertias a rigid body can have.

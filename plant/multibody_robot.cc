@@ -1,6 +1,7 @@
 #include "plant/multibody_robot.h"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include <Simbody.h>
@@ -113,20 +114,39 @@ MultibodyRobot::MultibodyRobot(const RobotParams& params) : params_(params) {
 
 MultibodyRobot::~MultibodyRobot() = default;
 
+namespace {
+
+std::unique_ptr<SimTK::Integrator> make_integrator(const SimTK::MultibodySystem& system,
+                                                   SimbodyIntegrator kind) {
+  switch (kind) {
+    case SimbodyIntegrator::kRungeKutta3:
+      return std::make_unique<SimTK::RungeKutta3Integrator>(system);
+    case SimbodyIntegrator::kVerlet:
+      return std::make_unique<SimTK::VerletIntegrator>(system);
+    case SimbodyIntegrator::kMerson:
+      break;
+  }
+  return std::make_unique<SimTK::RungeKuttaMersonIntegrator>(system);
+}
+
+}  // namespace
+
 struct MultibodyRobotRun::Integration {
-  Integration(const MultibodyRobot::Model& model, double accuracy) : integrator(model.system) {
-    integrator.setAccuracy(accuracy);
-    integrator.setConstraintTolerance(accuracy);
+  Integration(const MultibodyRobot::Model& model, const RobotParams& params)
+      : owned(make_integrator(model.system, params.simbody_integrator)), integrator(*owned) {
+    integrator.setAccuracy(params.accuracy);
+    integrator.setConstraintTolerance(params.accuracy);
     // Land exactly on each end time: the torque changes there (zero-order hold).
     integrator.setAllowInterpolation(false);
   }
-  SimTK::RungeKuttaMersonIntegrator integrator;
+  std::unique_ptr<SimTK::Integrator> owned;
+  SimTK::Integrator& integrator;
 };
 
 MultibodyRobotRun::MultibodyRobotRun(std::shared_ptr<const MultibodyRobot> robot)
     : robot_(std::move(robot)) {
   if (!robot_) throw std::invalid_argument("MultibodyRobotRun: no robot given");
-  integration_ = std::make_unique<Integration>(*robot_->model_, robot_->params_.accuracy);
+  integration_ = std::make_unique<Integration>(*robot_->model_, robot_->params_);
   integration_->integrator.initialize(robot_->model_->default_state);
 }
 

@@ -8,6 +8,14 @@ namespace cbbg::plant {
 // The pitch a trial starts from by default (trial.theta0), rad.
 inline constexpr double kDefaultInitialPitch = 0.1744;
 
+// Config key plant.simbody_integrator: the error-controlled integrator that advances the
+// Simbody plant between ticks.
+enum class SimbodyIntegrator {
+  kMerson,       // "merson": Runge-Kutta-Merson 4(5), the reference
+  kRungeKutta3,  // "rk3": Runge-Kutta 3(2)
+  kVerlet,       // "verlet": Simbody's error-controlled velocity Verlet
+};
+
 struct RobotParams {
   double wheel_mass = 1.0;             // m_l = m_r, kg
   double body_mass = 10.0;             // M, kg
@@ -22,6 +30,7 @@ struct RobotParams {
   double axle_friction = 0.1;          // mu_w, wheel-axle viscous, N m / (rad/s)
   double torque_limit = 5.0;           // |tau_l|, |tau_r| saturate here, N m
   double accuracy = 1.0e-6;            // relative and absolute integrator tolerance
+  SimbodyIntegrator simbody_integrator = SimbodyIntegrator::kMerson;
 
   // Two inertias the paper's equations leave out, which a rigid body cannot do without. The
   // paper's equations take the body's yaw inertia as J_z at every pitch, which needs a roll inertia

@@ -13,8 +13,8 @@ namespace cbbg::plant {
 /// SimbodyPlant: the reference model of the robot, a 3-D Simbody multibody system
 /// (multibody_robot.h): body and two wheels on revolute joints about the axle, rolling
 /// without slip, yaw free. It advances itself between the simulator's instants with the
-/// torque held (zero-order hold), by Simbody's error-controlled Runge–Kutta–Merson
-/// integrator at plant.accuracy.
+/// torque held (zero-order hold), by the Simbody integrator plant.simbody_integrator
+/// (Runge–Kutta–Merson by default; Runge–Kutta 3 or Verlet) at plant.accuracy.
 ///
 /// | port   | dir | size | meaning                                                          |
 /// |--------|-----|------|------------------------------------------------------------------|

@@ -5,9 +5,11 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <ctime>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "bench/ratio_reporter.h"
 #include "framework/block_context.h"
@@ -19,6 +21,7 @@
 #include "plant/plant_ports.h"
 #include "plant/robot_dynamics.h"
 #include "plant/simbody_plant.h"
+#include "tests/support/allocation_counter.h"
 
 namespace cbbg::plant::bench {
 namespace {
@@ -47,16 +50,16 @@ class PdLaw final : public Block {
 template <typename Plant>
 class DiagramLoop {
  public:
-  DiagramLoop() {
+  explicit DiagramLoop(const RobotParams& params = {}) {
     DiagramBuilder builder("robot");
-    plant_ = &builder.emplace<Plant>("plant", RobotParams{});
+    plant_ = &builder.emplace<Plant>("plant", params);
     auto& law = builder.emplace<PdLaw>("law");
     auto& hold = builder.emplace<ZeroOrderHold>("hold", kTorqueSize, kPeriod);
     builder.connect(*plant_, "state", law, "state");
     builder.connect(law, "torque", hold, "u");
     builder.connect(hold, "y", *plant_, "torque");
     diagram_ = builder.build();
-    simulator_ = std::make_unique<Simulator>(*diagram_, SimulatorOptions{RobotParams{}.accuracy});
+    simulator_ = std::make_unique<Simulator>(*diagram_, SimulatorOptions{params.accuracy});
   }
 
   void step() {
@@ -195,7 +198,60 @@ void BM_SimbodyNewContextAndFirstStep(benchmark::State& state) {
   }
 }
 
+// The integrators plant.simbody_integrator offers, each at the default accuracy: CPU per
+// step, heap allocations per step, and the pitch error after 3 s of PD control from the
+// trial pitch against the reference (Runge-Kutta-Merson at accuracy 1e-10).
+constexpr SimbodyIntegrator kIntegrators[] = {
+    SimbodyIntegrator::kMerson, SimbodyIntegrator::kRungeKutta3, SimbodyIntegrator::kVerlet};
+constexpr const char* kIntegratorNames[] = {"merson", "rk3", "verlet"};
+
+double pitch_after_3s(const RobotParams& params) {
+  DiagramLoop<SimbodyPlant> loop(params);
+  for (int tick = 0; tick < 300; ++tick) loop.step();
+  return loop.pitch();
+}
+
+// All three in alternating slices of 100 steps within one benchmark, so that they see the
+// same machine load (single runs here vary by 20 % and more); counters per integrator.
+void BM_SimbodyIntegrators(benchmark::State& state) {
+  constexpr int kCount = 3;
+  constexpr int kSlice = 100;
+  RobotParams reference;
+  reference.accuracy = 1e-10;
+  const double reference_pitch = pitch_after_3s(reference);
+  std::vector<std::unique_ptr<DiagramLoop<SimbodyPlant>>> loops;
+  double seconds[kCount] = {};
+  long long allocations[kCount] = {};
+  for (int k = 0; k < kCount; ++k) {
+    RobotParams params;
+    params.simbody_integrator = kIntegrators[k];
+    const std::string name = kIntegratorNames[k];
+    state.counters[name + "_pitch_error_rad"] = std::abs(pitch_after_3s(params) - reference_pitch);
+    loops.push_back(std::make_unique<DiagramLoop<SimbodyPlant>>(params));
+    loops.back()->step();  // past the first step, which sets the integrator up
+  }
+  long slices = 0;
+  for (auto _ : state) {
+    for (int k = 0; k < kCount; ++k) {
+      const long long allocated = cbbg::testing::allocation_count();
+      const double start = thread_cpu_seconds();
+      for (int i = 0; i < kSlice; ++i) loops[static_cast<size_t>(k)]->step();
+      seconds[k] += thread_cpu_seconds() - start;
+      allocations[k] += cbbg::testing::allocation_count() - allocated;
+    }
+    ++slices;
+  }
+  const double steps = static_cast<double>(slices * kSlice);
+  for (int k = 0; k < kCount; ++k) {
+    const std::string name = kIntegratorNames[k];
+    state.counters[name + "_us_per_step"] = 1e6 * seconds[k] / steps;
+    state.counters[name + "_over_merson"] = seconds[k] / seconds[0];
+    state.counters[name + "_allocs_per_step"] = static_cast<double>(allocations[k]) / steps;
+  }
+}
+
 BENCHMARK(BM_AnalyticPlantStep)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SimbodyIntegrators)->Unit(benchmark::kMillisecond)->MinTime(5.0);
 BENCHMARK(BM_SimbodyPlantStep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SimbodyPlainLoop)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SimbodyDiagramOverPlainLoop)->Unit(benchmark::kMillisecond)->MinTime(5.0);

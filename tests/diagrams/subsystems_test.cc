@@ -13,6 +13,7 @@
 #include "diagrams/basal_ganglia.h"
 #include "diagrams/cerebellum.h"
 #include "diagrams/closed_loop.h"
+#include "diagrams/params_from_config.h"
 #include "diagrams/presets.h"
 #include "experiments/trial_runner.h"
 #include "framework/graphviz.h"
@@ -180,6 +181,16 @@ TEST(ClosedLoop, RefusesAPlantWithoutTheRobotPorts) {
       ThrowsMessage<std::invalid_argument>(
           "plant 'plant' must have an input \"torque\" of size 2 and an output \"state\" "
           "of size 10 (plant/robot_plant.h)"));
+}
+
+TEST(ParamsFromConfig, PlantSimbodyIntegratorChoosesTheIntegrator) {
+  config::Config config = analytic_config();
+  EXPECT_EQ(robot_params(config).simbody_integrator, plant::SimbodyIntegrator::kMerson);
+  config.set("plant.simbody_integrator=rk3");
+  EXPECT_EQ(robot_params(config).simbody_integrator, plant::SimbodyIntegrator::kRungeKutta3);
+  config.set("plant.simbody_integrator=verlet");
+  EXPECT_EQ(robot_params(config).simbody_integrator, plant::SimbodyIntegrator::kVerlet);
+  EXPECT_THROW(config.set("plant.simbody_integrator=euler"), config::ConfigError);
 }
 
 TEST(ClosedLoop, IsDrawnWithTheCerebellumAndTheBasalGangliaAsClusters) {

@@ -26,8 +26,9 @@ struct Trajectories {
   Eigen::MatrixXd simbody;
 };
 
-Trajectories run_both(Control control) {
-  const RobotParams params = accurate_params();
+Trajectories run_both(Control control, SimbodyIntegrator integrator = SimbodyIntegrator::kMerson) {
+  RobotParams params = accurate_params();
+  params.simbody_integrator = integrator;
   Trajectories result;
   for (const PlantKind kind : {PlantKind::kAnalytic, PlantKind::kSimbody}) {
     const Rig rig = make_rig(kind, params, kDefaultInitialPitch, control, kTurningSigma);
@@ -60,6 +61,16 @@ TEST(PlantAgreement, UnderThePdLawWithAZeroOrderHold) {
   EXPECT_LT(max_difference(t, kThetaB), kPitchTolerance);
   EXPECT_LT(max_difference(t, kPhiRight), 1e-5);
   EXPECT_LT(max_difference(t, kX), 1e-6);
+}
+
+TEST(PlantAgreement, EverySimbodyIntegratorAgreesUnderThePdLaw) {
+  for (const SimbodyIntegrator integrator :
+       {SimbodyIntegrator::kRungeKutta3, SimbodyIntegrator::kVerlet}) {
+    const Trajectories t = run_both(Control::kPd, integrator);
+    EXPECT_LT(max_difference(t, kThetaB), kPitchTolerance)
+        << "integrator " << static_cast<int>(integrator);
+    EXPECT_LT(max_difference(t, kX), 1e-6) << "integrator " << static_cast<int>(integrator);
+  }
 }
 
 // The test that needs the sideways-momentum terms of robot_dynamics.h: without them the
