@@ -2,9 +2,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <functional>
-#include <limits>
-#include <memory>
 #include <stdexcept>
 #include <string>
 

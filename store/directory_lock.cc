@@ -36,10 +36,10 @@ DirectoryLock::DirectoryLock(const std::filesystem::path& file, const std::strin
     throw config::ConfigError("'" + what + "' is in use by another cbbg run (pid " + pid +
                               "); wait for it to end");
   }
+  // The pid only names the holder in messages: if writing it fails, the lock still holds.
   const std::string pid = std::to_string(::getpid()) + "\n";
-  if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {
-    // The pid is only for messages; the lock itself holds.
-  }
+  const bool named = ::ftruncate(fd_, 0) == 0 && ::pwrite(fd_, pid.data(), pid.size(), 0) >= 0;
+  static_cast<void>(named);
 }
 
 DirectoryLock::~DirectoryLock() {

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -12,8 +13,10 @@
 namespace cbbg::store {
 
 void write_atomically(const std::filesystem::path& path, const std::string& text) {
+  // Unique per process and call, so threads writing at once never share a temporary file.
+  static std::atomic<int> counter{0};
   std::filesystem::path temporary = path;
-  temporary += ".tmp-" + std::to_string(::getpid());
+  temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     out << text;

@@ -8,7 +8,8 @@
 namespace cbbg::store {
 
 // Writes `text` to `path` through a temporary file beside it and a rename, so `path` is
-// never half-written. Throws std::runtime_error naming `path` with the system's reason.
+// never half-written; safe from several threads. Throws std::runtime_error naming `path` with
+// the system's reason.
 void write_atomically(const std::filesystem::path& path, const std::string& text);
 
 // 'path', quoted as messages name paths.

@@ -1,9 +1,9 @@
 #include "store/task_store.h"
 #include "store/fault_point.h"
+#include "store/files.h"
 #include "store/weights_file.h"
 
 #include <charconv>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -158,10 +158,7 @@ std::filesystem::path TaskStore::steps_path(std::size_t task) const {
 bool TaskStore::load(std::size_t task, SeedRun& run) const {
   const std::filesystem::path path = record_path(task);
   if (!std::filesystem::exists(path)) return false;
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  SeedRun loaded = parse_run(text.str(), path.string());
+  SeedRun loaded = parse_run(read_text(path), path.string());
   if (loaded.arm != run.arm || loaded.seed != run.seed) {
     throw std::runtime_error(path.string() + ": holds " + loaded.arm + " seed " +
                              std::to_string(loaded.seed) + ", expected " + run.arm + " seed " +
@@ -181,13 +178,7 @@ void TaskStore::save(std::size_t task, const SeedRun& run) const {
   fault_point("task:weights");
   if (run.weights) save_weights(weights_path(task), *run.weights);
   fault_point("task:record");
-  const std::filesystem::path temporary = record_path(task).string() + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << serialize_run(run);
-    if (!out) throw std::runtime_error("cannot write '" + temporary.string() + "'");
-  }
-  std::filesystem::rename(temporary, record_path(task));
+  write_atomically(record_path(task), serialize_run(run));
 }
 
 }  // namespace cbbg::store

@@ -1,6 +1,5 @@
 #include "store/weights_file.h"
 
-#include <atomic>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -10,9 +9,7 @@
 #include <string_view>
 #include <system_error>
 
-#include <unistd.h>
-
-#include "diagrams/params_from_config.h"
+#include "store/files.h"
 
 namespace cbbg::store {
 
@@ -355,28 +352,7 @@ void save_weights(const std::filesystem::path& path, const LearntWeights& weight
   check_savable(weights);
   const std::string text = format_weights(weights);
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  // Unique per process and call, so threads saving at once never share a temporary file.
-  static std::atomic<int> counter{0};
-  std::filesystem::path temporary = path;
-  temporary += ".partial-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("cannot write weights file '" + path.string() + "'");
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error("cannot write weights file '" + path.string() +
-                             "': " + error.message());
-  }
+  write_atomically(path, text);
 }
 
 LearntWeights load_weights(const std::filesystem::path& path) {
