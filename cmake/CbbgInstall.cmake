@@ -1,7 +1,8 @@
 # Install rules and a CMake package: find_package(cbbg) gives every library as a target
 # (cbbg::framework, plant, blocks, config, diagrams, experiments, store), the `cbbg`
 # command and its plotting script. Headers install under include/cbbg/ with their tree
-# (framework/..., diagrams/...), as the sources include them.
+# (framework/..., diagrams/...), as the sources include them; plant/simbody/ is the plant
+# library's own (its headers include Simbody) and stays out.
 include(CMakePackageConfigHelpers)
 
 set(CBBG_LIBRARIES cbbg_framework cbbg_plant cbbg_blocks cbbg_config cbbg_diagrams
@@ -11,7 +12,7 @@ install(TARGETS ${CBBG_LIBRARIES} EXPORT cbbgTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(folder framework plant blocks config diagrams experiments store)
   install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/${folder}
-          FILES_MATCHING PATTERN "*.h")
+          FILES_MATCHING PATTERN "*.h" PATTERN "simbody" EXCLUDE)
 endforeach()
 install(TARGETS cbbg RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The command finds its plotting script in share/cbbg/ beside its bin/.

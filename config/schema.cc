@@ -93,6 +93,10 @@ std::vector<KeySpec> make_schema() {
       text("plant.simbody_integrator", "merson",
            "merson (Runge-Kutta-Merson, the reference) | rk3 | verlet: the Simbody plant's",
            {"merson", "rk3", "verlet"}),
+      text("plant.simbody_model", "rolling",
+           "rolling (no-slip built into the base's mobilizer) | constrained (three no-slip "
+           "constraints, the reference): the Simbody plant's formulation",
+           {"rolling", "constrained"}),
       number("trial.theta0", 0.1744, "initial pitch of every trial, rad"),
       positive("trial.duration", 20.0, "a trial that lasts this long succeeds, s"),
       number("trial.failure_angle", 0.5236, "|theta_b| beyond this fails the trial, rad", 0.0, true,

@@ -52,6 +52,9 @@ plant::RobotParams robot_params(const config::Config& c) {
   p.simbody_integrator = integrator == "rk3"      ? plant::SimbodyIntegrator::kRungeKutta3
                          : integrator == "verlet" ? plant::SimbodyIntegrator::kVerlet
                                                   : plant::SimbodyIntegrator::kMerson;
+  p.simbody_model = c.text("plant.simbody_model") == "constrained"
+                        ? plant::SimbodyModel::kNoSlipConstraints
+                        : plant::SimbodyModel::kRollingBase;
   validated(p);
   if (c.text("plant.kind") == "simbody") {
     // A multibody model also needs inertias a rigid body can have.

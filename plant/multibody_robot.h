@@ -2,11 +2,12 @@
 // The robot as a Simbody multibody system (the reference model), with Simbody kept out of
 // this header so that code including it needs no special compile flags.
 //
-// Model: a massless, level base frame moves on the ground in x, y and yaw (a planar joint at
-// axle height R); the body pitches on a revolute joint about the axle; each wheel turns on a
-// revolute joint about the axle, its angle measured from the base (absolute, not relative to
-// the body). Rolling without slip is three NoSlip1D constraints: no forward slip at each
-// wheel's contact point and no sideways slip of the base at the ground. Gravity; viscous
+// Model (plant/simbody/robot_model.h): a level base moves on the ground in x, y and yaw at
+// axle height R; the body pitches on a revolute joint about the axle; each wheel's angle is
+// measured from the base (absolute, not relative to the body). Rolling without slip (no
+// forward slip at either wheel, no sideways slip) is built into the base's mobilizer
+// (plant.simbody_model = rolling, the default) or held by three NoSlip1D constraints on
+// wheels that turn on their own joints (constrained, the reference). Gravity; viscous
 // friction mu_l phi' (wheel-ground) and mu_w (phi' - theta_b') (axle, between wheel and
 // body); motor torques +tau on a wheel and -tau on the body.
 //
@@ -24,6 +25,10 @@
 
 namespace cbbg::plant {
 
+namespace simbody {
+class RobotModel;
+}  // namespace simbody
+
 class MultibodyRobot {
  public:
   // Validates `params` with RobotParams::validate_rigid_bodies.
@@ -36,14 +41,13 @@ class MultibodyRobot {
 
  private:
   friend class MultibodyRobotRun;
-  struct Model;
 
   RobotParams params_;
-  std::unique_ptr<Model> model_;
+  std::unique_ptr<const simbody::RobotModel> model_;
 };
 
-// One trajectory of a MultibodyRobot: a Simbody state advanced by an error-controlled
-// Runge–Kutta–Merson integrator at params().accuracy, with the motor torques held between
+// One trajectory of a MultibodyRobot: a Simbody state advanced by the error-controlled
+// integrator params().simbody_integrator at params().accuracy, with the motor torques held between
 // calls (no interpolation: every advance_to lands exactly on its end time).
 class MultibodyRobotRun {
  public:

@@ -16,6 +16,12 @@ enum class SimbodyIntegrator {
   kVerlet,       // "verlet": Simbody's error-controlled velocity Verlet
 };
 
+// Config key plant.simbody_model: how the Simbody plant enforces rolling without slip.
+enum class SimbodyModel {
+  kRollingBase,        // "rolling": in the base's mobilizer, no constraint (the fast one)
+  kNoSlipConstraints,  // "constrained": wheels on their own joints, three NoSlip1D constraints
+};
+
 struct RobotParams {
   double wheel_mass = 1.0;             // m_l = m_r, kg
   double body_mass = 10.0;             // M, kg
@@ -31,6 +37,7 @@ struct RobotParams {
   double torque_limit = 5.0;           // |tau_l|, |tau_r| saturate here, N m
   double accuracy = 1.0e-6;            // relative and absolute integrator tolerance
   SimbodyIntegrator simbody_integrator = SimbodyIntegrator::kMerson;
+  SimbodyModel simbody_model = SimbodyModel::kRollingBase;
 
   // Two inertias the paper's equations leave out, which a rigid body cannot do without. The
   // paper's equations take the body's yaw inertia as J_z at every pitch, which needs a roll inertia

@@ -85,7 +85,7 @@ TEST(Config, RejectsWrongTypesNamingKeyAndAllowedValues) {
             "wheel_radius, track_width, com_height, wheel_inertia, body_pitch_inertia, "
             "body_yaw_inertia, body_roll_inertia, wheel_diametral_inertia, gravity, "
             "wheel_ground_friction, axle_friction, torque_limit, "
-            "accuracy, simbody_integrator); got '3'");
+            "accuracy, simbody_integrator, simbody_model); got '3'");
   EXPECT_EQ(error_of_yaml("- 1\n- 2\n"), "my.yaml: a config is a map of keys; got [1, 2]");
 }
 

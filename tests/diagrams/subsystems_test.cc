@@ -193,6 +193,17 @@ TEST(ParamsFromConfig, PlantSimbodyIntegratorChoosesTheIntegrator) {
   EXPECT_THROW(config.set("plant.simbody_integrator=euler"), config::ConfigError);
 }
 
+TEST(ParamsFromConfig, PlantSimbodyModelChoosesTheFormulation) {
+  config::Config config = analytic_config();
+  EXPECT_EQ(robot_params(config).simbody_model, plant::SimbodyModel::kRollingBase);
+  config.set("plant.simbody_model=constrained");
+  EXPECT_EQ(robot_params(config).simbody_model, plant::SimbodyModel::kNoSlipConstraints);
+  EXPECT_THAT([&] { config.set("plant.simbody_model=lagrange"); },
+              ::testing::ThrowsMessage<config::ConfigError>(
+                  "--set plant.simbody_model=lagrange: plant.simbody_model must be one of "
+                  "rolling, constrained; got 'lagrange'"));
+}
+
 TEST(ClosedLoop, IsDrawnWithTheCerebellumAndTheBasalGangliaAsClusters) {
   const ClosedLoop loop = build_preset("cbbg", analytic_config());
   const std::string dot = to_dot(*loop.diagram, {.hidden_blocks = {"cbbg/telemetry"}});
