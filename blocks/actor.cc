@@ -58,7 +58,7 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
   previous_actions_ = declare_discrete_state("previous_actions", Vector::Zero(kPreviousActionsSize),
                                              StateLifetime::kPerTrial);
   has_previous_ = declare_discrete_state("has_previous", Vector::Zero(1), StateLifetime::kPerTrial);
-  declare_output_port(
+  const OutputPort& action_port = declare_output_port(
       "action", 1,
       [this, &features](const BlockContext& context, VectorRef action) {
         action[0] = weights_.of(context.discrete_state()).dot(context.input(features));
@@ -66,8 +66,8 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
       {&features}, "a_A(t) = theta . phi(s_t)");
   declare_periodic_update(
       period, 0.0,
-      [this, &features, &td_error, &supervisor, &exploration, &omega](BlockContext& context,
-                                                                      VectorRef next) {
+      [this, &features, &td_error, &supervisor, &exploration, &omega, &action_port](
+          BlockContext& context, VectorRef next) {
         const auto state = context.discrete_state();
         const auto theta = weights_.of(state);
         const auto phi = context.input(features);
@@ -89,7 +89,7 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
         auto stored = previous_actions_.of(next);
         stored[kSupervisorAction] = context.input(supervisor)[0];
         stored[kExplorationAction] = context.input(exploration)[0];
-        stored[kActorAction] = theta.dot(phi);  // the a_A output at t, before learning
+        stored[kActorAction] = context.output(action_port)[0];  // a_A at t, before learning
         stored[kOmega] = context.input(omega)[0];
         has_previous_.of(next)[0] = 1.0;
         return EventStatus::succeeded();

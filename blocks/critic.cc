@@ -36,22 +36,23 @@ Critic::Critic(std::string name, int num_features, const CriticParams& params, d
         value[0] = weights_.of(context.discrete_state()).dot(context.input(*features_));
       },
       {features_}, "V(s_t) = w . phi(s_t)");
-  declare_output_port(
+  const OutputPort& td_error_port = declare_output_port(
       "td_error", 1,
       [this](const BlockContext& context, VectorRef delta) { delta[0] = td_error(context); },
       {features_, reward_, failed_}, "delta_{t-1}");
-  declare_periodic_update(period, 0.0, [this](BlockContext& context, VectorRef next) {
-    const auto state = context.discrete_state();
-    if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
-      const double delta = td_error(context);
-      trace_.of(next) =
-          params_.gamma * params_.lambda * trace_.of(state) + previous_features_.of(state);
-      weights_.of(next) = weights_.of(state) + params_.beta * delta * trace_.of(next);
-    }
-    previous_features_.of(next) = context.input(*features_);
-    has_previous_.of(next)[0] = 1.0;
-    return EventStatus::succeeded();
-  });
+  declare_periodic_update(
+      period, 0.0, [this, &td_error_port](BlockContext& context, VectorRef next) {
+        const auto state = context.discrete_state();
+        if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
+          const double delta = context.output(td_error_port)[0];  // computed at this instant
+          trace_.of(next) =
+              params_.gamma * params_.lambda * trace_.of(state) + previous_features_.of(state);
+          weights_.of(next) = weights_.of(state) + params_.beta * delta * trace_.of(next);
+        }
+        previous_features_.of(next) = context.input(*features_);
+        has_previous_.of(next)[0] = 1.0;
+        return EventStatus::succeeded();
+      });
 }
 
 double Critic::td_error(const BlockContext& context) const {

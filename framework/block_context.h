@@ -22,6 +22,15 @@ class BlockContext {
   }
   ConstVectorView input(const InputPort& port) const { return input(port.index()); }
 
+  // In an update: this block's own output `port` as evaluated at this instant (every output
+  // is evaluated before any update runs, simulator.h step 2), so an update can use a value
+  // its outputs already computed instead of computing it again.
+  ConstVectorView output(const OutputPort& port) const {
+    const auto i = static_cast<size_t>(port.index());
+    return ConstVectorView(context_->signals().data() + layout_->output_offsets[i],
+                           layout_->output_sizes[i]);
+  }
+
   ConstVectorView discrete_state() const {
     return ConstVectorView(context_->discrete_states().data() + layout_->discrete_offset,
                            layout_->block->initial_discrete_state().size());

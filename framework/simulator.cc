@@ -16,6 +16,10 @@ namespace {
 constexpr double kSimultaneous = 1e-9;  // relative tolerance for simultaneous events
 constexpr double kFirstStep = 1e-3;     // the integrator's first trial step, s
 
+// True when no element is NaN or infinite: x * 0 is 0 for a finite x and NaN otherwise,
+// and the sum is a loop the compiler vectorises, unlike a test per element.
+bool all_finite(const Vector& x) { return (x.array() * 0.0).sum() == 0.0; }
+
 bool same_instant(double a, double b) {
   return std::abs(a - b) <= kSimultaneous * std::max(1.0, std::abs(b));
 }
@@ -73,9 +77,8 @@ SignalLog& Simulator::add_log(const OutputPort& port, double period, double offs
   log_offsets_.push_back(signal_offset);
   if (initialized_) {
     // Joins a running schedule: only the new log's samples are added, nothing fires again.
-    events_.push_back({-1, static_cast<int>(logs_.size()) - 1, period, offset,
-                       first_event_index(period, offset, context_->time())});
-    due_updates_.reserve(events_.size());
+    group_of(period, offset, first_event_index(period, offset, context_->time()))
+        .logs.push_back(static_cast<int>(logs_.size()) - 1);
   }
   return log;
 }
@@ -92,35 +95,38 @@ void Simulator::check_root_inputs() const {
   }
 }
 
+Simulator::EventGroup& Simulator::group_of(double period, double offset, long long next) {
+  for (EventGroup& group : groups_) {
+    if (group.period == period && group.offset == offset && group.next == next) return group;
+  }
+  return groups_.emplace_back(EventGroup{period, offset, next, {}, {}});
+}
+
 void Simulator::schedule_events() {
-  events_.clear();
+  groups_.clear();
   const double now = context_->time();
-  auto first_index = [now](double period, double offset) {
-    return first_event_index(period, offset, now);
-  };
   for (const auto& leaf : diagram_->leaves()) {
     const auto& updates = leaf.block->periodic_updates();
-    for (size_t u = 0; u < updates.size(); ++u) {
-      events_.push_back({leaf.index, static_cast<int>(u), updates[u].period, updates[u].offset,
-                         first_index(updates[u].period, updates[u].offset)});
+    for (const auto& update : updates) {
+      group_of(update.period, update.offset, first_event_index(update.period, update.offset, now))
+          .updates.emplace_back(leaf.index, &update.update);
     }
   }
   for (size_t l = 0; l < logs_.size(); ++l) {
-    events_.push_back({-1, static_cast<int>(l), logs_[l].period(), logs_[l].offset(),
-                       first_index(logs_[l].period(), logs_[l].offset())});
+    const double period = logs_[l].period();
+    const double offset = logs_[l].offset();
+    group_of(period, offset, first_event_index(period, offset, now))
+        .logs.push_back(static_cast<int>(l));
   }
-  due_updates_.clear();
-  due_updates_.reserve(events_.size());
 }
 
 double Simulator::next_event_time() const {
   double next = std::numeric_limits<double>::infinity();
-  for (const auto& event : events_) next = std::min(next, event.next_time());
+  for (const auto& group : groups_) next = std::min(next, group.next_time());
   return next;
 }
 
-SimulationStatus Simulator::run_updates(
-    const std::vector<std::pair<int, const UpdateFunction*>>& updates) {
+SimulationStatus Simulator::run_updates(const Updates& updates) {
   Context& context = *context_;
   context.next_discrete_states() = context.discrete_states();
   SimulationStatus status;
@@ -141,8 +147,10 @@ SimulationStatus Simulator::run_updates(
   return status;
 }
 
-void Simulator::check_discrete_state_finite(
-    const std::vector<std::pair<int, const UpdateFunction*>>& updates) const {
+void Simulator::check_discrete_state_finite(const Updates& updates) const {
+  // One vectorised pass over the whole state on every instant; the search for the block
+  // only when it fails.
+  if (all_finite(context_->discrete_states())) return;
   for (const auto& [leaf_index, update] : updates) {
     const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(leaf_index)];
     const auto size = leaf.block->initial_discrete_state().size();
@@ -182,21 +190,28 @@ SimulationStatus Simulator::handle_events(double time) {
   ++num_event_instants_;
   Context& context = *context_;
   diagram_->evaluate_outputs(context);
-  due_updates_.clear();
-  for (auto& event : events_) {
-    if (!same_instant(event.next_time(), time)) continue;
-    ++event.next;
-    if (event.leaf < 0) {
-      SignalLog& log = logs_[static_cast<size_t>(event.update)];
-      log.record(time, context.signals().data() + log_offsets_[static_cast<size_t>(event.update)]);
-    } else {
-      const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(event.leaf)];
-      due_updates_.emplace_back(
-          event.leaf, &leaf.block->periodic_updates()[static_cast<size_t>(event.update)].update);
+  const Updates* due = nullptr;  // one group's list, or due_updates_ when groups coincide
+  for (EventGroup& group : groups_) {
+    if (!same_instant(group.next_time(), time)) continue;
+    ++group.next;
+    for (const int l : group.logs) {
+      logs_[static_cast<size_t>(l)].record(
+          time, context.signals().data() + log_offsets_[static_cast<size_t>(l)]);
     }
+    if (group.updates.empty()) continue;
+    if (due == nullptr) {
+      due = &group.updates;
+      continue;
+    }
+    if (due != &due_updates_) due_updates_.assign(due->begin(), due->end());
+    due_updates_.insert(due_updates_.end(), group.updates.begin(), group.updates.end());
+    due = &due_updates_;
   }
-  if (due_updates_.empty()) return SimulationStatus{};
-  return run_updates(due_updates_);
+  if (due == nullptr) return SimulationStatus{};
+  // Coinciding groups run in leaf order, each leaf's updates in declaration order (an
+  // update's function lives in its leaf's array, so the pointers order them).
+  if (due == &due_updates_) std::sort(due_updates_.begin(), due_updates_.end());
+  return run_updates(*due);
 }
 
 SimulationStatus Simulator::advance_to(double end_time) {

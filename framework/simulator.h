@@ -86,12 +86,15 @@ class Simulator {
   long long num_event_instants() const { return num_event_instants_; }
 
  private:
-  struct ScheduledEvent {
-    int leaf;    // the block whose update fires, or -1 for a log
-    int update;  // index in its periodic updates, or the log's index
+  using Updates = std::vector<std::pair<int, const UpdateFunction*>>;  // (leaf, update)
+  // The events of one period, offset and next instant: they always fire together, so the
+  // updates and logs due at an instant are listed once, at initialize(), not every tick.
+  struct EventGroup {
     double period;
     double offset;
-    long long next;  // fires next at offset + next * period
+    long long next;   // fires next at offset + next * period
+    Updates updates;  // in leaf order, each leaf's in declaration order
+    std::vector<int> logs;
     double next_time() const { return offset + static_cast<double>(next) * period; }
   };
   struct Integrator;
@@ -103,17 +106,18 @@ class Simulator {
   void integrate_to(double end_time);
   void integrate_ode(double start_time, double end_time);
   void check_continuous_state_finite() const;
-  void check_discrete_state_finite(
-      const std::vector<std::pair<int, const UpdateFunction*>>& updates) const;
-  SimulationStatus run_updates(const std::vector<std::pair<int, const UpdateFunction*>>& updates);
+  // The group of (period, offset, next), added at the end if there is none.
+  EventGroup& group_of(double period, double offset, long long next);
+  void check_discrete_state_finite(const Updates& updates) const;
+  SimulationStatus run_updates(const Updates& updates);
 
   const Diagram* diagram_;
   std::unique_ptr<Context> context_;
   SimulatorOptions options_;
   std::deque<SignalLog> logs_;
   std::vector<int> log_offsets_;  // each log's port in the signals, resolved once
-  std::vector<ScheduledEvent> events_;
-  std::vector<std::pair<int, const UpdateFunction*>> due_updates_;  // reused every instant
+  std::vector<EventGroup> groups_;
+  Updates due_updates_;  // initialization updates, or those of groups due together
   std::unique_ptr<Integrator> integrator_;
   bool initialized_ = false;
   bool terminated_ = false;

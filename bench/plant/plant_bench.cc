@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <ctime>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -198,12 +199,22 @@ void BM_SimbodyNewContextAndFirstStep(benchmark::State& state) {
   }
 }
 
-// The integrators plant.simbody_integrator offers, each at the default accuracy: CPU per
-// step, heap allocations per step, and the pitch error after 3 s of PD control from the
-// trial pitch against the reference (Runge-Kutta-Merson at accuracy 1e-10).
-constexpr SimbodyIntegrator kIntegrators[] = {
-    SimbodyIntegrator::kMerson, SimbodyIntegrator::kRungeKutta3, SimbodyIntegrator::kVerlet};
-constexpr const char* kIntegratorNames[] = {"merson", "rk3", "verlet"};
+// The Simbody configurations offered (plant.simbody_model x plant.simbody_integrator), each
+// at the default accuracy: CPU per step, heap allocations per step, and the pitch error
+// after 3 s of PD control from the trial pitch against the reference (the constrained
+// model under Runge-Kutta-Merson at accuracy 1e-10). The baseline is the configuration
+// before the rolling model: constrained, merson.
+struct SimbodyConfiguration {
+  const char* name;
+  SimbodyModel model;
+  SimbodyIntegrator integrator;
+};
+constexpr SimbodyConfiguration kConfigurations[] = {
+    {"constrained_merson", SimbodyModel::kNoSlipConstraints, SimbodyIntegrator::kMerson},
+    {"rolling_merson", SimbodyModel::kRollingBase, SimbodyIntegrator::kMerson},
+    {"rolling_rk3", SimbodyModel::kRollingBase, SimbodyIntegrator::kRungeKutta3},
+    {"rolling_verlet", SimbodyModel::kRollingBase, SimbodyIntegrator::kVerlet},
+};
 
 double pitch_after_3s(const RobotParams& params) {
   DiagramLoop<SimbodyPlant> loop(params);
@@ -211,21 +222,24 @@ double pitch_after_3s(const RobotParams& params) {
   return loop.pitch();
 }
 
-// All three in alternating slices of 100 steps within one benchmark, so that they see the
-// same machine load (single runs here vary by 20 % and more); counters per integrator.
-void BM_SimbodyIntegrators(benchmark::State& state) {
-  constexpr int kCount = 3;
+// All configurations in alternating slices of 100 steps within one benchmark, so that they
+// see the same machine load (single runs here vary by 20 % and more); counters per
+// configuration.
+void BM_SimbodyConfigurations(benchmark::State& state) {
+  constexpr int kCount = static_cast<int>(std::size(kConfigurations));
   constexpr int kSlice = 100;
   RobotParams reference;
   reference.accuracy = 1e-10;
+  reference.simbody_model = SimbodyModel::kNoSlipConstraints;
   const double reference_pitch = pitch_after_3s(reference);
   std::vector<std::unique_ptr<DiagramLoop<SimbodyPlant>>> loops;
   double seconds[kCount] = {};
   long long allocations[kCount] = {};
-  for (int k = 0; k < kCount; ++k) {
+  for (const SimbodyConfiguration& configuration : kConfigurations) {
     RobotParams params;
-    params.simbody_integrator = kIntegrators[k];
-    const std::string name = kIntegratorNames[k];
+    params.simbody_model = configuration.model;
+    params.simbody_integrator = configuration.integrator;
+    const std::string name = configuration.name;
     state.counters[name + "_pitch_error_rad"] = std::abs(pitch_after_3s(params) - reference_pitch);
     loops.push_back(std::make_unique<DiagramLoop<SimbodyPlant>>(params));
     loops.back()->step();  // past the first step, which sets the integrator up
@@ -243,15 +257,15 @@ void BM_SimbodyIntegrators(benchmark::State& state) {
   }
   const double steps = static_cast<double>(slices * kSlice);
   for (int k = 0; k < kCount; ++k) {
-    const std::string name = kIntegratorNames[k];
+    const std::string name = kConfigurations[k].name;
     state.counters[name + "_us_per_step"] = 1e6 * seconds[k] / steps;
-    state.counters[name + "_over_merson"] = seconds[k] / seconds[0];
+    state.counters[name + "_over_baseline"] = seconds[k] / seconds[0];
     state.counters[name + "_allocs_per_step"] = static_cast<double>(allocations[k]) / steps;
   }
 }
 
 BENCHMARK(BM_AnalyticPlantStep)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_SimbodyIntegrators)->Unit(benchmark::kMillisecond)->MinTime(5.0);
+BENCHMARK(BM_SimbodyConfigurations)->Unit(benchmark::kMillisecond)->MinTime(5.0);
 BENCHMARK(BM_SimbodyPlantStep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SimbodyPlainLoop)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SimbodyDiagramOverPlainLoop)->Unit(benchmark::kMillisecond)->MinTime(5.0);
