@@ -1,10 +1,89 @@
 #!/usr/bin/env bash
-# Builds and runs every benchmark; each prints its ratios to a baseline measured in the same
-# run. Arguments go to every benchmark (e.g. --benchmark_min_time=2).
+# Builds and runs the benchmarks, then prints the table of ratios that the README's
+# performance section shows. Every ratio is measured in this one run, against a baseline run
+# in it too.
+#
+#   scripts/bench.sh                      # this tree: every ratio it can measure alone
+#   scripts/bench.sh --against <commit>   # also builds <commit> (a git archive of it, in
+#                                         # build/bench-baseline/) and compares the framework's
+#                                         # fixed tick cost and the main job with it
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$root/scripts/build.sh"
-for bench in framework/bench_framework plant/bench_plant diagrams/bench_diagrams; do
-  echo "== $bench"
-  "$root/build/bench/$bench" "$@"
+against=""
+if [[ "${1:-}" == "--against" ]]; then
+  [[ $# -ge 2 ]] || { echo "bench.sh: --against needs a commit" >&2; exit 2; }
+  against="$(git -C "$root" rev-parse --verify --quiet "$2^{commit}")" ||
+    { echo "bench.sh: --against: '$2' is not a commit of this repository" >&2; exit 2; }
+fi
+
+"$root/scripts/build.sh" >/dev/null
+out="$(mktemp -d "${TMPDIR:-/tmp}/cbbg-bench.XXXXXX")"
+trap 'rm -rf "$out"' EXIT
+
+# The baseline tree: extracted and built once per commit, in a folder this script owns.
+baseline=""
+if [[ -n "$against" ]]; then
+  baseline="$root/build/bench-baseline"
+  if [[ -e "$baseline" && ! -f "$baseline/.cbbg-bench-baseline" ]]; then
+    echo "bench.sh: $baseline exists and was not made by bench.sh; move it away" >&2
+    exit 1
+  fi
+  if [[ "$(cat "$baseline/.cbbg-bench-baseline" 2>/dev/null)" != "$against" ]]; then
+    rm -rf "$baseline/src"  # only ever a git archive this script extracted
+    mkdir -p "$baseline/src"
+    echo "$against" > "$baseline/.cbbg-bench-baseline"
+    git -C "$root" archive "$against" | tar -x -C "$baseline/src"
+  fi
+  echo "building the baseline $against in $baseline ..." >&2
+  cmake -S "$baseline/src" -B "$baseline/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$baseline/build" --parallel "$(nproc)" \
+    --target bench_framework bench_diagrams cbbg >/dev/null
+fi
+
+bench() {  # bench <name> <binary> <args...>: the binary's results as JSON in $out/<name>.json
+  local name="$1" binary="$2"
+  shift 2
+  echo "== $name" >&2
+  "$binary" --benchmark_out="$out/$name.json" --benchmark_out_format=json "$@" >&2
+}
+# wall <name> <command...>: the command's wall time in seconds, in $out/times
+wall() {
+  local name="$1" start end
+  shift
+  echo "== $name: $*" >&2
+  start="$(date +%s.%N)"
+  "$@" >/dev/null
+  end="$(date +%s.%N)"
+  echo "$name $start $end" >> "$out/times"
+}
+
+b="$root/build/bench"
+bench framework "$b/framework/bench_framework" --benchmark_repetitions=5 \
+  --benchmark_filter='/1$'
+bench diagrams "$b/diagrams/bench_diagrams" --benchmark_repetitions=5
+bench plant "$b/plant/bench_plant" --benchmark_repetitions=3 \
+  --benchmark_filter='Configurations|DiagramOverPlainLoop|AnalyticPlantStep'
+if [[ -n "$baseline" ]]; then
+  bench baseline_framework "$baseline/build/bench/framework/bench_framework" \
+    --benchmark_repetitions=5 --benchmark_filter='/1$'
+  bench baseline_diagrams "$baseline/build/bench/diagrams/bench_diagrams" \
+    --benchmark_repetitions=5
+fi
+
+# The main job (exp1 on Simbody, 20 seeds, the defaults) on 1 and 2 threads, and its
+# baseline: the commit given, or else this tree with the constrained Simbody model.
+cbbg="$root/build/apps/cbbg"
+wall jobs1 "$cbbg" run --jobs 1 --no-figures --out "$out/exp1-jobs1"
+wall jobs2 "$cbbg" run --jobs 2 --no-figures --out "$out/exp1-jobs2"
+if [[ -n "$baseline" ]]; then
+  wall baseline_main "$baseline/build/apps/cbbg" run --jobs 2 --no-figures --out "$out/exp1-base"
+else
+  wall baseline_main "$cbbg" run --jobs 2 --no-figures --set plant.simbody_model=constrained \
+    --out "$out/exp1-base"
+fi
+identical=yes
+for file in trials.csv evaluation.csv steps.csv summary.json; do
+  cmp -s "$out/exp1-jobs1/$file" "$out/exp1-jobs2/$file" || identical=no
 done
+
+python3 "$root/scripts/bench_table.py" "$out" "$identical" "${against:-constrained}"

@@ -24,14 +24,24 @@ RollingBaseMobilizer::RollingBaseMobilizer(SimTK::SimbodyMatterSubsystem& matter
   }
 }
 
+// The state's layout is fixed once the model stage is realised; the first call looks up
+// where this mobilizer's q and u are, the later ones read them directly.
+void RollingBaseMobilizer::locate(const SimTK::State& state) const {
+  if (first_q_.isValid()) return;
+  const SimTK::MobilizedBody& base = matter_->getMobilizedBody(index_);
+  first_q_ = base.getFirstQIndex(state);
+  first_u_ = base.getFirstUIndex(state);
+}
+
 double RollingBaseMobilizer::yaw(const SimTK::State& state) const {
-  return matter_->getMobilizedBody(index_).getOneQ(state, SimTK::MobilizerQIndex(kYawQ));
+  locate(state);
+  return state.getQ()[first_q_ + kYawQ];
 }
 
 double RollingBaseMobilizer::yaw_rate(const SimTK::State& state) const {
-  const SimTK::MobilizedBody& base = matter_->getMobilizedBody(index_);
-  return turn_[0] * base.getOneU(state, SimTK::MobilizerUIndex(0)) +
-         turn_[1] * base.getOneU(state, SimTK::MobilizerUIndex(1));
+  locate(state);
+  const SimTK::Vector& u = state.getU();
+  return turn_[0] * u[first_u_] + turn_[1] * u[first_u_ + 1];
 }
 
 SimTK::Transform RollingBaseMobilizer::calcMobilizerTransformFromQ(const SimTK::State&, int,

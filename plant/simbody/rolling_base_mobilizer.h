@@ -8,8 +8,8 @@
 //   v(u) = R (phi_l' + phi_r') / 2,             phi' = u,
 // so qdot = N(q) u with N 5 x 2: the base cannot slip sideways (its velocity is along its
 // heading) nor forwards (its speed and yaw rate are the wheels'). The wheel angles ride along
-// as coordinates that move no body; the wheels themselves are welded to the base, their spin
-// entering as the equivalent inertia of RollingModel.
+// as coordinates that move no body; the base body carries the wheels, their spin entering
+// as the equivalent inertia of RollingModel.
 
 #include <Simbody.h>
 
@@ -50,11 +50,14 @@ class RollingBaseMobilizer final : public SimTK::MobilizedBody::Custom::Implemen
                          SimTK::Real* u) const override;
 
  private:
+  void locate(const SimTK::State& state) const;
   double yaw(const SimTK::State& state) const;
   double yaw_rate(const SimTK::State& state) const;
 
   const SimTK::SimbodyMatterSubsystem* matter_;
   SimTK::MobilizedBodyIndex index_;
+  mutable SimTK::QIndex first_q_;  // where its q and u are in the state, once looked up
+  mutable SimTK::UIndex first_u_;
   // Per unit rate of wheel j (0 left, 1 right): the base's forward speed and yaw rate.
   double speed_[kU];
   double turn_[kU];

@@ -4,15 +4,15 @@
 // constrained forward dynamics (G M^-1 G^T, solved at every stage) is most of that model's
 // cost.
 //
-// The wheels are welded to the base, which carries their mass, their inertia about a
-// diameter and, as an equivalent, their spin. A wheel is axisymmetric, so its spin changes
-// no mass distribution: its only part in the dynamics is the kinetic energy J_w phi'^2 / 2,
+// The base body is the two wheels: their mass, their inertia about a diameter and, as an
+// equivalent, their spin. A wheel is axisymmetric, so its spin changes no mass
+// distribution: its only part in the dynamics is the kinetic energy J_w phi'^2 / 2,
 // with phi' = (v -+ psi' d / 2) / R, and its gyroscopic torque, which is about the heading
 // (a roll torque) and is taken by the level base. Summed over both wheels,
 //   J_w (phi_l'^2 + phi_r'^2) / 2 = (2 J_w / R^2) v^2 / 2 + (J_w d^2 / (2 R^2)) psi'^2 / 2,
 // which is the kinetic energy of a mass 2 J_w / R^2 at the base's origin with a yaw inertia
-// J_w d^2 / (2 R^2): the base body is that. Forces on a wheel's spin act on its wheel rate,
-// the base's generalized speed.
+// J_w d^2 / (2 R^2), which the base body adds to the wheels' own. Forces on a wheel's spin
+// act on its wheel rate, the base's generalized speed.
 
 #include <cmath>
 #include <stdexcept>
@@ -69,14 +69,19 @@ class WheelFriction final : public SimTK::Force::Custom::Implementation {
   double axle_;
 };
 
-// The wheels' spin as the base's mass and yaw inertia (see the top of this file). Its roll
-// and pitch inertias, which a level base never uses, are set equal to the yaw inertia so
-// that the inertia is a rigid body's.
-SimTK::Body::Rigid spin_equivalent(const RobotParams& p) {
+// The base body: both wheels, at -+d/2 on the axle, with their spin as its equivalent mass
+// and yaw inertia (see the top of this file). The base never rolls or pitches, so only its
+// mass and its yaw inertia act; its roll and pitch inertias are set equal to the yaw
+// inertia, which makes the inertia a rigid body's.
+SimTK::Body::Rigid wheels_on_base(const RobotParams& p) {
   const double r2 = p.wheel_radius * p.wheel_radius;
-  const double yaw = p.wheel_inertia * p.track_width * p.track_width / (2.0 * r2);
-  return SimTK::Body::Rigid(
-      SimTK::MassProperties(2.0 * p.wheel_inertia / r2, Vec3(0), SimTK::Inertia(yaw, yaw, yaw)));
+  const double half_track = p.track_width / 2.0;
+  const double wheels_yaw =
+      2.0 * (p.wheel_diametral_inertia + p.wheel_mass * half_track * half_track);
+  const double spin_yaw = p.wheel_inertia * p.track_width * p.track_width / (2.0 * r2);
+  const double yaw = wheels_yaw + spin_yaw;
+  const double mass = 2.0 * p.wheel_mass + 2.0 * p.wheel_inertia / r2;
+  return SimTK::Body::Rigid(SimTK::MassProperties(mass, Vec3(0), SimTK::Inertia(yaw, yaw, yaw)));
 }
 
 RollingBaseMobilizer* rolling_mobilizer(SimTK::SimbodyMatterSubsystem& matter,
@@ -90,13 +95,9 @@ class RollingModel final : public RobotModel {
       : RobotModel(p),
         mobilizer_(rolling_mobilizer(matter_, p)),
         base_(matter_.Ground(), mobilizer_, SimTK::Transform(Vec3(0, 0, p.wheel_radius)),
-              spin_equivalent(p), SimTK::Transform()),
+              wheels_on_base(p), SimTK::Transform()),
         body_(base_, axle_frame(Vec3(0)), body_on_axle(p), axle_frame(Vec3(0))) {
     mobilizer_->attach(base_.getMobilizedBodyIndex());
-    for (const double side : {1.0, -1.0}) {
-      MobilizedBody::Weld(base_, SimTK::Transform(Vec3(0, side * p.track_width / 2, 0)), wheel(p),
-                          SimTK::Transform());
-    }
     SimTK::Force::Custom(forces_,
                          new WheelFriction(base_, body_, p.wheel_ground_friction, p.axle_friction));
     finish_topology();
