@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "config/config.h"
+#include "config/sweep.h"
+
 namespace cbbg::app {
 
 struct RunOptions {
@@ -21,9 +24,14 @@ struct RunOptions {
   std::filesystem::path load_weights;           // non-empty: learning starts from these weights
   std::filesystem::path save_weights;           // non-empty: the one learning run's weights go here
   bool figures = true;
-  bool replace = false;  // a finished results directory at --out may be replaced
+  bool replace = false;              // a finished results directory at --out may be replaced
+  std::vector<std::string> grid;     // KEY=V1,V2,... axes of a sweep, in order
+  std::optional<std::string> shard;  // "K/N" as typed: run only that shard of the sweep
 };
 int run_command(const RunOptions& options);
+// cbbg run as a sweep (apps/sweep_command.cc): `base` and `sweep` resolved from `options`.
+int sweep_command(const RunOptions& options, const config::Config& base,
+                  const config::Sweep& sweep);
 
 struct GraphOptions {
   std::string diagram;  // empty: the config's first arm
@@ -36,6 +44,9 @@ struct GraphOptions {
 int graph_command(const GraphOptions& options);
 
 int plot_command(const std::filesystem::path& directory);
+// A sweep's work directory: merged into one results directory, or its tasks counted.
+int merge_command(const std::filesystem::path& target);
+int status_command(const std::filesystem::path& target);
 int list_command();
 
 }  // namespace cbbg::app

@@ -67,6 +67,21 @@ int main(int argc, char** argv) {
                       "start learning from a weights file (docs/weights-format.md)");
   run_app->add_option("--save-weights", run.save_weights,
                       "write the learnt weights (a run with one learning arm and one seed)");
+  run_app->add_option("--grid", run.grid,
+                      "sweep a key over values: --grid actor.alpha=0.1,0.2 (repeatable: the "
+                      "grid is their product)");
+  std::string shard;
+  auto* shard_option = run_app->add_option(
+      "--shard", shard, "run only shard K of N of the sweep's tasks (then: cbbg merge DIR)");
+
+  std::filesystem::path merge_directory;
+  CLI::App* merge_app =
+      app.add_subcommand("merge", "merge the shards of a sweep into one results directory");
+  merge_app->add_option("DIR", merge_directory, "the sweep's --out")->required();
+  std::filesystem::path status_directory;
+  CLI::App* status_app =
+      app.add_subcommand("status", "a sweep's tasks: done, missing, and failed shards");
+  status_app->add_option("DIR", status_directory, "the sweep's --out")->required();
 
   GraphOptions graph;
   CLI::App* graph_app = app.add_subcommand("graph", "draw a diagram (.dot, .svg or .png)");
@@ -123,6 +138,7 @@ int main(int argc, char** argv) {
   if (seeds_option->count() > 0) run.seeds = seeds;
   if (seed_option->count() > 0) run.seed = seed;
   if (resume_option->count() > 0) run.resume = resume;
+  if (shard_option->count() > 0) run.shard = shard;
   spdlog::set_level(spdlog::level::from_str(log_level));
   spdlog::set_pattern("[%H:%M:%S] %^%l%$ %v");
 
@@ -133,6 +149,8 @@ int main(int argc, char** argv) {
     if (graph_app->parsed()) return graph_command(graph);
     if (plot_app->parsed()) return plot_command(plot_directory);
     if (list_app->parsed()) return list_command();
+    if (merge_app->parsed()) return merge_command(merge_directory);
+    if (status_app->parsed()) return status_command(status_directory);
     return run_command(run);  // `cbbg` alone runs exp1 with the paper's defaults
   } catch (const std::exception& error) {
     return report_error(kMachineError, describe(error));

@@ -103,11 +103,11 @@ struct PreparedRun {
 void check_resume_alone(const RunOptions& options) {
   if (!options.config_file.empty() || !options.sets.empty() || options.experiment ||
       options.seeds || options.seed || !options.load_weights.empty() || options.replace ||
-      !options.figures) {
+      !options.figures || !options.grid.empty() || options.shard) {
     throw config::ConfigError(
         "--resume continues with the config, weights and options of the interrupted run; drop "
-        "--config, --set, --experiment, --seeds, --seed, --load-weights, --replace and "
-        "--no-figures");
+        "--config, --set, --experiment, --seeds, --seed, --load-weights, --replace, "
+        "--no-figures, --grid and --shard (a sweep continues by running its command again)");
   }
 }
 
@@ -180,6 +180,23 @@ void execute(const RunOptions& options, PreparedRun& run) {
 }  // namespace
 
 int run_command(const RunOptions& options) {
+  if (!options.resume) {
+    config::Sweep sweep;
+    config::Config base;
+    try {
+      if (!options.config_file.empty()) {
+        base = resolve(options);  // checks the file before its sweep: section is read
+        sweep.add_file(options.config_file);
+      }
+      for (const std::string& axis : options.grid) sweep.add_flag(axis);
+      if (!sweep.empty() || options.shard) {
+        if (options.config_file.empty()) base = resolve(options);
+        return sweep_command(options, base, sweep);
+      }
+    } catch (const config::ConfigError& error) {
+      return report_error(kUserError, error.what());
+    }
+  }
   PreparedRun run;
   try {
     run = prepare(options);

@@ -327,10 +327,14 @@ Config::Config() {
 }
 
 void Config::merge_yaml(const std::string& text, const std::string& source) {
-  const YAML::Node document = load_yaml(text, source);
+  YAML::Node document = load_yaml(text, source);
   if (!document.IsDefined() || document.IsNull()) return;  // an empty file changes nothing
   const Parser parser(source);
   if (!document.IsMap()) parser.fail("a config is a map of keys; got " + shown(document));
+  if (document["sweep"]) {  // a sweep's grid, which config::Sweep reads (config/sweep.h)
+    document = YAML::Clone(document);
+    document.remove("sweep");
+  }
   auto merged = values_;  // all or nothing
   parser.merge(document, "", merged);
   values_ = std::move(merged);

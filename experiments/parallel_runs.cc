@@ -75,6 +75,7 @@ ExperimentResults run_tasks(const config::Config& config, const std::vector<std:
   std::mutex failure_mutex;
   auto work = [&]() {
     for (std::size_t task = next++; task < results.runs.size(); task = next++) {
+      if (options.runs_task && !options.runs_task(task)) continue;
       try {
         SeedRun& run = results.runs[task];
         if (options.store == nullptr || !options.store->load(task, run)) {

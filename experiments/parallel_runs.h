@@ -36,6 +36,9 @@ struct ExperimentOptions {
   const TaskStorage* store = nullptr;
   // Where learning starts (cbbg run --load-weights); zero weights without.
   const LearntWeights* initial_weights = nullptr;
+  // When set, only the tasks (index: arm-major, as ExperimentResults::runs) it accepts are
+  // loaded or run, as a shard of a sweep does; the others stay empty in the results.
+  std::function<bool(std::size_t task)> runs_task{};
 };
 
 // One task's work: fills `run` (its arm and seed set), writing steps rows through

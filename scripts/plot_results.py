@@ -10,6 +10,9 @@ DIR/steps.csv. Writes, for exp1 and single-diagram runs:
 and for exp2:
   temperature_entropy.png   mean temperature and entropy per trial
   pitch_early_late.png      theta_b(t) of early against late trials of the first seed
+and for a sweep (a directory with sweep.csv, written by cbbg merge):
+  sweep_<key>.png      the headline figure (median and range over seeds) against each
+                       swept key, one line per arm and per value of the other keys
 
 The figures are drawn into a staging folder that replaces DIR/figures only when all of
 them are written. Exit status: 0 done, 2 a missing or malformed input file (one line on
@@ -755,7 +758,77 @@ def replace_folder(staging, final):
         shutil.rmtree(previous, ignore_errors=True)
 
 
+def read_sweep(path):
+    """sweep.csv: (the swept keys, the headline's name, its rows as dicts)."""
+    with open(path, newline="") as file:
+        reader = csv.DictReader(file)
+        header = reader.fieldnames or []
+        rows = list(reader)
+    if "arm" not in header or not header or header[0] != "point":
+        raise InputError(path, "is not a sweep.csv (its header starts point,<keys>,arm,...)")
+    keys = header[1:header.index("arm")]
+    medians = [name for name in header if name.endswith("_median")]
+    if not medians:
+        raise InputError(path, "has no <figure>_median column")
+    headline = medians[0][:-len("_median")]
+    for line, row in enumerate(rows, start=2):
+        for suffix in ("_median", "_min", "_max"):
+            parse_number(path, line, headline + suffix, row[headline + suffix])
+    return keys, headline, rows
+
+
+def axis_positions(values):
+    """x positions of a key's values in grid order: the numbers themselves when all are
+    numbers, else 0, 1, 2, ... with the values as labels."""
+    try:
+        return [float(v) for v in values], None
+    except ValueError:
+        return list(range(len(values))), values
+
+
+def plot_sweep_key(key, keys, headline, rows, plant):
+    values = list(dict.fromkeys(row[key] for row in rows))
+    positions, labels = axis_positions(values)
+    others = [k for k in keys if k != key]
+    fig, ax = new_figure()
+    lines = {}
+    for row in rows:
+        label = row["arm"] + "".join(f", {k}={row[k]}" for k in others)
+        lines.setdefault(label, {})[row[key]] = row
+    for label, by_value in lines.items():
+        xs = [positions[values.index(v)] for v in values if v in by_value]
+        picked = [by_value[v] for v in values if v in by_value]
+        median = [float(r[headline + "_median"]) for r in picked]
+        low = [float(r[headline + "_min"]) for r in picked]
+        high = [float(r[headline + "_max"]) for r in picked]
+        (line,) = ax.plot(xs, median, marker="o", label=label)
+        ax.fill_between(xs, low, high, color=line.get_color(), alpha=0.15, linewidth=0)
+    if labels is not None:
+        ax.set_xticks(positions)
+        ax.set_xticklabels(labels)
+    seeds = rows[0]["seeds"] if rows else "?"
+    ax.set_xlabel(key)
+    ax.set_ylabel(headline.replace("_", " ") + f" (median, range over {seeds} seeds)")
+    ax.set_title(f"{headline.replace('_', ' ')} against {key} (sweep, {plant} plant)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize="small")
+    fig.tight_layout()
+    return fig
+
+
+def run_sweep(results_dir, save):
+    sweep_path = os.path.join(results_dir, "sweep.csv")
+    keys, headline, rows = read_sweep(sweep_path)
+    config = read_config(os.path.join(results_dir, "config.yaml"))
+    plant = (config or {}).get("plant.kind") or "unknown"
+    for key in keys:
+        save(plot_sweep_key(key, keys, headline, rows, plant),
+             "sweep_" + re.sub(r"[^A-Za-z0-9_.-]", "_", key) + ".png")
+
+
 def run(results_dir):
+    if os.path.isfile(os.path.join(results_dir, "sweep.csv")):
+        return draw_into(results_dir, lambda save: run_sweep(results_dir, save))
     summary_path = os.path.join(results_dir, "summary.json")
     trials_path = os.path.join(results_dir, "trials.csv")
     config_path = os.path.join(results_dir, "config.yaml")
@@ -773,6 +846,18 @@ def run(results_dir):
     failure_angle = config_number(config, "trial.failure_angle", config_path)
     stages = annealing_stages(config, config_path)
 
+    def draw(save):
+        if experiment == "exp2":
+            draw_exp2(save, summary, trials, steps_path, failure_angle, stages, experiment,
+                      plant)
+        else:
+            draw_exp1(save, summary, trials, steps_path, failure_angle, experiment, plant)
+
+    draw_into(results_dir, draw)
+
+
+def draw_into(results_dir, draw):
+    """Runs draw(save) into a staging folder that then replaces DIR/figures."""
     staging = tempfile.mkdtemp(prefix=".figures.tmp-", dir=results_dir)
     umask = os.umask(0)
     os.umask(umask)
@@ -785,11 +870,7 @@ def run(results_dir):
         written.append(name)
 
     try:
-        if experiment == "exp2":
-            draw_exp2(save, summary, trials, steps_path, failure_angle, stages, experiment,
-                      plant)
-        else:
-            draw_exp1(save, summary, trials, steps_path, failure_angle, experiment, plant)
+        draw(save)
         final = os.path.join(results_dir, "figures")
         replace_folder(staging, final)
     except BaseException:

@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   clang clang-format libclang-rt-14-dev libfuzzer-14-dev time
   graphviz python3 python3-matplotlib python3-numpy
+  parallel slurm-wlm munge
 )
 
 missing=()

@@ -155,6 +155,11 @@ std::filesystem::path TaskStore::steps_path(std::size_t task) const {
   return directory_ / (std::to_string(task) + ".steps.csv");
 }
 
+bool TaskStore::has(std::size_t task) const {
+  std::error_code error;
+  return std::filesystem::exists(record_path(task), error);
+}
+
 bool TaskStore::load(std::size_t task, SeedRun& run) const {
   const std::filesystem::path path = record_path(task);
   if (!std::filesystem::exists(path)) return false;

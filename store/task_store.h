@@ -22,6 +22,8 @@ class TaskStore final : public experiments::TaskStorage {
 
   // Fills `run` from a task finished earlier; false when the task has no record.
   bool load(std::size_t task, SeedRun& run) const override;
+  // Whether the task has a record (finished).
+  bool has(std::size_t task) const;
   // Where the task's rows are written while it runs, and where they stay once it is saved.
   std::filesystem::path pending_steps_path(std::size_t task) const override;
   std::filesystem::path steps_path(std::size_t task) const;

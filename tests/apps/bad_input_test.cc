@@ -140,6 +140,24 @@ std::vector<BadInput> bad_inputs() {
        "--push-time must be a finite number >= 0 (s); got -1"},
       {eval + "--out {S}/file", "--out '{S}/file' is a file, not a directory"},
       {eval + "--set rbf.centres=[-1,0,1]", "was made for rbf.centres"},
+      // Sweeps: run --grid / --shard, merge, status.
+      {quick + "--grid actor.alpha", "--grid actor.alpha: give KEY=V1,V2,..."},
+      {quick + "--grid actor.alpha=0.1,fast",
+       "--grid actor.alpha=0.1,fast: actor.alpha must be a number; got 'fast'"},
+      {quick + "--grid actor.alpa=0.1", "did you mean 'actor.alpha'?"},
+      {quick + "--grid actor.alpha=0.1,,0.2", "--grid actor.alpha=0.1,,0.2: an empty value"},
+      {quick + "--grid trial.theta0=0.1,0.7", "grid point 002: trial.theta0 (0.7 rad) must lie"},
+      {quick + "--shard 0/3", "--shard must be K/N with 1 <= K <= N <= 100000; got '0/3'"},
+      {"run --grid seeds=1,2 --resume {S}/out",
+       "drop --config, --set, --experiment, --seeds, "
+       "--seed, --load-weights, --replace, "
+       "--no-figures, --grid and --shard"},
+      {"run --set plant.kind=analytic --grid actor.alpha=0.1 --out {S}/mine",
+       "--out '{S}/mine' exists; a sweep writes a new directory"},
+      {"merge", "DIR is required"},
+      {"merge {S}/never", "no sweep at '{S}/never'"},
+      {"merge {S}/mine", "no sweep at '{S}/mine'"},
+      {"status {S}/never", "no sweep at '{S}/never'"},
       // Other commands.
       {"list --bogus", "--bogus"},
       {"frobnicate", "frobnicate"},

@@ -1,0 +1,25 @@
+#pragma once
+// sweep.csv: one row per grid point and arm, with the grid's values and the experiment's
+// headline figure over the seeds: exp1's failures before the first success, exp2's
+// balanced trials per seed.
+
+#include <string>
+#include <vector>
+
+#include "config/sweep.h"
+#include "experiments/seed_run.h"
+
+namespace cbbg::store {
+
+// The headline figure's name in sweep.csv's header (exp2: "balanced_trials", else
+// "failures_before_success").
+std::string headline_name(const std::string& experiment);
+// One seed's headline figure.
+int headline(const std::string& experiment, const experiments::SeedRun& run);
+
+// Columns: point, each swept key, arm, seeds, succeeded (seeds with a successful trial), and
+// the headline's median, min and max over the seeds. `results[p]` is grid point p's.
+std::string sweep_csv(const config::Sweep& sweep,
+                      const std::vector<experiments::ExperimentResults>& results);
+
+}  // namespace cbbg::store
