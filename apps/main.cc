@@ -41,8 +41,9 @@ int main(int argc, char** argv) {
   std::string seeds;
   std::string seed;
   std::filesystem::path resume;
-  auto* experiment_option = run_app->add_option(
-      "--experiment", experiment, "exp1 | exp2 | a diagram name (default: the config's, exp1)");
+  auto* experiment_option =
+      run_app->add_option("--experiment", experiment,
+                          "exp1 | exp2 | exp3 | a diagram name (default: the config's, exp1)");
   run_app->add_option("--config", run.config_file, "a YAML config (keys: `cbbg list`)");
   run_app->add_option("--set", run.sets, "override one key: --set critic.gamma=0.9 (repeatable)");
   // Numbers are checked by the config's schema, with the project's messages and limits.

@@ -60,6 +60,29 @@ void print_annealing_summary(const experiments::ExperimentResults& results) {
   }
 }
 
+// exp3: per arm, the seeds whose learnt actor alone passed, and the trials it took them.
+void print_skill_summary(const experiments::ExperimentResults& results) {
+  std::printf("%-14s %8s %10s %8s %s\n", "arm", "seeds", "skilled", "median", "range");
+  for (std::size_t a = 0; a < results.arms.size(); ++a) {
+    std::vector<int> trials;
+    for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+      const auto& run = results.run(a, s);
+      if (run.trials_to_skill) trials.push_back(*run.trials_to_skill);
+    }
+    if (trials.empty()) {
+      std::printf("%-14s %8zu %10d %8s %s\n", results.arms[a].c_str(), results.seeds.size(), 0, "-",
+                  "(no seed's actor balanced alone)");
+      continue;
+    }
+    std::printf(
+        "%-14s %8zu %10zu %8.1f [%d, %d]  (trials until the actor alone balances; of the "
+        "seeds that got there)\n",
+        results.arms[a].c_str(), results.seeds.size(), trials.size(), store::median(trials),
+        *std::min_element(trials.begin(), trials.end()),
+        *std::max_element(trials.begin(), trials.end()));
+  }
+}
+
 void print_summary(const experiments::ExperimentResults& results) {
   if (results.experiment == "exp2") {
     print_annealing_summary(results);
@@ -82,6 +105,7 @@ void print_summary(const experiments::ExperimentResults& results) {
     std::printf("%-14s %8zu %10d %8.1f [%d, %d]  (failures before the first success)\n",
                 results.arms[a].c_str(), results.seeds.size(), succeeded, median, low, high);
   }
+  if (results.experiment == "exp3") print_skill_summary(results);
 }
 
 // Learning runs of the experiment: every (arm, seed) of an arm with basal ganglia.

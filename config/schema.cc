@@ -55,17 +55,18 @@ KeySpec numbers(std::string path, std::vector<double> value, std::string meaning
 }
 
 std::vector<std::string> experiment_choices() {
-  std::vector<std::string> choices{"exp1", "exp2"};
+  std::vector<std::string> choices{"exp1", "exp2", "exp3"};
   for (const auto& name : diagram_names()) choices.push_back(name);
   return choices;
 }
 
 std::vector<KeySpec> make_schema() {
   return {
-      text("experiment", "exp1", "exp1 | exp2 | a diagram name (one arm, exp1's protocol)",
+      text("experiment", "exp1",
+           "exp1 | exp2 | exp3 (skill acquisition) | a diagram name (one arm, exp1's protocol)",
            experiment_choices()),
       {"arms", Kind::kNames, std::vector<std::string>{"cbbg", "bg_only"},
-       "diagrams compared in one run (exp1)", diagram_names(), -kInf, kInf, false, false, 0},
+       "diagrams compared in one run (exp1, exp3)", diagram_names(), -kInf, kInf, false, false, 0},
       integer("seeds", 20, "independent runs per arm; run k uses root seed + k", 1, kMaxSeeds),
       integer("seed", 1, "root seed", 0, kMaxSeed),
       integer("max_trials", 100, "exp1: give up after this many trials without a success", 1,
@@ -151,6 +152,8 @@ std::vector<KeySpec> make_schema() {
       integer("log.decimation", 1, "steps.csv keeps every n-th tick; 0 writes no steps.csv", 0),
       numbers("evaluation.angles", {0.05, 0.1, 0.15, 0.2, 0.25},
               "initial pitches the learnt actor is evaluated from, rad", 0),
+      numbers("exp3.angles", {0.05, 0.1744, 0.25},
+              "exp3: the learnt actor alone must balance from each of these, rad", 0),
   };
 }
 

@@ -207,9 +207,11 @@ void check_trial_keys(const config::Config& c) {
     }
   };
   inside("trial.theta0", c.number("trial.theta0"));
-  const std::vector<double>& angles = c.numbers("evaluation.angles");
-  for (std::size_t i = 0; i < angles.size(); ++i) {
-    inside("evaluation.angles[" + std::to_string(i) + "]", angles[i]);
+  for (const char* key : {"evaluation.angles", "exp3.angles"}) {
+    const std::vector<double>& angles = c.numbers(key);
+    for (std::size_t i = 0; i < angles.size(); ++i) {
+      inside(std::string(key) + "[" + std::to_string(i) + "]", angles[i]);
+    }
   }
 }
 

@@ -61,7 +61,8 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
   for (int trial = 1; trial <= max_trials; ++trial) {
     const TrialRecord record{
         trial, k1,
-        runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"), trial)};
+        runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"), trial),
+        std::nullopt};
     run.trials.push_back(record);
     if (record.outcome.status == TrialStatus::kSuccess) {
       run.succeeded = true;
@@ -72,6 +73,65 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
   if (loop.learner.learns()) {
     keep_weights(learnt_weights(loop, runner.context(), config, provenance(config, run)), run);
     if (arm.policy && run.weights) evaluate_learnt_actor(config, arm, run);
+  }
+}
+
+// exp3's test after a trial: the weights learnt so far, frozen, with the actor alone, from
+// each of exp3.angles in turn (stopping at the first that fails).
+bool actor_alone_balances(const config::Config& config, const diagrams::Arm& arm,
+                          const LearntWeights& weights, long long seed) {
+  config::Config evaluation_config = config;
+  evaluation_config.set("seed=" + std::to_string(seed));
+  for (const double angle : config.numbers("exp3.angles")) {
+    EvaluationSettings settings;
+    settings.angles = {angle};
+    const PolicyEvaluation evaluation =
+        evaluate_policy(evaluation_config, arm.policy, weights, settings);
+    if (evaluation.angles.front().balanced() == 0) return false;
+  }
+  return true;
+}
+
+// exp3: trials go on past the first success until the learnt actor alone passes the test
+// (or max_trials). An arm that learns nothing has no actor: it stops at its first success.
+void run_until_skill(const config::Config& config, const diagrams::Arm& arm,
+                     const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
+                     SeedRun& run) {
+  const diagrams::ClosedLoop loop = arm.learner(config);
+  TrialRunner runner(loop, static_cast<std::uint64_t>(run.seed), config.number("trial.period"),
+                     telemetry);
+  start_from(loop, runner, initial_weights);
+  const bool has_actor = loop.learner.learns() && static_cast<bool>(arm.policy);
+  const double k1 = config.number("tropism.k1");
+  int failures = 0;
+  for (int trial = 1; trial <= config.integer("max_trials"); ++trial) {
+    TrialRecord record{
+        trial, k1,
+        runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"), trial),
+        std::nullopt};
+    const bool success = record.outcome.status == TrialStatus::kSuccess;
+    if (!success) ++failures;
+    if (success && !run.succeeded) {
+      run.succeeded = true;
+      run.failures_before_success = failures;
+    }
+    if (has_actor) {
+      const LearntWeights weights =
+          learnt_weights(loop, runner.context(), config, provenance(config, run));
+      record.actor_alone_passed =
+          weights.actor.allFinite() && actor_alone_balances(config, arm, weights, run.seed);
+    }
+    run.trials.push_back(record);
+    if (record.actor_alone_passed.value_or(false)) {
+      run.trials_to_skill = trial;
+      run.failures_to_skill = failures;
+      break;
+    }
+    if (!has_actor && run.succeeded) break;
+  }
+  if (!run.succeeded) run.failures_before_success = failures;
+  if (loop.learner.learns()) {
+    keep_weights(learnt_weights(loop, runner.context(), config, provenance(config, run)), run);
   }
 }
 
@@ -95,7 +155,8 @@ void run_annealing(const config::Config& config, const diagrams::Arm& coordinate
   TrialRunner first(first_loop, static_cast<std::uint64_t>(run.seed), period, telemetry);
   start_from(first_loop, first, initial_weights);
   set_k1(first_loop, first.context(), annealed_k1(schedule, 1));
-  run.trials.push_back({1, annealed_k1(schedule, 1), first.run_trial(theta0, duration, 1)});
+  run.trials.push_back(
+      {1, annealed_k1(schedule, 1), first.run_trial(theta0, duration, 1), std::nullopt});
 
   // The operant loop carries on: weights, the omega counter and the random streams.
   TrialRunner later(later_loop, static_cast<std::uint64_t>(run.seed), period, telemetry);
@@ -103,7 +164,7 @@ void run_annealing(const config::Config& config, const diagrams::Arm& coordinate
   for (int trial = 2; trial <= config.integer("exp2.trials"); ++trial) {
     const double k1 = annealed_k1(schedule, trial);
     set_k1(later_loop, later.context(), k1);
-    run.trials.push_back({trial, k1, later.run_trial(theta0, duration, trial)});
+    run.trials.push_back({trial, k1, later.run_trial(theta0, duration, trial), std::nullopt});
   }
   for (const auto& trial : run.trials) {
     if (trial.outcome.status == TrialStatus::kSuccess && !run.succeeded) {
@@ -147,6 +208,21 @@ ExperimentResults run_exp1(const config::Config& config, const std::vector<diagr
   return results;
 }
 
+ExperimentResults run_exp3(const config::Config& config, const std::vector<diagrams::Arm>& arms,
+                           const ExperimentOptions& options) {
+  auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
+    for (const auto& arm : arms) {
+      if (arm.name == run.arm) {
+        run_until_skill(config, arm, telemetry, options.initial_weights, run);
+        return;
+      }
+    }
+  };
+  ExperimentResults results = run_tasks(config, names_of(arms), body, options);
+  results.experiment = "exp3";
+  return results;
+}
+
 ExperimentResults run_exp2(const config::Config& config, const diagrams::Arm& coordinated,
                            const diagrams::Arm& operant, const ExperimentOptions& options) {
   auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
@@ -159,7 +235,7 @@ ExperimentResults run_exp2(const config::Config& config, const diagrams::Arm& co
 
 std::vector<std::string> experiment_arms(const config::Config& config) {
   const std::string& experiment = config.text("experiment");
-  if (experiment == "exp1") return config.names("arms");
+  if (experiment == "exp1" || experiment == "exp3") return config.names("arms");
   if (experiment == "exp2") return {"cbbg"};
   return {experiment};
 }
@@ -171,6 +247,7 @@ ExperimentResults run_experiment(const config::Config& config, const ExperimentO
   }
   std::vector<diagrams::Arm> arms;
   for (const auto& name : experiment_arms(config)) arms.push_back(diagrams::preset_arm(name));
+  if (experiment == "exp3") return run_exp3(config, arms, options);
   ExperimentResults results = run_exp1(config, arms, options);
   results.experiment = experiment;
   return results;

@@ -5,6 +5,9 @@
 //
 //   exp1   per arm and seed: trials until the first success (or max_trials); then the
 //          arm's learnt actor alone from each of evaluation.angles
+//   exp3   per arm and seed: trials past the first success until the learnt actor alone
+//          (frozen, no exploration, no supervisor) balances from every exp3.angles, tested
+//          after every trial; max_trials caps it
 //   exp2   per seed: one trial of the coordinated arm (cbbg), then the operant arm (bg_only:
 //          omega = 1) carrying on what was learnt, with k1 from the annealing schedule, for
 //          exp2.trials trials
@@ -25,6 +28,11 @@ namespace cbbg::experiments {
 
 // exp1 for each arm, over the config's seeds.
 ExperimentResults run_exp1(const config::Config& config, const std::vector<diagrams::Arm>& arms,
+                           const ExperimentOptions& options = {});
+
+// exp3 for each arm, over the config's seeds: SeedRun::trials_to_skill and
+// failures_to_skill, and TrialRecord::actor_alone_passed per trial.
+ExperimentResults run_exp3(const config::Config& config, const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options = {});
 
 // exp2: trial 1 in `coordinated`'s closed loop, the later trials in `operant`'s, which

@@ -15,6 +15,9 @@ struct TrialRecord {
   int trial = 0;  // from 1
   double k1 = 0.0;
   TrialOutcome outcome;
+  // exp3: whether the learnt actor alone balanced from every exp3.angles after this trial
+  // (unset in the other experiments).
+  std::optional<bool> actor_alone_passed;
 };
 
 // The learnt actor alone from one initial pitch (exp1, learning arms).
@@ -30,6 +33,10 @@ struct SeedRun {
   // Failed or diverged trials before the first success; all of them if none succeeded.
   int failures_before_success = 0;
   bool succeeded = false;
+  // exp3: the trial after which the learnt actor alone first balanced from every
+  // exp3.angles, and the failed trials before it; unset when max_trials came first.
+  std::optional<int> trials_to_skill;
+  std::optional<int> failures_to_skill;
   // steps.csv rows (no header), every log.decimation-th tick, when no TaskStorage keeps them.
   std::string steps_csv;
   // exp1: the learnt actor evaluated from each of evaluation.angles (empty for an arm that

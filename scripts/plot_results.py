@@ -10,6 +10,9 @@ DIR/steps.csv. Writes, for exp1 and single-diagram runs:
 and for exp2:
   temperature_entropy.png   mean temperature and entropy per trial
   pitch_early_late.png      theta_b(t) of early against late trials of the first seed
+and for exp3, as for exp1 and also:
+  skill.png            per arm, failures and trials to the first success and to the skill
+                       (the actor alone balances from every exp3.angles), one point per seed
 and for a sweep (a directory with sweep.csv, written by cbbg merge):
   sweep_<key>.png      the headline figure (median and range over seeds) against each
                        swept key, one line per arm and per value of the other keys
@@ -712,6 +715,49 @@ def draw_exp1(save, summary, trials, pitch_path, failure_angle, experiment, plan
     medians = {arm: median_failures(summary, arm, per_arm[arm]) for arm in arms}
     save(plot_failures(arms, per_arm, medians, summary.get("paper", {}),
                        summary.get("max_trials"), experiment, plant), "failures.png")
+    if experiment == "exp3":
+        save(plot_skill(arms, summary, experiment, plant), "skill.png")
+
+
+def plot_skill(arms, summary, experiment, plant):
+    """exp3: per arm, four strips of one point per seed: failures and trials to the first
+    success, then to the skill (the actor alone balances); seeds without it are marked."""
+    fig, ax = new_figure()
+    max_trials = summary.get("max_trials") or 0
+    columns = ("failures to\nfirst success", "trials to\nfirst success",
+               "failures to\nskill", "trials to\nskill")
+    colours = ("tab:blue", "tab:blue", "tab:green", "tab:green")
+    ticks, labels = [], []
+    for a, arm in enumerate(arms):
+        entry = summary["arms"][arm]
+        failures = entry.get("failures_before_success", [])
+        strips = (failures, [f + 1 for f in failures], entry.get("failures_to_skill", []),
+                  entry.get("trials_to_skill", []))
+        for c, (values, colour) in enumerate(zip(strips, colours)):
+            x = a * (len(columns) + 1) + c
+            reached = [v for v in values if v is not None]
+            offsets = spread_offsets(reached, 0.6)
+            ax.plot([x + dx for dx in offsets], reached, "o", color=colour, alpha=0.7)
+            missing = len(values) - len(reached)
+            if missing:
+                ax.plot([x], [max_trials + 1], "X", color="tab:red", markersize=9)
+                ax.annotate(f"{missing} seed(s) never", (x, max_trials + 1), xytext=(6, 0),
+                            textcoords="offset points", va="center", color="tab:red",
+                            fontsize="small")
+            if reached:
+                middle = float(np.median(reached))
+                ax.hlines(middle, x - 0.3, x + 0.3, color="black", linewidth=2.0)
+            ticks.append(x)
+            labels.append(columns[c])
+        ax.annotate(arm, (a * (len(columns) + 1) + 1.5, 1.02), xycoords=("data", "axes fraction"),
+                    ha="center", fontweight="bold")
+    ax.set_xticks(ticks, labels, fontsize="small")
+    ax.set_ylabel("trials (one point per seed; bar: median)")
+    ax.set_title(f"First success and skill: the actor alone balances ({experiment}, {plant} plant)",
+                 pad=18)
+    ax.grid(True, axis="y", alpha=0.3)
+    fig.tight_layout()
+    return fig
 
 
 def draw_exp2(save, summary, trials, pitch_path, failure_angle, stages, experiment,

@@ -1,5 +1,6 @@
 #include "store/results_writer.h"
 
+#include "experiments/paired_statistics.h"
 #include "store/fault_point.h"
 #include "store/files.h"
 #include "store/task_store.h"
@@ -77,6 +78,83 @@ std::string weights_diverged_json(const ExperimentResults& results, std::size_t 
   return any ? ",\n      \"weights_diverged\": [" + flags + "]" : "";
 }
 
+// exp3's skill per seed: trials and failures to it, null where max_trials came first;
+// the median and range count a seed that never got there as beyond every other.
+std::string skill_json(const ExperimentResults& results, std::size_t arm) {
+  std::ostringstream trials;
+  std::ostringstream failures;
+  std::vector<double> sorted;
+  int reached = 0;
+  for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+    const SeedRun& run = results.run(arm, s);
+    const char* comma = s ? ", " : "";
+    trials << comma;
+    failures << comma;
+    if (run.trials_to_skill) {
+      trials << *run.trials_to_skill;
+      failures << run.failures_to_skill.value_or(0);
+      ++reached;
+    } else {
+      trials << "null";
+      failures << "null";
+    }
+    sorted.push_back(run.trials_to_skill ? *run.trials_to_skill : INFINITY);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t n = sorted.size();
+  const double middle = n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+  std::ostringstream json;
+  json << ",\n      \"trials_to_skill\": [" << trials.str() << "],\n      \"failures_to_skill\": ["
+       << failures.str() << "],\n      \"num_skilled\": " << reached
+       << ",\n      \"skill_median\": " << json_number(middle)
+       << ",\n      \"skill_min\": " << json_number(sorted.front())
+       << ",\n      \"skill_max\": " << json_number(sorted.back());
+  return json.str();
+}
+
+// One figure per seed of arm `arm`: exp1's failures before success, or exp3's trials to the
+// skill (max_trials + 1 where it was not reached).
+std::vector<double> per_seed(const ExperimentResults& results, std::size_t arm,
+                             const std::string& figure, long long max_trials) {
+  std::vector<double> values;
+  for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+    const SeedRun& run = results.run(arm, s);
+    if (figure == "trials_to_skill") {
+      values.push_back(static_cast<double>(run.trials_to_skill.value_or(max_trials + 1)));
+    } else {
+      values.push_back(run.failures_before_success);
+    }
+  }
+  return values;
+}
+
+// The first arm against every other, seed by seed (common random numbers).
+std::string paired_json(const ExperimentResults& results, const config::Config& config) {
+  if (results.arms.size() < 2 || (results.experiment != "exp1" && results.experiment != "exp3")) {
+    return "";
+  }
+  std::vector<std::string> figures{"failures_before_success"};
+  if (results.experiment == "exp3") figures.push_back("trials_to_skill");
+  const auto max_trials = config.integer("max_trials");
+  std::ostringstream json;
+  json << "  \"paired\": [";
+  const char* separator = "\n";
+  for (std::size_t b = 1; b < results.arms.size(); ++b) {
+    for (const std::string& figure : figures) {
+      const experiments::PairedComparison c = experiments::compare_paired(
+          per_seed(results, 0, figure, max_trials), per_seed(results, b, figure, max_trials));
+      json << separator << "    {\"a\": \"" << results.arms[0] << "\", \"b\": \"" << results.arms[b]
+           << "\", \"figure\": \"" << figure << "\", \"mean_b_minus_a\": " << number(c.mean)
+           << ", \"ci95\": [" << number(c.ci_low) << ", " << number(c.ci_high)
+           << "], \"b_greater\": " << c.positive << ", \"b_less\": " << c.negative
+           << ", \"ties\": " << c.ties << ", \"sign_test_p\": " << number(c.sign_test_p) << "}";
+      separator = ",\n";
+    }
+  }
+  json << "\n  ],\n";
+  return json.str();
+}
+
 }  // namespace
 
 double median(std::vector<int> values) {
@@ -86,8 +164,11 @@ double median(std::vector<int> values) {
 }
 
 std::string trials_csv(const ExperimentResults& results) {
-  std::string csv =
-      "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,final_theta,status\n";
+  const bool skill = results.experiment == "exp3";
+  std::string csv = skill ? "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,"
+                            "final_theta,status,actor_alone\n"
+                          : "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,"
+                            "final_theta,status\n";
   for (const SeedRun& run : results.runs) {
     for (const TrialRecord& record : run.trials) {
       const TrialOutcome& outcome = record.outcome;
@@ -95,7 +176,12 @@ std::string trials_csv(const ExperimentResults& results) {
              (outcome.status == TrialStatus::kSuccess ? "0" : "1") + "," +
              std::to_string(outcome.steps) + "," + number(outcome.mean_temperature) + "," +
              number(outcome.mean_entropy) + "," + number(outcome.final_theta) + "," +
-             to_string(outcome.status) + "\n";
+             to_string(outcome.status);
+      if (skill) {
+        csv += ',';
+        if (record.actor_alone_passed) csv += *record.actor_alone_passed ? '1' : '0';
+      }
+      csv += '\n';
     }
   }
   return csv;
@@ -143,9 +229,10 @@ std::string summary_json(const ExperimentResults& results, const config::Config&
     json << "      \"min\": " << *std::min_element(failures.begin(), failures.end()) << ",\n";
     json << "      \"max\": " << *std::max_element(failures.begin(), failures.end());
     json << evaluation_json(results, a) << weights_diverged_json(results, a);
+    if (results.experiment == "exp3") json << skill_json(results, a);
     json << "\n    }";
   }
-  json << "\n  },\n  \"paper\": {";
+  json << "\n  },\n" << paired_json(results, config) << "  \"paper\": {";
   for (std::size_t p = 0; p < std::size(kPaper); ++p) {
     json << (p ? ", " : "") << "\"" << kPaper[p].arm << "\": " << kPaper[p].failures;
   }

@@ -70,10 +70,15 @@ std::string serialize_run(const SeedRun& run) {
       << (run.succeeded ? 1 : 0) << "\nfailures_before_success " << run.failures_before_success
       << "\n";
   if (run.weights_diverged) out << "weights_diverged 1\n";
+  if (run.trials_to_skill) {
+    out << "skill " << *run.trials_to_skill << ' ' << run.failures_to_skill.value_or(0) << "\n";
+  }
   for (const TrialRecord& record : run.trials) {
     out << "trial " << record.trial << ' ' << number(record.k1);
     write_outcome(out, record.outcome);
     out << "\n";
+    if (record.actor_alone_passed)
+      out << "actor_alone " << (*record.actor_alone_passed ? 1 : 0) << "\n";
   }
   for (const EvaluationRecord& record : run.evaluation) {
     out << "evaluation " << number(record.theta0);
@@ -117,6 +122,17 @@ SeedRun parse_run(const std::string& text, const std::string& source) {
       record.k1 = parse_double(k1, source);
       record.outcome = read_outcome(in, source);
       run.trials.push_back(record);
+    } else if (key == "skill") {
+      int trials = 0;
+      int failures = 0;
+      in >> trials >> failures;
+      run.trials_to_skill = trials;
+      run.failures_to_skill = failures;
+    } else if (key == "actor_alone") {
+      int passed = 0;
+      in >> passed;
+      if (run.trials.empty()) throw std::runtime_error(source + ": actor_alone before any trial");
+      run.trials.back().actor_alone_passed = passed != 0;
     } else if (key == "evaluation") {
       EvaluationRecord record;
       std::string theta0;

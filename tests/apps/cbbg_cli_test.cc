@@ -45,6 +45,25 @@ class CbbgCommand : public ::testing::Test {
 // A quick run: the analytic plant, few seeds.
 constexpr const char* kQuick = "--set plant.kind=analytic --no-figures";
 
+// exp3 from the command line: the skill per seed, the paired comparison, the actor_alone
+// column and the skill figure.
+TEST_F(CbbgCommand, Exp3WritesTheSkillThePairedComparisonAndItsFigure) {
+  const fs::path out = scratch_ / "exp3";
+  const auto run =
+      cbbg("run --experiment exp3 --set plant.kind=analytic --seeds 3 --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("(trials until the actor alone balances; of the seeds that "
+                                    "got there)"));
+  const std::string summary = cbbg::testing::read_file(out / "summary.json");
+  EXPECT_THAT(summary, HasSubstr("\"trials_to_skill\": ["));
+  EXPECT_THAT(summary, HasSubstr("{\"a\": \"cbbg\", \"b\": \"bg_only\", \"figure\": "
+                                 "\"trials_to_skill\", \"mean_b_minus_a\": "));
+  EXPECT_THAT(cbbg::testing::read_file(out / "trials.csv"),
+              ::testing::StartsWith("arm,seed,trial,failed,steps,mean_temperature,mean_entropy,"
+                                    "final_theta,status,actor_alone\n"));
+  EXPECT_GT(fs::file_size(out / "figures" / "skill.png"), 10000u);
+}
+
 TEST_F(CbbgCommand, UnknownKeyExitsTwoWithASuggestionAndWritesNothing) {
   const fs::path out = scratch_ / "results";
   const Outcome outcome = cbbg("run --set critic.gama=0.5 --out " + out.string());
@@ -64,11 +83,11 @@ TEST_F(CbbgCommand, OutOfRangeAndNonFiniteValuesExitTwo) {
   outcome = cbbg("run --set plant.body_mass=.nan --out " + out.string());
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_THAT(outcome.output, HasSubstr("plant.body_mass must be a finite number"));
-  outcome = cbbg("run --experiment exp3 --out " + out.string());
+  outcome = cbbg("run --experiment exp4 --out " + out.string());
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(outcome.output,
-            "cbbg: error: --experiment exp3: experiment must be one of exp1, exp2, cbbg, "
-            "cbbg_weighted, bg_only, cb_only, pd_only; got 'exp3'\n");
+            "cbbg: error: --experiment exp4: experiment must be one of exp1, exp2, exp3, cbbg, "
+            "cbbg_weighted, bg_only, cb_only, pd_only; got 'exp4'\n");
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -6,6 +6,7 @@
 #include "diagrams/presets.h"
 #include "plant/plant_ports.h"
 #include "store/results_writer.h"
+#include "store/task_store.h"
 
 namespace cbbg::experiments {
 namespace {
@@ -51,6 +52,61 @@ TEST(Experiments, Exp1CountsFailuresBeforeTheFirstSuccess) {
   EXPECT_EQ(results.run(0, 0).arm, "cbbg");
   EXPECT_EQ(results.run(1, 1).arm, "bg_only");
   EXPECT_EQ(results.run(1, 1).seed, 2);
+}
+
+// exp3 goes on past the first success until the frozen actor alone balances from every
+// exp3.angles; each trial records the test, and the run ends at the first one passed.
+TEST(Experiments, Exp3RunsUntilTheActorAloneBalancesFromEveryAngle) {
+  config::Config config = quick_config();
+  config.set("experiment=exp3");
+  config.set("arms=[cbbg, bg_only, pd_only]");
+  const ExperimentResults results = run_experiment(config);
+  EXPECT_EQ(results.experiment, "exp3");
+  for (std::size_t arm : {0u, 1u}) {
+    for (std::size_t seed = 0; seed < 2; ++seed) {
+      const SeedRun& run = results.run(arm, seed);
+      ASSERT_TRUE(run.trials_to_skill.has_value()) << run.arm << " seed " << run.seed;
+      EXPECT_EQ(*run.trials_to_skill, static_cast<int>(run.trials.size()));
+      EXPECT_TRUE(run.trials.back().actor_alone_passed.value());
+      int failures = 0;
+      for (std::size_t t = 0; t < run.trials.size(); ++t) {
+        ASSERT_TRUE(run.trials[t].actor_alone_passed.has_value());
+        if (t + 1 < run.trials.size()) {
+          EXPECT_FALSE(*run.trials[t].actor_alone_passed);
+        }
+        failures += run.trials[t].outcome.status == TrialStatus::kSuccess ? 0 : 1;
+      }
+      EXPECT_EQ(*run.failures_to_skill, failures);
+      EXPECT_TRUE(run.succeeded);
+      EXPECT_LE(run.failures_before_success, failures);
+    }
+  }
+  // The PD supervisor alone learns nothing: it stops at its first success, with no skill.
+  const SeedRun& pd = results.run(2, 0);
+  EXPECT_EQ(pd.trials.size(), 1u);
+  EXPECT_FALSE(pd.trials_to_skill.has_value());
+  EXPECT_FALSE(pd.trials.front().actor_alone_passed.has_value());
+}
+
+TEST(Experiments, Exp3ReportsASeedThatNeverGetsThereAsSuch) {
+  config::Config config = quick_config();
+  config.set("experiment=exp3");
+  config.set("arms=[bg_only]");
+  config.set("max_trials=2");
+  const ExperimentResults results = run_experiment(config);
+  for (const SeedRun& run : results.runs) {
+    EXPECT_EQ(run.trials.size(), 2u);
+    EXPECT_FALSE(run.trials_to_skill.has_value());
+    EXPECT_FALSE(run.failures_to_skill.has_value());
+  }
+  // Its record keeps every test for a resume, and its skill: none.
+  const SeedRun back = parse_run(serialize_run(results.runs[0]), "record");
+  EXPECT_EQ(back.trials[1].actor_alone_passed, results.runs[0].trials[1].actor_alone_passed);
+  EXPECT_FALSE(back.trials_to_skill.has_value());
+  EXPECT_THAT(summary_json(results, config),
+              HasSubstr("\"trials_to_skill\": [null, null],\n      \"failures_to_skill\": "
+                        "[null, null],\n      \"num_skilled\": 0,\n      \"skill_median\": "
+                        "null"));
 }
 
 TEST(Experiments, ASeedThatNeverSucceedsCountsAllItsTrials) {
@@ -188,7 +244,7 @@ TEST(ResultsWriter, TrialsCsvHasOneRowPerTrial) {
   run.seed = 7;
   TrialOutcome failed{TrialStatus::kFailed, 53, 5.5, 2.75, 0.53, ""};
   TrialOutcome diverged{TrialStatus::kDiverged, 10, 1.0, 0.0, std::nan(""), "boom"};
-  run.trials = {{1, 10.0, failed}, {2, 10.0, diverged}};
+  run.trials = {{1, 10.0, failed, std::nullopt}, {2, 10.0, diverged, std::nullopt}};
   results.runs = {run};
   EXPECT_EQ(trials_csv(results),
             "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,final_theta,status\n"
