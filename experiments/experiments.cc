@@ -182,15 +182,19 @@ std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {
   return names;
 }
 
-}  // namespace
+// One seed of one arm under a protocol (exp1's, exp3's).
+using ArmProtocol = void (*)(const config::Config&, const diagrams::Arm&, const TelemetryOptions&,
+                             const LearntWeights*, SeedRun&);
 
-ExperimentResults run_exp1(const config::Config& config, const std::vector<diagrams::Arm>& arms,
-                           const ExperimentOptions& options) {
+// `protocol` for every (arm, seed), the arms' names unique.
+ExperimentResults run_per_arm(const char* experiment, ArmProtocol protocol,
+                              const config::Config& config, const std::vector<diagrams::Arm>& arms,
+                              const ExperimentOptions& options) {
   for (std::size_t a = 0; a < arms.size(); ++a) {
     for (std::size_t b = 0; b < a; ++b) {
       if (arms[a].name == arms[b].name) {
-        throw std::invalid_argument("exp1: two arms are named '" + arms[a].name +
-                                    "'; an arm's name must be unique");
+        throw std::invalid_argument(std::string(experiment) + ": two arms are named '" +
+                                    arms[a].name + "'; an arm's name must be unique");
       }
     }
   }
@@ -198,29 +202,26 @@ ExperimentResults run_exp1(const config::Config& config, const std::vector<diagr
   auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
     for (const auto& arm : arms) {
       if (arm.name == run.arm) {
-        run_until_success(config, arm, telemetry, options.initial_weights, run);
+        protocol(config, arm, telemetry, options.initial_weights, run);
         return;
       }
     }
   };
   ExperimentResults results = run_tasks(config, names_of(arms), body, options);
-  results.experiment = "exp1";
+  results.experiment = experiment;
   return results;
+}
+
+}  // namespace
+
+ExperimentResults run_exp1(const config::Config& config, const std::vector<diagrams::Arm>& arms,
+                           const ExperimentOptions& options) {
+  return run_per_arm("exp1", run_until_success, config, arms, options);
 }
 
 ExperimentResults run_exp3(const config::Config& config, const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options) {
-  auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
-    for (const auto& arm : arms) {
-      if (arm.name == run.arm) {
-        run_until_skill(config, arm, telemetry, options.initial_weights, run);
-        return;
-      }
-    }
-  };
-  ExperimentResults results = run_tasks(config, names_of(arms), body, options);
-  results.experiment = "exp3";
-  return results;
+  return run_per_arm("exp3", run_until_skill, config, arms, options);
 }
 
 ExperimentResults run_exp2(const config::Config& config, const diagrams::Arm& coordinated,
