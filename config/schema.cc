@@ -103,6 +103,8 @@ std::vector<KeySpec> make_schema() {
       number("trial.failure_angle", 0.5236, "|theta_b| beyond this fails the trial, rad", 0.0, true,
              std::numbers::pi / 2.0),
       positive("trial.period", 0.01, "sampling period Ts of the controller, s"),
+      number("trial.settle_time", 5.0, "the oscillation figures of trials.csv (exp2) start here, s",
+             0.0),
       positive("normaliser.scale_theta", 0.05817764, "n_theta: pitch per grid unit, rad"),
       positive("normaliser.scale_dtheta", 0.05817764, "n_dtheta: pitch rate per grid unit, rad/s"),
       positive("normaliser.saturation", 3.0, "inputs saturate to +-this (the RBF grid)"),

@@ -96,6 +96,7 @@ ClosedLoop build_closed_loop(std::string name, const config::Config& config,
                              const ClosedLoopOptions& options) {
   ClosedLoop loop;
   loop.accuracy = config.number("plant.accuracy");
+  loop.wheel_radius = config.number("plant.wheel_radius");
   const double period = config.number("trial.period");
   DiagramBuilder builder(std::move(name));
   std::unique_ptr<plant::RobotPlant> made =

@@ -38,7 +38,8 @@ struct ClosedLoop {
   const plant::RobotPlant* plant = nullptr;
   const OutputPort* telemetry = nullptr;  // kTelemetrySize signals, TelemetryIndex order
   LearnerBlocks learner;
-  double accuracy = 1e-6;  // the simulator's (plant.accuracy)
+  double accuracy = 1e-6;      // the simulator's (plant.accuracy)
+  double wheel_radius = 0.15;  // plant.wheel_radius, m: wheel angles to distance
 
   // Starts a trial in `context`: time 0, every block's per-trial state reset
   // (Context::reset_trial_state), the robot at `theta0` and at rest; learnt weights, the

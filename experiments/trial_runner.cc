@@ -1,5 +1,6 @@
 #include "experiments/trial_runner.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -77,7 +78,39 @@ void TrialRunner::record(double time, const double* values) {
     out.put('\n');
   }
   ++ticks_;
+  record_oscillation(time, values);
   check_learning_signals(time, values);
+}
+
+void TrialRunner::record_oscillation(double time, const double* values) {
+  if (time < settle_time_) return;
+  Oscillation& o = oscillation_;
+  const double pitch = values[kTelemetryThetaB];
+  const double wheels = 0.5 * (values[kTelemetryPhiLeft] + values[kTelemetryPhiRight]);
+  if (o.ticks == 0) {
+    o.pitch_min = o.pitch_max = pitch;
+    o.first_time = time;
+    o.first_wheels = wheels;
+  }
+  ++o.ticks;
+  o.pitch_sum += pitch;
+  o.pitch_square_sum += pitch * pitch;
+  o.pitch_min = std::min(o.pitch_min, pitch);
+  o.pitch_max = std::max(o.pitch_max, pitch);
+  o.last_time = time;
+  o.last_wheels = wheels;
+}
+
+void TrialRunner::finish_oscillation(TrialOutcome& outcome) const {
+  const Oscillation& o = oscillation_;
+  if (o.ticks < 2) return;  // ended before the transient had passed: NaN
+  // About its mean: the oscillation, not the steady lean that holds a speed.
+  const auto n = static_cast<double>(o.ticks);
+  const double mean = o.pitch_sum / n;
+  outcome.pitch_rms = std::sqrt(std::max(0.0, o.pitch_square_sum / n - mean * mean));
+  outcome.pitch_peak_to_peak = o.pitch_max - o.pitch_min;
+  outcome.mean_forward_speed =
+      loop_->wheel_radius * (o.last_wheels - o.first_wheels) / (o.last_time - o.first_time);
 }
 
 void TrialRunner::check_learning_signals(double time, const double* values) const {
@@ -103,6 +136,7 @@ TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
   ticks_ = 0;
   temperature_sum_ = 0.0;
   entropy_sum_ = 0.0;
+  oscillation_ = Oscillation{};
   trial_prefix_ = options_.row_prefix + std::to_string(trial) + ",";
 
   TrialOutcome outcome;
@@ -118,6 +152,7 @@ TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
     outcome.final_theta = std::numeric_limits<double>::quiet_NaN();
   }
   outcome.steps = ticks_;
+  finish_oscillation(outcome);
   const double ticks = static_cast<double>(std::max<long long>(ticks_, 1));
   outcome.mean_temperature = temperature_sum_ / ticks;
   outcome.mean_entropy = entropy_sum_ / ticks;

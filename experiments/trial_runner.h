@@ -4,6 +4,7 @@
 // rows of steps.csv and an in-memory log, so memory stays flat however long a trial runs.
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -23,6 +24,12 @@ struct TrialOutcome {
   double mean_entropy = 0.0;
   double final_theta = 0.0;  // theta_b at the end, rad
   std::string message;       // why it diverged
+  // The oscillation after the initial transient (ticks from the settle time on; NaN when
+  // the trial ended before it): theta_b's RMS about its mean and its peak-to-peak, rad, and
+  // the mean forward speed R (phi_l + phi_r)' / 2 over that span, m/s (the robot's drift).
+  double pitch_rms = std::numeric_limits<double>::quiet_NaN();
+  double pitch_peak_to_peak = std::numeric_limits<double>::quiet_NaN();
+  double mean_forward_speed = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct TelemetryOptions {
@@ -47,6 +54,9 @@ class TrialRunner {
   // or an integrator failure ends the trial as diverged; the next trial starts clean.
   TrialOutcome run_trial(double theta0, double duration, int trial = 1);
 
+  // Where a trial's oscillation statistics start (trial.settle_time; 5 s by default).
+  void set_settle_time(double seconds) { settle_time_ = seconds; }
+
   Context& context() { return simulator_.context(); }
   const diagrams::ClosedLoop& loop() const { return *loop_; }
   // The telemetry of the last trial, one sample per tick (diagrams::TelemetryIndex), when
@@ -70,6 +80,22 @@ class TrialRunner {
   double temperature_sum_ = 0.0;
   double entropy_sum_ = 0.0;
   std::string trial_prefix_;
+  // The oscillation's running figures, from the settle time on.
+  struct Oscillation {
+    long long ticks = 0;
+    double pitch_sum = 0.0;
+    double pitch_square_sum = 0.0;
+    double pitch_min = 0.0;
+    double pitch_max = 0.0;
+    double first_time = 0.0;
+    double first_wheels = 0.0;  // (phi_l + phi_r) / 2 there
+    double last_time = 0.0;
+    double last_wheels = 0.0;
+  };
+  void record_oscillation(double time, const double* values);
+  void finish_oscillation(TrialOutcome& outcome) const;
+  double settle_time_ = 5.0;
+  Oscillation oscillation_;
 };
 
 }  // namespace cbbg::experiments

@@ -10,6 +10,8 @@ DIR/steps.csv. Writes, for exp1 and single-diagram runs:
 and for exp2:
   temperature_entropy.png   mean temperature and entropy per trial
   pitch_early_late.png      theta_b(t) of early against late trials of the first seed
+  oscillation.png           the pitch's RMS and peak-to-peak after the transient, and the
+                            mean forward speed, per trial (trials.csv's exp2 columns)
 and for exp3, as for exp1 and also:
   skill.png            per arm, failures and trials to the first success and to the skill
                        (the actor alone balances from every exp3.angles), one point per seed
@@ -760,11 +762,68 @@ def plot_skill(arms, summary, experiment, plant):
     return fig
 
 
+OSCILLATION_COLUMNS = ("pitch_rms", "pitch_peak_to_peak", "mean_forward_speed")
+
+
+def read_oscillation(path):
+    """exp2's oscillation columns of trials.csv: {trial: {column: [finite values over
+    seeds]}} for the trials that lasted past the settle time; None without the columns."""
+    with open(path, newline="") as file:
+        reader = csv.DictReader(file)
+        if not set(OSCILLATION_COLUMNS) <= set(reader.fieldnames or []):
+            return None
+        by_trial = {}
+        for line, row in enumerate(reader, start=2):
+            trial = parse_integer(path, line, "trial", row["trial"], 1)
+            for name in OSCILLATION_COLUMNS:
+                value = parse_number(path, line, name, row[name])
+                if math.isfinite(value):
+                    by_trial.setdefault(trial, {}).setdefault(name, []).append(value)
+    return by_trial
+
+
+def plot_oscillation(by_trial, stages, seeds, experiment, plant):
+    """Per trial, the median over seeds (and range) of the pitch's RMS and peak-to-peak after
+    the transient, and of the mean forward speed: does the vibration fade, does it drift."""
+    fig, (ax_p, ax_v) = new_figure(ncols=2)
+    numbers = sorted(by_trial)
+    for ax, names, scale, unit in ((ax_p, ("pitch_rms", "pitch_peak_to_peak"), 1000.0, "mrad"),
+                                   (ax_v, ("mean_forward_speed",), 1.0, "m/s")):
+        for name in names:
+            present = [n for n in numbers if by_trial[n].get(name)]
+            values = [[v * scale for v in by_trial[n][name]] for n in present]
+            (line,) = ax.plot(present, [float(np.median(v)) for v in values], "o-",
+                              markersize=3.5, label=name.replace("_", " ") + " (median)")
+            ax.fill_between(present, [min(v) for v in values], [max(v) for v in values],
+                            color=line.get_color(), alpha=0.18, linewidth=0)
+        ax.set_ylabel(unit)
+        ax.set_xlabel("trial")
+        ax.grid(True, alpha=0.3)
+        for from_trial, _ in stages:
+            if from_trial > 1:
+                ax.axvline(from_trial - 0.5, color="0.6", linestyle=":", linewidth=1.0)
+        if stages:
+            top = ax.secondary_xaxis("top")
+            top.set_xticks([f for f, _ in stages], [f"{k1:g}" for _, k1 in stages], fontsize=8)
+            top.set_xlabel("annealing factor k1 from this trial", fontsize=8)
+        ax.legend(loc="best", fontsize="small")
+    ax_v.axhline(0.0, color="0.4", linewidth=0.8)
+    ax_p.set_title("Pitch oscillation after the transient")
+    ax_v.set_title("Mean forward speed after the transient")
+    fig.suptitle(f"Does the oscillation fade? ({experiment}, {plant} plant, range over {seeds} "
+                 "seeds shaded)")
+    return fig
+
+
 def draw_exp2(save, summary, trials, pitch_path, failure_angle, stages, experiment,
-              plant):
+              plant, trials_path=None):
     arms = [arm for arm in arms_in_order(summary, trials) if any(t.arm == arm for t in trials)]
     save(plot_temperature_entropy(arms, trials, summary, stages, experiment, plant),
          "temperature_entropy.png")
+    oscillation = read_oscillation(trials_path) if trials_path else None
+    if oscillation:
+        seeds = len({t.seed for t in trials})
+        save(plot_oscillation(oscillation, stages, seeds, experiment, plant), "oscillation.png")
     choices = {}
     for arm in arms:
         seed = first_seed(summary, trials, arm)
@@ -895,7 +954,7 @@ def run(results_dir):
     def draw(save):
         if experiment == "exp2":
             draw_exp2(save, summary, trials, steps_path, failure_angle, stages, experiment,
-                      plant)
+                      plant, trials_path)
         else:
             draw_exp1(save, summary, trials, steps_path, failure_angle, experiment, plant)
 

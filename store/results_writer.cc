@@ -165,10 +165,11 @@ double median(std::vector<int> values) {
 
 std::string trials_csv(const ExperimentResults& results) {
   const bool skill = results.experiment == "exp3";
-  std::string csv = skill ? "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,"
-                            "final_theta,status,actor_alone\n"
-                          : "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,"
-                            "final_theta,status\n";
+  const bool oscillation = results.experiment == "exp2";
+  std::string csv = "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,final_theta,status";
+  if (skill) csv += ",actor_alone";
+  if (oscillation) csv += ",pitch_rms,pitch_peak_to_peak,mean_forward_speed";
+  csv += '\n';
   for (const SeedRun& run : results.runs) {
     for (const TrialRecord& record : run.trials) {
       const TrialOutcome& outcome = record.outcome;
@@ -180,6 +181,13 @@ std::string trials_csv(const ExperimentResults& results) {
       if (skill) {
         csv += ',';
         if (record.actor_alone_passed) csv += *record.actor_alone_passed ? '1' : '0';
+      }
+      if (oscillation) {
+        for (const double figure :
+             {outcome.pitch_rms, outcome.pitch_peak_to_peak, outcome.mean_forward_speed}) {
+          csv += ',';
+          csv += number(figure);
+        }
       }
       csv += '\n';
     }

@@ -76,7 +76,9 @@ std::string serialize_run(const SeedRun& run) {
   for (const TrialRecord& record : run.trials) {
     out << "trial " << record.trial << ' ' << number(record.k1);
     write_outcome(out, record.outcome);
-    out << "\n";
+    out << "\noscillation " << number(record.outcome.pitch_rms) << ' '
+        << number(record.outcome.pitch_peak_to_peak) << ' '
+        << number(record.outcome.mean_forward_speed) << "\n";
     if (record.actor_alone_passed)
       out << "actor_alone " << (*record.actor_alone_passed ? 1 : 0) << "\n";
   }
@@ -128,6 +130,16 @@ SeedRun parse_run(const std::string& text, const std::string& source) {
       in >> trials >> failures;
       run.trials_to_skill = trials;
       run.failures_to_skill = failures;
+    } else if (key == "oscillation") {
+      std::string rms;
+      std::string peak_to_peak;
+      std::string speed;
+      in >> rms >> peak_to_peak >> speed;
+      if (run.trials.empty()) throw std::runtime_error(source + ": oscillation before any trial");
+      TrialOutcome& outcome = run.trials.back().outcome;
+      outcome.pitch_rms = parse_double(rms, source);
+      outcome.pitch_peak_to_peak = parse_double(peak_to_peak, source);
+      outcome.mean_forward_speed = parse_double(speed, source);
     } else if (key == "actor_alone") {
       int passed = 0;
       in >> passed;

@@ -1,9 +1,13 @@
 #include "experiments/experiments.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "diagrams/presets.h"
+#include "diagrams/telemetry.h"
 #include "plant/plant_ports.h"
 #include "store/results_writer.h"
 #include "store/task_store.h"
@@ -32,6 +36,52 @@ TEST(TrialRunner, ATrialReachingItsDurationSucceeds) {
   const TrialOutcome outcome = runner.run_trial(0.1744, 2.0);
   EXPECT_EQ(outcome.status, TrialStatus::kSuccess);
   EXPECT_EQ(outcome.steps, 200);  // ticks at 0, 0.01, ..., 1.99
+}
+
+// The oscillation figures are the telemetry's, from the settle time on: recomputed here
+// from the kept log.
+TEST(TrialRunner, MeasuresTheOscillationAfterTheSettleTime) {
+  const config::Config config = quick_config();
+  const auto controller = build_preset("pd_only", config);
+  TrialRunner runner(controller, 1, config.number("trial.period"));
+  runner.set_settle_time(2.0);
+  const TrialOutcome outcome = runner.run_trial(0.1744, 6.0);
+  ASSERT_EQ(outcome.status, TrialStatus::kSuccess);
+  const auto& times = runner.telemetry().times();
+  const auto values = runner.telemetry().values();
+  double sum = 0.0;
+  double squares = 0.0;
+  double low = 1e9;
+  double high = -1e9;
+  long long n = 0;
+  std::size_t first = 0;
+  std::size_t last = 0;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    if (times[k] < 2.0) continue;
+    const double pitch = values(diagrams::kTelemetryThetaB, static_cast<Eigen::Index>(k));
+    if (n == 0) first = k;
+    last = k;
+    sum += pitch;
+    squares += pitch * pitch;
+    low = std::min(low, pitch);
+    high = std::max(high, pitch);
+    ++n;
+  }
+  ASSERT_EQ(n, 400);  // ticks at 2.00, 2.01, ..., 5.99
+  auto wheels = [&values](std::size_t k) {
+    const auto column = static_cast<Eigen::Index>(k);
+    return 0.5 * (values(diagrams::kTelemetryPhiLeft, column) +
+                  values(diagrams::kTelemetryPhiRight, column));
+  };
+  const double mean = sum / 400.0;
+  EXPECT_NEAR(outcome.pitch_rms, std::sqrt(squares / 400.0 - mean * mean), 1e-12);
+  EXPECT_DOUBLE_EQ(outcome.pitch_peak_to_peak, high - low);
+  EXPECT_DOUBLE_EQ(outcome.mean_forward_speed, config.number("plant.wheel_radius") *
+                                                   (wheels(last) - wheels(first)) /
+                                                   (times[last] - times[first]));
+  // A trial that ends before the settle time has none.
+  runner.set_settle_time(100.0);
+  EXPECT_TRUE(std::isnan(runner.run_trial(0.1744, 1.0).pitch_rms));
 }
 
 TEST(Experiments, Exp1CountsFailuresBeforeTheFirstSuccess) {
