@@ -206,11 +206,9 @@ int sweep_command(const RunOptions& options, const config::Config& base,
                  options.out.string());
     return 0;
   }
-  store::SweepDirectory merging = [&] {
-    directory.reset();  // the shard's lock, before the merge takes the directory's
-    return store::SweepDirectory::open_existing(options.out, /*lock=*/true);
-  }();
+  directory.reset();  // the shard's lock, before the merge takes the directory's
   try {
+    store::SweepDirectory merging = store::SweepDirectory::open_existing(options.out, true);
     merge(sweep_plan, merging);
   } catch (const std::exception& error) {
     return report_error(kMachineError, describe(error));
