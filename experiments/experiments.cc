@@ -55,7 +55,6 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
   const diagrams::ClosedLoop loop = arm.learner(config);
   TrialRunner runner(loop, static_cast<std::uint64_t>(run.seed), config.number("trial.period"),
                      telemetry);
-  runner.set_settle_time(config.number("trial.settle_time"));
   start_from(loop, runner, initial_weights);
   const long long max_trials = config.integer("max_trials");
   const double k1 = config.number("tropism.k1");
@@ -101,7 +100,6 @@ void run_until_skill(const config::Config& config, const diagrams::Arm& arm,
   const diagrams::ClosedLoop loop = arm.learner(config);
   TrialRunner runner(loop, static_cast<std::uint64_t>(run.seed), config.number("trial.period"),
                      telemetry);
-  runner.set_settle_time(config.number("trial.settle_time"));
   start_from(loop, runner, initial_weights);
   const bool has_actor = loop.learner.learns() && static_cast<bool>(arm.policy);
   const double k1 = config.number("tropism.k1");
@@ -155,7 +153,6 @@ void run_annealing(const config::Config& config, const diagrams::Arm& coordinate
   const diagrams::ClosedLoop first_loop = coordinated.learner(config);
   const diagrams::ClosedLoop later_loop = operant.learner(config);
   TrialRunner first(first_loop, static_cast<std::uint64_t>(run.seed), period, telemetry);
-  first.set_settle_time(config.number("trial.settle_time"));
   start_from(first_loop, first, initial_weights);
   set_k1(first_loop, first.context(), annealed_k1(schedule, 1));
   run.trials.push_back(
@@ -163,7 +160,6 @@ void run_annealing(const config::Config& config, const diagrams::Arm& coordinate
 
   // The operant loop carries on: weights, the omega counter and the random streams.
   TrialRunner later(later_loop, static_cast<std::uint64_t>(run.seed), period, telemetry);
-  later.set_settle_time(config.number("trial.settle_time"));
   later.context().continue_from(first.context());
   for (int trial = 2; trial <= config.integer("exp2.trials"); ++trial) {
     const double k1 = annealed_k1(schedule, trial);

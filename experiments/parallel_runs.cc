@@ -21,7 +21,8 @@ void run_task(const config::Config& config, std::size_t task, const TaskBody& bo
   TelemetryOptions telemetry{.keep_in_memory = false,
                              .steps = nullptr,
                              .decimation = config.integer("log.decimation"),
-                             .row_prefix = run.arm + "," + std::to_string(run.seed) + ","};
+                             .row_prefix = run.arm + "," + std::to_string(run.seed) + ",",
+                             .settle_time = config.number("trial.settle_time")};
   if (telemetry.decimation > 0) {
     if (store != nullptr) {
       file.open(store->pending_steps_path(task), std::ios::binary | std::ios::trunc);

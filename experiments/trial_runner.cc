@@ -83,7 +83,7 @@ void TrialRunner::record(double time, const double* values) {
 }
 
 void TrialRunner::record_oscillation(double time, const double* values) {
-  if (time < settle_time_) return;
+  if (time < options_.settle_time) return;
   Oscillation& o = oscillation_;
   const double pitch = values[kTelemetryThetaB];
   const double wheels = 0.5 * (values[kTelemetryPhiLeft] + values[kTelemetryPhiRight]);

@@ -40,6 +40,8 @@ struct TelemetryOptions {
   std::ostream* steps = nullptr;
   long long decimation = 1;
   std::string row_prefix;
+  // Where a trial's oscillation statistics start (trial.settle_time), s.
+  double settle_time = 5.0;
 };
 
 // The header of steps.csv.
@@ -53,9 +55,6 @@ class TrialRunner {
   // Runs trial number `trial` from `theta0` until failure or `duration`. A non-finite state
   // or an integrator failure ends the trial as diverged; the next trial starts clean.
   TrialOutcome run_trial(double theta0, double duration, int trial = 1);
-
-  // Where a trial's oscillation statistics start (trial.settle_time; 5 s by default).
-  void set_settle_time(double seconds) { settle_time_ = seconds; }
 
   Context& context() { return simulator_.context(); }
   const diagrams::ClosedLoop& loop() const { return *loop_; }
@@ -94,7 +93,6 @@ class TrialRunner {
   };
   void record_oscillation(double time, const double* values);
   void finish_oscillation(TrialOutcome& outcome) const;
-  double settle_time_ = 5.0;
   Oscillation oscillation_;
 };
 
