@@ -93,9 +93,8 @@ SweepDirectory SweepDirectory::open_shard(const fs::path& target, const std::str
   }
   std::error_code error;
   fs::create_directories(directory.work_.parent_path(), error);
-  if (!present(directory.work_) && !try_create(directory.work_, config_yaml, figures)) {
-    // Another shard made it between the two checks: join it.
-  }
+  // false when another shard made it first: then this one joins it.
+  if (!present(directory.work_)) try_create(directory.work_, config_yaml, figures);
   check_is_sweep(directory.work_);
   const std::string marker = read_text(directory.work_ / kSweepWorkMarker);
   if (marker == sweep_marker(config_yaml, !figures)) {
