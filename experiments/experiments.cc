@@ -49,6 +49,13 @@ void start_from(const diagrams::ClosedLoop& loop, TrialRunner& runner,
   }
 }
 
+// The next trial of exp1's protocol (exp3's too): from trial.theta0, k1 fixed.
+TrialRecord next_trial(const config::Config& config, TrialRunner& runner, int trial) {
+  return {trial, config.number("tropism.k1"),
+          runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"), trial),
+          std::nullopt};
+}
+
 void run_until_success(const config::Config& config, const diagrams::Arm& arm,
                        const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                        SeedRun& run) {
@@ -56,13 +63,8 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
   TrialRunner runner(loop, static_cast<std::uint64_t>(run.seed), config.number("trial.period"),
                      telemetry);
   start_from(loop, runner, initial_weights);
-  const long long max_trials = config.integer("max_trials");
-  const double k1 = config.number("tropism.k1");
-  for (int trial = 1; trial <= max_trials; ++trial) {
-    const TrialRecord record{
-        trial, k1,
-        runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"), trial),
-        std::nullopt};
+  for (int trial = 1; trial <= config.integer("max_trials"); ++trial) {
+    const TrialRecord record = next_trial(config, runner, trial);
     run.trials.push_back(record);
     if (record.outcome.status == TrialStatus::kSuccess) {
       run.succeeded = true;
@@ -102,13 +104,9 @@ void run_until_skill(const config::Config& config, const diagrams::Arm& arm,
                      telemetry);
   start_from(loop, runner, initial_weights);
   const bool has_actor = loop.learner.learns() && static_cast<bool>(arm.policy);
-  const double k1 = config.number("tropism.k1");
   int failures = 0;
   for (int trial = 1; trial <= config.integer("max_trials"); ++trial) {
-    TrialRecord record{
-        trial, k1,
-        runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"), trial),
-        std::nullopt};
+    TrialRecord record = next_trial(config, runner, trial);
     const bool success = record.outcome.status == TrialStatus::kSuccess;
     if (!success) ++failures;
     if (success && !run.succeeded) {

@@ -36,6 +36,14 @@ void write_atomically(const std::filesystem::path& path, const std::string& text
   }
 }
 
+void remove_tree(const std::filesystem::path& path) {
+  std::error_code error;
+  std::filesystem::remove_all(path, error);
+  if (error) {
+    throw std::runtime_error("cannot remove " + quoted_path(path) + ": " + error.message());
+  }
+}
+
 std::string quoted_path(const std::filesystem::path& path) {
   // Built by appends: GCC 12 warns falsely (-Wrestrict) on "'" + text + "'".
   std::string text = "'";

@@ -12,6 +12,10 @@ namespace cbbg::store {
 // the system's reason.
 void write_atomically(const std::filesystem::path& path, const std::string& text);
 
+// Removes `path` and everything below it (nothing when absent); throws std::runtime_error
+// "cannot remove 'path': reason" when the machine refuses.
+void remove_tree(const std::filesystem::path& path);
+
 // 'path', quoted as messages name paths.
 std::string quoted_path(const std::filesystem::path& path);
 

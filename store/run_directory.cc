@@ -267,14 +267,7 @@ void RunDirectory::commit() {
   }
   fault_point("commit:clean");
   remove_replaced();
-  for (const char* name : {"tasks", "initial_weights.txt"}) {
-    std::error_code error;
-    fs::remove_all(target_ / name, error);
-    if (error) {
-      throw std::runtime_error("cannot remove " + quoted_path(target_ / name) + ": " +
-                               error.message());
-    }
-  }
+  for (const char* name : {"tasks", "initial_weights.txt"}) remove_tree(target_ / name);
   fault_point("commit:unmark");
   std::error_code error;
   fs::remove(target_ / kLockFile, error);

@@ -202,14 +202,7 @@ void SweepDirectory::commit() {
     published_ = true;
   }
   fault_point("commit:clean");
-  for (const char* name : {"tasks", "failed"}) {
-    std::error_code error;
-    fs::remove_all(target_ / name, error);
-    if (error) {
-      throw std::runtime_error("cannot remove " + quoted_path(target_ / name) + ": " +
-                               error.message());
-    }
-  }
+  for (const char* name : {"tasks", "failed"}) remove_tree(target_ / name);
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(target_, error)) {
     const std::string name = entry.path().filename().string();

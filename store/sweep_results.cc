@@ -1,8 +1,8 @@
 #include "store/sweep_results.h"
 
 #include <algorithm>
-#include <charconv>
 
+#include "framework/number_text.h"
 #include "store/results_writer.h"
 #include "store/sweep_directory.h"
 
@@ -19,11 +19,6 @@ std::string field(const std::string& text) {
   }
   quoted += '"';
   return quoted;
-}
-
-std::string number(double value) {
-  char buffer[32];
-  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
 }
 
 }  // namespace
@@ -66,7 +61,7 @@ std::string sweep_csv(const config::Sweep& sweep,
       column(point.arms[a]);
       column(std::to_string(point.seeds.size()));
       column(std::to_string(succeeded));
-      column(number(median(figures)));
+      column(format_number(median(figures)));
       column(std::to_string(*std::min_element(figures.begin(), figures.end())));
       column(std::to_string(*std::max_element(figures.begin(), figures.end())));
       csv += '\n';

@@ -1,4 +1,6 @@
 #include "store/task_store.h"
+
+#include "framework/number_text.h"
 #include "store/fault_point.h"
 #include "store/files.h"
 #include "store/weights_file.h"
@@ -19,11 +21,6 @@ namespace {
 
 constexpr const char* kRecordFormat = "cbbg-task 1";
 
-std::string number(double value) {
-  char buffer[32];
-  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
-}
-
 double parse_double(const std::string& text, const std::string& source) {
   double value = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -43,8 +40,8 @@ TrialStatus parse_status(const std::string& text, const std::string& source) {
 
 void write_outcome(std::ostringstream& out, const TrialOutcome& outcome) {
   out << ' ' << to_string(outcome.status) << ' ' << outcome.steps << ' '
-      << number(outcome.mean_temperature) << ' ' << number(outcome.mean_entropy) << ' '
-      << number(outcome.final_theta);
+      << format_number(outcome.mean_temperature) << ' ' << format_number(outcome.mean_entropy)
+      << ' ' << format_number(outcome.final_theta);
 }
 
 TrialOutcome read_outcome(std::istringstream& in, const std::string& source) {
@@ -74,16 +71,16 @@ std::string serialize_run(const SeedRun& run) {
     out << "skill " << *run.trials_to_skill << ' ' << run.failures_to_skill.value_or(0) << "\n";
   }
   for (const TrialRecord& record : run.trials) {
-    out << "trial " << record.trial << ' ' << number(record.k1);
+    out << "trial " << record.trial << ' ' << format_number(record.k1);
     write_outcome(out, record.outcome);
-    out << "\noscillation " << number(record.outcome.pitch_rms) << ' '
-        << number(record.outcome.pitch_peak_to_peak) << ' '
-        << number(record.outcome.mean_forward_speed) << "\n";
+    out << "\noscillation " << format_number(record.outcome.pitch_rms) << ' '
+        << format_number(record.outcome.pitch_peak_to_peak) << ' '
+        << format_number(record.outcome.mean_forward_speed) << "\n";
     if (record.actor_alone_passed)
       out << "actor_alone " << (*record.actor_alone_passed ? 1 : 0) << "\n";
   }
   for (const EvaluationRecord& record : run.evaluation) {
-    out << "evaluation " << number(record.theta0);
+    out << "evaluation " << format_number(record.theta0);
     write_outcome(out, record.outcome);
     out << "\n";
   }
