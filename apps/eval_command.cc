@@ -12,6 +12,7 @@
 #include "config/config.h"
 #include "diagrams/params_from_config.h"
 #include "diagrams/presets.h"
+#include "experiments/evaluation_conditions.h"
 #include "experiments/policy_evaluation.h"
 #include "store/files.h"
 #include "store/weights_file.h"
@@ -76,7 +77,7 @@ config::Config resolve(const EvalOptions& options) {
     throw config::ConfigError("evaluation.angles is empty: give --angles or set some");
   }
   diagrams::validate_all(config);
-  return config;
+  return experiments::evaluation_config(config);
 }
 
 std::string evaluation_csv(const experiments::PolicyEvaluation& evaluation) {

@@ -17,6 +17,9 @@ endforeach()
 install(TARGETS cbbg RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The command finds its plotting script in share/cbbg/ beside its bin/.
 install(PROGRAMS scripts/plot_results.py DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
+# The robustness study and its report (README: Beyond the paper).
+install(PROGRAMS scripts/robustness_study.sh scripts/robustness_report.py
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
 # The Slurm batch scripts of a sweep (README: Sweeps).
 install(PROGRAMS scripts/slurm/sweep.sbatch scripts/slurm/merge.sbatch scripts/slurm/submit_sweep.sh
         DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/slurm)

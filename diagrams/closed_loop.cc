@@ -39,6 +39,15 @@ void check_plant_ports(const plant::RobotPlant& robot) {
                               "\"state\" of size 10 (plant/robot_plant.h)");
 }
 
+// The push of push.*, when push.torque is not zero.
+std::optional<blocks::PushParams> configured_push(const config::Config& config) {
+  const double torque = config.number("push.torque");
+  if (torque == 0.0) return std::nullopt;
+  blocks::PushParams push{config.number("push.start"), torque, config.number("push.duration")};
+  push.validate();
+  return push;
+}
+
 // The action sampled every tick and held (zero-order hold), optionally pushed, to both wheels.
 void wire_actuation(DiagramBuilder& builder, const config::Config& config, const OutputPort& action,
                     const plant::RobotPlant& robot, const std::optional<blocks::PushParams>& push) {
@@ -120,7 +129,8 @@ ClosedLoop build_closed_loop(std::string name, const config::Config& config,
   builder.connect(measured, brain.measured());
   if (brain.reward() != nullptr) builder.connect(reward.output_port("reward"), *brain.reward());
   if (brain.failed() != nullptr) builder.connect(failure.output_port("failed"), *brain.failed());
-  wire_actuation(builder, config, brain.action(), robot, options.push);
+  wire_actuation(builder, config, brain.action(), robot,
+                 options.push ? options.push : configured_push(config));
   loop.telemetry = &wire_telemetry(builder, measured, brain, reward.output_port("reward"));
   loop.diagram = builder.build();
   return loop;

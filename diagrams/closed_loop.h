@@ -54,7 +54,8 @@ using PlantFactory = std::function<std::unique_ptr<plant::RobotPlant>(
 struct ClosedLoopOptions {
   // Empty: plant.kind's (plant::SimbodyPlant or plant::AnalyticPlant).
   PlantFactory plant{};
-  // A torque pulse between the hold and the wheels (cbbg eval --push-*).
+  // A torque pulse between the hold and the wheels (cbbg eval --push-*); empty: push.*'s,
+  // if push.torque is not zero.
   std::optional<blocks::PushParams> push{};
 };
 

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "experiments/evaluation_conditions.h"
 #include "experiments/policy_evaluation.h"
 
 namespace cbbg::experiments {
@@ -16,13 +17,22 @@ double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial
   return k1;
 }
 
-// The arm's learnt actor alone (no exploration, no supervisor, frozen) from each evaluation
-// angle, as `cbbg eval` runs it with this run's seed.
-void evaluate_learnt_actor(config::Config config, const diagrams::Arm& arm, SeedRun& run) {
+// What the run leaves to be tested, from each evaluation angle under the evaluation's
+// conditions (evaluation_conditions.h), with the run's seed: the learnt actor alone (no
+// exploration, no supervisor, frozen), as `cbbg eval` runs it, or the closed loop of an arm
+// that learns nothing (pd_only: the supervisor alone) as it is.
+void evaluate_run(const config::Config& training, const diagrams::Arm& arm, bool learns,
+                  SeedRun& run) {
+  config::Config config = evaluation_config(training);
   config.set("seed=" + std::to_string(run.seed));
   EvaluationSettings settings;
   settings.angles = config.numbers("evaluation.angles");
-  const PolicyEvaluation evaluation = evaluate_policy(config, arm.policy, *run.weights, settings);
+  PolicyEvaluation evaluation;
+  if (!learns) {
+    evaluation = evaluate_controller(config, arm.learner, settings);
+  } else if (arm.policy && run.weights) {
+    evaluation = evaluate_policy(config, arm.policy, *run.weights, settings);
+  }
   for (const AngleEvaluation& angle : evaluation.angles) {
     run.evaluation.push_back({angle.theta0, angle.runs.front()});
   }
@@ -40,6 +50,15 @@ void keep_weights(LearntWeights weights, SeedRun& run) {
   } else {
     run.weights_diverged = true;
   }
+}
+
+// The end of an exp1 or exp3 run: what was learnt is kept and the run evaluated.
+void finish_run(const config::Config& config, const diagrams::Arm& arm,
+                const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run) {
+  if (loop.learner.learns()) {
+    keep_weights(learnt_weights(loop, context, config, provenance(config, run)), run);
+  }
+  evaluate_run(config, arm, loop.learner.learns(), run);
 }
 
 void start_from(const diagrams::ClosedLoop& loop, TrialRunner& runner,
@@ -72,10 +91,7 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
     }
     ++run.failures_before_success;
   }
-  if (loop.learner.learns()) {
-    keep_weights(learnt_weights(loop, runner.context(), config, provenance(config, run)), run);
-    if (arm.policy && run.weights) evaluate_learnt_actor(config, arm, run);
-  }
+  finish_run(config, arm, loop, runner.context(), run);
 }
 
 // exp3's test after a trial: the weights learnt so far, frozen, with the actor alone, from
@@ -128,9 +144,7 @@ void run_until_skill(const config::Config& config, const diagrams::Arm& arm,
     if (!has_actor && run.succeeded) break;
   }
   if (!run.succeeded) run.failures_before_success = failures;
-  if (loop.learner.learns()) {
-    keep_weights(learnt_weights(loop, runner.context(), config, provenance(config, run)), run);
-  }
+  finish_run(config, arm, loop, runner.context(), run);
 }
 
 void set_k1(const diagrams::ClosedLoop& loop, Context& context, double k1) {

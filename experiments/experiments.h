@@ -4,10 +4,13 @@
 // user's own diagram gets every protocol the presets get.
 //
 //   exp1   per arm and seed: trials until the first success (or max_trials); then the
-//          arm's learnt actor alone from each of evaluation.angles
+//          arm's learnt actor alone (an arm that learns nothing: its closed loop as it is)
+//          from each of evaluation.angles, under evaluation.*'s conditions
+//          (evaluation_conditions.h)
 //   exp3   per arm and seed: trials past the first success until the learnt actor alone
 //          (frozen, no exploration, no supervisor) balances from every exp3.angles, tested
-//          after every trial; max_trials caps it
+//          after every trial under the training's conditions; max_trials caps it; then the
+//          evaluation of exp1
 //   exp2   per seed: one trial of the coordinated arm (cbbg), then the operant arm (bg_only:
 //          omega = 1) carrying on what was learnt, with k1 from the annealing schedule, for
 //          exp2.trials trials

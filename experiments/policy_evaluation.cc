@@ -26,11 +26,17 @@ int AngleEvaluation::balanced() const {
   return count;
 }
 
-PolicyEvaluation evaluate_policy(const config::Config& config,
-                                 const diagrams::ClosedLoopFactory& policy,
-                                 const LearntWeights& weights, const EvaluationSettings& settings) {
+namespace {
+
+// The runs of evaluate_policy, or of evaluate_controller when `weights` is null.
+PolicyEvaluation evaluate(const config::Config& config, const diagrams::ClosedLoopFactory& factory,
+                          const LearntWeights* weights, const EvaluationSettings& settings) {
   settings.validate();
-  const diagrams::ClosedLoop loop = policy(config);
+  const diagrams::ClosedLoop loop = factory(config);
+  if (weights == nullptr && loop.learner.learns()) {
+    throw std::invalid_argument("the closed loop '" + loop.diagram->name() +
+                                "' learns: evaluate its learnt policy instead");
+  }
   PolicyEvaluation result;
   result.first_seed = config.integer("seed");
   TelemetryOptions telemetry;
@@ -45,12 +51,26 @@ PolicyEvaluation evaluate_policy(const config::Config& config,
       // A clean context with this run's seed: a run does not depend on the runs before it.
       context.reset_all_state();
       context.reseed(static_cast<std::uint64_t>(result.first_seed + repeat));
-      load_learnt_weights(loop, context, weights);
+      if (weights != nullptr) load_learnt_weights(loop, context, *weights);
       angle.runs.push_back(runner.run_trial(theta0, config.number("trial.duration")));
     }
     result.angles.push_back(std::move(angle));
   }
   return result;
+}
+
+}  // namespace
+
+PolicyEvaluation evaluate_policy(const config::Config& config,
+                                 const diagrams::ClosedLoopFactory& policy,
+                                 const LearntWeights& weights, const EvaluationSettings& settings) {
+  return evaluate(config, policy, &weights, settings);
+}
+
+PolicyEvaluation evaluate_controller(const config::Config& config,
+                                     const diagrams::ClosedLoopFactory& controller,
+                                     const EvaluationSettings& settings) {
+  return evaluate(config, controller, nullptr, settings);
 }
 
 }  // namespace cbbg::experiments

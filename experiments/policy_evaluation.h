@@ -52,4 +52,10 @@ PolicyEvaluation evaluate_policy(const config::Config& config,
                                  const diagrams::ClosedLoopFactory& policy,
                                  const LearntWeights& weights, const EvaluationSettings& settings);
 
+// The same runs of a closed loop that learns nothing (pd_only: the supervisor alone), as it
+// is. Throws std::invalid_argument for a loop that learns.
+PolicyEvaluation evaluate_controller(const config::Config& config,
+                                     const diagrams::ClosedLoopFactory& controller,
+                                     const EvaluationSettings& settings);
+
 }  // namespace cbbg::experiments

@@ -17,7 +17,8 @@ and for exp3, as for exp1 and also:
                        (the actor alone balances from every exp3.angles), one point per seed
 and for a sweep (a directory with sweep.csv, written by cbbg merge):
   sweep_<key>.png      the headline figure (median and range over seeds) against each
-                       swept key, one line per arm and per value of the other keys
+                       swept key, one line per arm and per value of the other keys, and
+                       beside it the evaluation's balance rate where sweep.csv has one
 
 The figures are drawn into a staging folder that replaces DIR/figures only when all of
 them are written. Exit status: 0 done, 2 a missing or malformed input file (one line on
@@ -879,7 +880,14 @@ def read_sweep(path):
     for line, row in enumerate(rows, start=2):
         for suffix in ("_median", "_min", "_max"):
             parse_number(path, line, headline + suffix, row[headline + suffix])
+        if row.get("balance_rate"):
+            parse_number(path, line, "balance_rate", row["balance_rate"])
     return keys, headline, rows
+
+
+def has_balance_rates(rows):
+    """Whether sweep.csv's rows carry the evaluation's balance rate (exp1, exp3)."""
+    return any(row.get("balance_rate") for row in rows)
 
 
 def axis_positions(values):
@@ -891,15 +899,18 @@ def axis_positions(values):
         return list(range(len(values))), values
 
 
-def plot_sweep_key(key, keys, headline, rows, plant):
-    values = list(dict.fromkeys(row[key] for row in rows))
-    positions, labels = axis_positions(values)
+def sweep_lines(key, keys, rows):
+    """The rows of each line of a key's figure: one per arm and values of the other keys,
+    each {value of key: row}."""
     others = [k for k in keys if k != key]
-    fig, ax = new_figure()
     lines = {}
     for row in rows:
         label = row["arm"] + "".join(f", {k}={row[k]}" for k in others)
         lines.setdefault(label, {})[row[key]] = row
+    return lines
+
+
+def draw_sweep_headline(ax, values, positions, lines, headline):
     for label, by_value in lines.items():
         xs = [positions[values.index(v)] for v in values if v in by_value]
         picked = [by_value[v] for v in values if v in by_value]
@@ -908,16 +919,41 @@ def plot_sweep_key(key, keys, headline, rows, plant):
         high = [float(r[headline + "_max"]) for r in picked]
         (line,) = ax.plot(xs, median, marker="o", label=label)
         ax.fill_between(xs, low, high, color=line.get_color(), alpha=0.15, linewidth=0)
-    if labels is not None:
-        ax.set_xticks(positions)
-        ax.set_xticklabels(labels)
+
+
+def draw_sweep_balance(ax, values, positions, lines):
+    for label, by_value in lines.items():
+        picked = [(positions[values.index(v)], by_value[v]) for v in values
+                  if v in by_value and by_value[v].get("balance_rate")]
+        ax.plot([x for x, _ in picked], [float(r["balance_rate"]) for _, r in picked],
+                marker="o", label=label)
+    ax.set_ylim(-0.05, 1.05)
+
+
+def plot_sweep_key(key, keys, headline, rows, plant):
+    values = list(dict.fromkeys(row[key] for row in rows))
+    positions, labels = axis_positions(values)
+    lines = sweep_lines(key, keys, rows)
+    balance = has_balance_rates(rows)
+    fig, axes = new_figure(ncols=2 if balance else 1)
+    axes = list(axes) if balance else [axes]
+    draw_sweep_headline(axes[0], values, positions, lines, headline)
     seeds = rows[0]["seeds"] if rows else "?"
-    ax.set_xlabel(key)
-    ax.set_ylabel(headline.replace("_", " ") + f" (median, range over {seeds} seeds)")
-    ax.set_title(f"{headline.replace('_', ' ')} against {key} (sweep, {plant} plant)")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize="small")
-    fig.tight_layout()
+    axes[0].set_ylabel(headline.replace("_", " ") + f" (median, range over {seeds} seeds)")
+    axes[0].set_title("learning")
+    if balance:
+        fig.set_size_inches(FIGURE_SIZE[0] * 1.5, FIGURE_SIZE[1])
+        draw_sweep_balance(axes[1], values, positions, lines)
+        axes[1].set_ylabel("balanced runs / runs (seeds x angles)")
+        axes[1].set_title("evaluation")
+    for ax in axes:
+        if labels is not None:
+            ax.set_xticks(positions)
+            ax.set_xticklabels(labels)
+        ax.set_xlabel(key)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize="small")
+    fig.suptitle(f"sweep of {key}, {plant} plant")
     return fig
 
 

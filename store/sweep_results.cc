@@ -1,6 +1,7 @@
 #include "store/sweep_results.h"
 
 #include <algorithm>
+#include <functional>
 
 #include "framework/number_text.h"
 #include "store/results_writer.h"
@@ -34,36 +35,70 @@ int headline(const std::string& experiment, const experiments::SeedRun& run) {
   }));
 }
 
+namespace {
+
+// The evaluation runs (exp1, exp3) of one arm over the seeds, and how many balanced.
+struct Evaluated {
+  int runs = 0;
+  int balanced = 0;
+};
+
+Evaluated evaluated(const experiments::ExperimentResults& point, std::size_t arm) {
+  Evaluated count;
+  for (std::size_t s = 0; s < point.seeds.size(); ++s) {
+    for (const experiments::EvaluationRecord& record : point.run(arm, s).evaluation) {
+      ++count.runs;
+      count.balanced += record.outcome.status == experiments::TrialStatus::kSuccess ? 1 : 0;
+    }
+  }
+  return count;
+}
+
+// The figures of one arm at one grid point, after the point's name and values.
+void append_arm_figures(const experiments::ExperimentResults& point, std::size_t arm,
+                        const std::function<void(const std::string&)>& column) {
+  std::vector<int> figures;
+  int succeeded = 0;
+  for (std::size_t s = 0; s < point.seeds.size(); ++s) {
+    figures.push_back(headline(point.experiment, point.run(arm, s)));
+    succeeded += point.run(arm, s).succeeded ? 1 : 0;
+  }
+  column(point.arms[arm]);
+  column(std::to_string(point.seeds.size()));
+  column(std::to_string(succeeded));
+  column(format_number(median(figures)));
+  column(std::to_string(*std::min_element(figures.begin(), figures.end())));
+  column(std::to_string(*std::max_element(figures.begin(), figures.end())));
+  const Evaluated evaluation = evaluated(point, arm);
+  column(std::to_string(evaluation.runs));
+  column(std::to_string(evaluation.balanced));
+  column(evaluation.runs == 0
+             ? std::string()
+             : format_number(static_cast<double>(evaluation.balanced) / evaluation.runs));
+}
+
+}  // namespace
+
 std::string sweep_csv(const config::Sweep& sweep,
                       const std::vector<experiments::ExperimentResults>& results) {
   const std::string name = headline_name(results.front().experiment);
   std::string csv = "point";
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on chains of operator+.
-  auto column = [&csv](const std::string& text) {
+  const std::function<void(const std::string&)> column = [&csv](const std::string& text) {
     csv += ',';
     csv += text;
   };
   for (const auto& axis : sweep.axes()) column(field(axis.key));
   for (const char* fixed : {"arm", "seeds", "succeeded"}) column(fixed);
   for (const char* suffix : {"_median", "_min", "_max"}) column(name + suffix);
+  for (const char* evaluation : {"evaluated", "balanced", "balance_rate"}) column(evaluation);
   csv += '\n';
   for (std::size_t p = 0; p < results.size(); ++p) {
     const experiments::ExperimentResults& point = results[p];
     for (std::size_t a = 0; a < point.arms.size(); ++a) {
-      std::vector<int> figures;
-      int succeeded = 0;
-      for (std::size_t s = 0; s < point.seeds.size(); ++s) {
-        figures.push_back(headline(point.experiment, point.run(a, s)));
-        succeeded += point.run(a, s).succeeded ? 1 : 0;
-      }
       csv += point_name(p, results.size());
       for (const std::string& value : sweep.values(p)) column(field(value));
-      column(point.arms[a]);
-      column(std::to_string(point.seeds.size()));
-      column(std::to_string(succeeded));
-      column(format_number(median(figures)));
-      column(std::to_string(*std::min_element(figures.begin(), figures.end())));
-      column(std::to_string(*std::max_element(figures.begin(), figures.end())));
+      append_arm_figures(point, a, column);
       csv += '\n';
     }
   }

@@ -1,7 +1,7 @@
 #pragma once
 // sweep.csv: one row per grid point and arm, with the grid's values and the experiment's
 // headline figure over the seeds: exp1's failures before the first success, exp2's
-// balanced trials per seed.
+// balanced trials per seed; and the evaluation's balance rate.
 
 #include <string>
 #include <vector>
@@ -17,8 +17,10 @@ std::string headline_name(const std::string& experiment);
 // One seed's headline figure.
 int headline(const std::string& experiment, const experiments::SeedRun& run);
 
-// Columns: point, each swept key, arm, seeds, succeeded (seeds with a successful trial), and
-// the headline's median, min and max over the seeds. `results[p]` is grid point p's.
+// Columns: point, each swept key, arm, seeds, succeeded (seeds with a successful trial), the
+// headline's median, min and max over the seeds, then the evaluation's runs over the seeds
+// and angles (exp1, exp3), those that balanced, and their ratio, the balance rate (empty
+// without runs). `results[p]` is grid point p's.
 std::string sweep_csv(const config::Sweep& sweep,
                       const std::vector<experiments::ExperimentResults>& results);
 

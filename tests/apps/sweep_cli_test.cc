@@ -9,9 +9,11 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "framework/number_text.h"
 #include "tests/apps/cbbg_process.h"
 #include "tests/support/scratch_directory.h"
 
@@ -26,6 +28,24 @@ using ::testing::HasSubstr;
 const std::string kSweep =
     "run --set plant.kind=analytic --seeds 3 --no-figures --grid actor.alpha=0.1,0.2 "
     "--grid critic.beta=0.05,0.1";
+
+// Line `n` (from 0) of `text`.
+std::string line(const std::string& text, int n) {
+  std::istringstream lines(text);
+  std::string result;
+  for (int i = 0; i <= n; ++i) std::getline(lines, result);
+  return result;
+}
+
+// The rows of an evaluation.csv of `arm` whose run balanced (status success).
+int successes_of(const std::string& arm, const std::string& evaluation_csv) {
+  std::istringstream rows(evaluation_csv);
+  int count = 0;
+  for (std::string row; std::getline(rows, row);) {
+    count += row.starts_with(arm + ",") && row.ends_with(",success") ? 1 : 0;
+  }
+  return count;
+}
 
 class Sweep : public ::testing::Test {
  protected:
@@ -51,8 +71,14 @@ TEST_F(Sweep, WritesEveryGridPointAndSweepCsv) {
   EXPECT_THAT(csv,
               ::testing::StartsWith("point,actor.alpha,critic.beta,arm,seeds,succeeded,"
                                     "failures_before_success_median,failures_before_success_min,"
-                                    "failures_before_success_max\n001,0.1,0.05,cbbg,3,3,"));
+                                    "failures_before_success_max,evaluated,balanced,"
+                                    "balance_rate\n001,0.1,0.05,cbbg,3,3,"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 4 * 2);
+  // The balance rate is the point's evaluation.csv counted: 3 seeds x 5 angles per arm.
+  const int balanced = successes_of(
+      "cbbg", cbbg::testing::read_file(scratch_ / "single" / "points" / "001" / "evaluation.csv"));
+  EXPECT_THAT(line(csv, 1), ::testing::EndsWith(",15," + std::to_string(balanced) + "," +
+                                                cbbg::format_number(balanced / 15.0)));
   // Each point's config is the base config with the point's values.
   EXPECT_THAT(cbbg::testing::read_file(scratch_ / "single" / "points" / "004" / "config.yaml"),
               HasSubstr("alpha: 0.2"));

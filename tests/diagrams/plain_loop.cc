@@ -139,6 +139,9 @@ PlainLoop::PlainLoop(const config::Config& config, std::uint64_t root_seed, std:
   }
   require_all_zero(config, "sensors.noise_std");
   require_all_zero(config, "sensors.quantisation");
+  if (config.number("push.torque") != 0.0) {
+    throw std::invalid_argument("PlainLoop has no push: push.torque must be 0");
+  }
   diagrams::validate_all(config);
 
   state_ = std::make_unique<State>(config, root_seed);

@@ -1,0 +1,57 @@
+#include "experiments/evaluation_conditions.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "blocks/measured_signals.h"
+#include "framework/number_text.h"
+
+namespace cbbg::experiments {
+namespace {
+
+void scale(config::Config& config, const std::string& key, double factor) {
+  config.set(key + "=" + format_number(config.number(key) * factor), "evaluation");
+}
+
+void add_pitch_noise(config::Config& config, double std) {
+  std::vector<double> noise = config.numbers("sensors.noise_std");
+  for (const int signal : {blocks::kMeasuredThetaB, blocks::kMeasuredThetaBDot}) {
+    noise[signal] = std::hypot(noise[signal], std);
+  }
+  std::string list;
+  for (std::size_t i = 0; i < noise.size(); ++i) {
+    list += i == 0 ? "[" : ", ";
+    list += format_number(noise[i]);
+  }
+  list += "]";
+  config.set("sensors.noise_std=" + list, "evaluation");
+}
+
+}  // namespace
+
+config::Config evaluation_config(const config::Config& training) {
+  config::Config config = training;
+  const double mass = training.number("evaluation.body_mass_scale");
+  if (mass != 1.0) {
+    for (const char* key : {"plant.body_mass", "plant.body_pitch_inertia", "plant.body_yaw_inertia",
+                            "plant.body_roll_inertia"}) {
+      scale(config, key, mass);
+    }
+  }
+  const double height = training.number("evaluation.com_height_scale");
+  if (height != 1.0) scale(config, "plant.com_height", height);
+  const double noise = training.number("evaluation.noise_std");
+  if (noise != 0.0) add_pitch_noise(config, noise);
+  const double push = training.number("evaluation.push_torque");
+  if (push != 0.0) {
+    config.set("push.torque=" + format_number(push), "evaluation");
+    config.set("push.start=" + format_number(training.number("evaluation.push_start")),
+               "evaluation");
+    config.set("push.duration=" + format_number(training.number("evaluation.push_duration")),
+               "evaluation");
+  }
+  return config;
+}
+
+}  // namespace cbbg::experiments

@@ -1,0 +1,25 @@
+#pragma once
+// The conditions a learnt policy (or a controller that learns nothing) is evaluated under:
+// the training config with the evaluation.* perturbations applied, so an evaluation can ask
+// how what was learnt copes with a robot it was not trained on.
+//
+//   evaluation.body_mass_scale   plant.body_mass and the body's three inertias times it (a
+//                                denser body of the same shape)
+//   evaluation.com_height_scale  plant.com_height times it (the load moved; the body's
+//                                inertias about its own centre of mass kept)
+//   evaluation.noise_std         Gaussian noise of this std added, in quadrature, to
+//                                sensors.noise_std's pitch and pitch rate
+//   evaluation.push_torque       when non-zero, push.* becomes this torque from
+//                                evaluation.push_start for evaluation.push_duration
+//
+// At their defaults (1, 1, 0, 0) the evaluation config equals the training config. A plant
+// parameter read by a controller at build time (supervisor.kind = lqr designs its gains
+// from plant.*) sees the perturbed value: the PD supervisor has fixed gains.
+
+#include "config/config.h"
+
+namespace cbbg::experiments {
+
+config::Config evaluation_config(const config::Config& training);
+
+}  // namespace cbbg::experiments

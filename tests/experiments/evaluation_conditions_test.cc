@@ -1,0 +1,156 @@
+#include "experiments/evaluation_conditions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "diagrams/presets.h"
+#include "experiments/experiments.h"
+#include "experiments/policy_evaluation.h"
+
+namespace cbbg::experiments {
+namespace {
+
+config::Config analytic_config() {
+  config::Config config;
+  config.set("plant.kind=analytic");
+  return config;
+}
+
+TEST(EvaluationConditions, AtTheirDefaultsTheEvaluationIsTheTraining) {
+  const config::Config training = analytic_config();
+  EXPECT_EQ(evaluation_config(training), training);
+}
+
+TEST(EvaluationConditions, TheMassScaleMakesTheBodyDenserAndLeavesTheWheels) {
+  config::Config training = analytic_config();
+  training.set("evaluation.body_mass_scale=1.3");
+  const config::Config evaluation = evaluation_config(training);
+  EXPECT_DOUBLE_EQ(evaluation.number("plant.body_mass"), 13.0);
+  EXPECT_DOUBLE_EQ(evaluation.number("plant.body_pitch_inertia"), 1.5417 * 1.3);
+  EXPECT_DOUBLE_EQ(evaluation.number("plant.body_yaw_inertia"), 0.5893 * 1.3);
+  EXPECT_DOUBLE_EQ(evaluation.number("plant.body_roll_inertia"), 1.5417 * 1.3);
+  EXPECT_EQ(evaluation.number("plant.wheel_mass"), 1.0);
+  EXPECT_EQ(evaluation.number("plant.com_height"), 0.4);
+}
+
+TEST(EvaluationConditions, TheHeightScaleMovesTheCentreOfMassOnly) {
+  config::Config training = analytic_config();
+  training.set("evaluation.com_height_scale=0.7");
+  const config::Config evaluation = evaluation_config(training);
+  EXPECT_DOUBLE_EQ(evaluation.number("plant.com_height"), 0.28);
+  EXPECT_EQ(evaluation.number("plant.body_pitch_inertia"), 1.5417);
+  EXPECT_EQ(evaluation.number("plant.body_mass"), 10.0);
+}
+
+TEST(EvaluationConditions, NoiseAddsInQuadratureToThePitchAndPitchRate) {
+  config::Config training = analytic_config();
+  training.set("sensors.noise_std=[0.03, 0, 0.5, 0, 0, 0]");
+  training.set("evaluation.noise_std=0.04");
+  EXPECT_THAT(
+      evaluation_config(training).numbers("sensors.noise_std"),
+      ::testing::Pointwise(::testing::DoubleEq(), std::vector<double>{0.05, 0.04, 0.5, 0, 0, 0}));
+}
+
+TEST(EvaluationConditions, APushTorqueSetsThePushOfEveryTrial) {
+  config::Config training = analytic_config();
+  training.set("evaluation.push_torque=-3");
+  training.set("evaluation.push_start=2");
+  training.set("evaluation.push_duration=0.5");
+  const config::Config evaluation = evaluation_config(training);
+  EXPECT_EQ(evaluation.number("push.torque"), -3.0);
+  EXPECT_EQ(evaluation.number("push.start"), 2.0);
+  EXPECT_EQ(evaluation.number("push.duration"), 0.5);
+  EXPECT_EQ(training.number("push.torque"), 0.0);
+}
+
+bool has_push(const config::Config& config) {
+  const diagrams::ClosedLoop loop = diagrams::build_preset("pd_only", config);
+  const auto& blocks = loop.diagram->blocks();
+  return std::any_of(blocks.begin(), blocks.end(),
+                     [](const auto& block) { return block->name() == "push"; });
+}
+
+TEST(EvaluationConditions, ThePushOfTheConfigIsABlockOfTheClosedLoop) {
+  config::Config config = analytic_config();
+  EXPECT_FALSE(has_push(config));
+  config.set("push.torque=2");
+  EXPECT_TRUE(has_push(config));
+}
+
+// The supervisor alone, as evaluated, from 0.1744 rad.
+TrialOutcome supervisor_alone(const config::Config& training) {
+  const config::Config config = evaluation_config(training);
+  const PolicyEvaluation evaluation = evaluate_controller(
+      config, diagrams::preset_arm("pd_only").learner, EvaluationSettings{{0.1744}, 1});
+  return evaluation.angles.front().runs.front();
+}
+
+TEST(EvaluationConditions, AStrongPushFellsTheSupervisorThatStandsWithoutIt) {
+  config::Config training = analytic_config();
+  ASSERT_EQ(supervisor_alone(training).status, TrialStatus::kSuccess);
+  // Full torque on both wheels for 1.5 s from 2 s: the body is thrown back.
+  training.set("evaluation.push_torque=-20");
+  training.set("evaluation.push_start=2");
+  training.set("evaluation.push_duration=1.5");
+  const TrialOutcome pushed = supervisor_alone(training);
+  EXPECT_EQ(pushed.status, TrialStatus::kFailed);
+  EXPECT_GT(pushed.steps, 200);  // it stood until the push began
+}
+
+TEST(EvaluationConditions, ANoisyPitchChangesWhatTheSupervisorDoes) {
+  config::Config training = analytic_config();
+  const TrialOutcome clean = supervisor_alone(training);
+  training.set("evaluation.noise_std=0.01");
+  EXPECT_NE(supervisor_alone(training).final_theta, clean.final_theta);
+}
+
+TEST(EvaluationConditions, ALearningLoopIsEvaluatedThroughItsPolicy) {
+  EXPECT_THAT(([] {
+                evaluate_controller(analytic_config(), diagrams::preset_arm("cbbg").learner,
+                                    EvaluationSettings{{0.1}, 1});
+              }),
+              ::testing::ThrowsMessage<std::invalid_argument>(
+                  "the closed loop 'cbbg' learns: evaluate its learnt policy instead"));
+}
+
+TEST(EvaluationConditions, Exp1EvaluatesTheSupervisorAloneUnderThem) {
+  config::Config config = analytic_config();
+  config.set("seeds=1");
+  config.set("evaluation.angles=[0.1744]");
+  config.set("evaluation.push_torque=-20");
+  config.set("evaluation.push_start=2");
+  config.set("evaluation.push_duration=1.5");
+  const ExperimentResults results = run_exp1(config, {diagrams::preset_arm("pd_only")});
+  const SeedRun& run = results.run(0, 0);
+  ASSERT_TRUE(run.succeeded);  // trained (here: run) unpushed
+  ASSERT_EQ(run.evaluation.size(), 1u);
+  EXPECT_EQ(run.evaluation[0].outcome.status, TrialStatus::kFailed);  // evaluated pushed
+}
+
+TEST(EvaluationConditions, Exp3EvaluatesTheActorItTaughtUnderThem) {
+  config::Config config = analytic_config();
+  config.set("seeds=1");
+  config.set("evaluation.angles=[0.05, 0.25]");
+  const ExperimentResults nominal = run_exp3(config, {diagrams::preset_arm("bg_only")});
+  const SeedRun& run = nominal.run(0, 0);
+  ASSERT_TRUE(run.trials_to_skill.has_value());
+  ASSERT_EQ(run.evaluation.size(), 2u);
+  EXPECT_EQ(run.evaluation[1].theta0, 0.25);
+  // The skill test passed from 0.25 rad after the last trial, and the evaluation's run from
+  // there is the same run.
+  EXPECT_EQ(run.evaluation[1].outcome.status, TrialStatus::kSuccess);
+
+  config.set("evaluation.com_height_scale=0.5");
+  const ExperimentResults lower = run_exp3(config, {diagrams::preset_arm("bg_only")});
+  EXPECT_EQ(lower.run(0, 0).trials_to_skill, run.trials_to_skill);  // training is nominal
+  EXPECT_EQ(lower.run(0, 0).failures_to_skill, run.failures_to_skill);
+  EXPECT_NE(lower.run(0, 0).evaluation[1].outcome.final_theta,
+            run.evaluation[1].outcome.final_theta);
+}
+
+}  // namespace
+}  // namespace cbbg::experiments
