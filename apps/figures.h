@@ -23,8 +23,8 @@ int run_plot_script(const std::filesystem::path& directory, bool quiet);
 void draw_diagram(const std::string& name, const config::Config& config,
                   const std::filesystem::path& output, const GraphvizOptions& options);
 
-// The telemetry multiplexer of the closed loop named `name`: left out of pictures by
-// default, since it reads every signal.
+// The telemetry multiplexer of the closed loop named `name`, and the pose it records: left
+// out of pictures by default, since the multiplexer reads every signal.
 std::vector<std::string> telemetry_blocks(const std::string& name);
 
 }  // namespace cbbg::app

@@ -74,7 +74,9 @@ void draw_diagram(const std::string& name, const config::Config& config,
   render_dot(to_dot(*loop.diagram, options), output);
 }
 
-std::vector<std::string> telemetry_blocks(const std::string& name) { return {name + "/telemetry"}; }
+std::vector<std::string> telemetry_blocks(const std::string& name) {
+  return {name + "/telemetry", name + "/pose"};
+}
 
 int plot_command(const std::filesystem::path& directory) {
   config::Config config;

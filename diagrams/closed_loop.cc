@@ -8,6 +8,7 @@
 #include "diagrams/params_from_config.h"
 #include "framework/diagram_builder.h"
 #include "framework/primitives/multiplexer.h"
+#include "framework/primitives/selector.h"
 #include "framework/primitives/zero_order_hold.h"
 #include "plant/analytic_plant.h"
 #include "plant/simbody_plant.h"
@@ -69,7 +70,8 @@ void wire_actuation(DiagramBuilder& builder, const config::Config& config, const
 
 // The multiplexer of telemetry.h's signals.
 const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& measured,
-                                 const CbbgController& controller, const OutputPort& reward) {
+                                 const CbbgController& controller, const OutputPort& reward,
+                                 const plant::RobotPlant& robot) {
   const std::vector<std::string> from_controller{
       "supervisor_action", "actor_action", "exploration_action", "action", "omega", "value",
       "td_error",          "temperature"};
@@ -77,7 +79,12 @@ const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& meas
   for (const auto& name : from_controller) inputs.push_back({name, 1});
   inputs.push_back({"reward", 1});
   inputs.push_back({"entropy", 1});
+  inputs.push_back({"pose", 3});
   auto& telemetry = builder.emplace<Multiplexer>("telemetry", inputs);
+  auto& pose = builder.emplace<Selector>("pose", plant::kStateSize,
+                                         std::vector<int>{plant::kX, plant::kY, plant::kYaw});
+  builder.connect(robot.state_output(), pose.input_port("u"));
+  builder.connect(pose.output_port("y"), telemetry.input_port("pose"));
   builder.connect(measured, telemetry.input_port("measured"));
   for (const auto& name : from_controller) {
     builder.connect(controller.output_port(name), telemetry.input_port(name));
@@ -131,7 +138,7 @@ ClosedLoop build_closed_loop(std::string name, const config::Config& config,
   if (brain.failed() != nullptr) builder.connect(failure.output_port("failed"), *brain.failed());
   wire_actuation(builder, config, brain.action(), robot,
                  options.push ? options.push : configured_push(config));
-  loop.telemetry = &wire_telemetry(builder, measured, brain, reward.output_port("reward"));
+  loop.telemetry = &wire_telemetry(builder, measured, brain, reward.output_port("reward"), robot);
   loop.diagram = builder.build();
   return loop;
 }

@@ -26,7 +26,10 @@ constexpr int kStepsColumns[] = {kTelemetryThetaB,
                                  kTelemetryValue,
                                  kTelemetryTdError,
                                  kTelemetryTemperature,
-                                 kTelemetryReward};
+                                 kTelemetryReward,
+                                 kTelemetryX,
+                                 kTelemetryY,
+                                 kTelemetryYaw};
 
 // Writes `value` in its shortest round-trip form, without allocating.
 void write_number(std::ostream& out, double value) {
@@ -50,7 +53,8 @@ const char* to_string(TrialStatus status) {
 }
 
 const char* steps_csv_header() {
-  return "arm,seed,trial,t,theta_b,dtheta_b,phi_l,phi_r,a_S,a_A,a_E,a,omega,V,delta,T,reward\n";
+  return "arm,seed,trial,t,theta_b,dtheta_b,phi_l,phi_r,a_S,a_A,a_E,a,omega,V,delta,T,reward,x,y,"
+         "yaw\n";
 }
 
 TrialRunner::TrialRunner(const diagrams::ClosedLoop& loop, std::uint64_t seed, double period,

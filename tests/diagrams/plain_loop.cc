@@ -319,7 +319,7 @@ bool PlainLoop::State::tick() {
 
   ticks.push_back({theta, theta_dot, phi_left, phi_right, phi_left_dot, phi_right_dot,
                    supervisor_action, actor_action, exploration_action, action, omega, value,
-                   td_error, temperature, reward, entropy});
+                   td_error, temperature, reward, entropy, x[6], x[7], x[8]});
 
   // Updates, all from the values above and the memories before this tick.
   omega_ticks += 1.0;
@@ -352,7 +352,7 @@ bool PlainLoop::State::supervisor_alone(bool failed, double reward, double surfa
                                         double supervisor_action) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   ticks.push_back({x[0], x[3], x[1], x[2], x[4], x[5], supervisor_action, nan, nan,
-                   supervisor_action, 0.0, nan, nan, nan, reward, nan});
+                   supervisor_action, 0.0, nan, nan, nan, reward, nan, x[6], x[7], x[8]});
   previous_surface = surface;
   has_previous = true;
   held_torque = supervisor_action;

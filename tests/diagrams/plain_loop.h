@@ -44,6 +44,9 @@ struct PlainLoopTick {
   double temperature = 0.0;  // T
   double reward = 0.0;       // r_{t-1}
   double entropy = 0.0;      // E, bits
+  double x = 0.0;            // the pose: m, m, rad
+  double y = 0.0;
+  double yaw = 0.0;
 };
 
 enum class PlainLoopStatus { kSuccess, kFailed, kDiverged };

@@ -51,6 +51,9 @@ constexpr std::array<Signal, diagrams::kTelemetrySize> kSignals = {{
     {"temperature", diagrams::kTelemetryTemperature, &PlainLoopTick::temperature},
     {"reward", diagrams::kTelemetryReward, &PlainLoopTick::reward},
     {"entropy", diagrams::kTelemetryEntropy, &PlainLoopTick::entropy},
+    {"x", diagrams::kTelemetryX, &PlainLoopTick::x},
+    {"y", diagrams::kTelemetryY, &PlainLoopTick::y},
+    {"yaw", diagrams::kTelemetryYaw, &PlainLoopTick::yaw},
 }};
 
 std::string exact(double value) {

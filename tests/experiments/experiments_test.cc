@@ -38,6 +38,27 @@ TEST(TrialRunner, ATrialReachingItsDurationSucceeds) {
   EXPECT_EQ(outcome.steps, 200);  // ticks at 0, 0.01, ..., 1.99
 }
 
+// The telemetry's pose is the plant's: on a straight run the axle rolls R (phi_l + phi_r) / 2
+// along x, on both plants.
+TEST(TrialRunner, RecordsThePoseTheWheelsRolledTo) {
+  for (const char* kind : {"analytic", "simbody"}) {
+    config::Config config = quick_config();
+    config.set(std::string("plant.kind=") + kind);
+    const auto controller = build_preset("pd_only", config);
+    TrialRunner runner(controller, 1, config.number("trial.period"));
+    ASSERT_EQ(runner.run_trial(0.1744, 2.0).status, TrialStatus::kSuccess);
+    const auto values = runner.telemetry().values();
+    const Eigen::Index last = values.cols() - 1;
+    const double rolled = config.number("plant.wheel_radius") *
+                          (values(kTelemetryPhiLeft, last) + values(kTelemetryPhiRight, last)) / 2;
+    EXPECT_GT(std::abs(rolled), 0.05) << kind;  // it moved
+    EXPECT_NEAR(values(kTelemetryX, last), rolled, 1e-6) << kind;
+    EXPECT_NEAR(values(kTelemetryY, last), 0.0, 1e-9) << kind;
+    EXPECT_NEAR(values(kTelemetryYaw, last), 0.0, 1e-9) << kind;
+    EXPECT_EQ(values(kTelemetryX, 0), 0.0) << kind;
+  }
+}
+
 // The oscillation figures are the telemetry's, from the settle time on: recomputed here
 // from the kept log.
 TEST(TrialRunner, MeasuresTheOscillationAfterTheSettleTime) {

@@ -1,9 +1,11 @@
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "framework/diagram_builder.h"
 #include "framework/primitives/constant_source.h"
 #include "framework/primitives/gain.h"
 #include "framework/primitives/multiplexer.h"
+#include "framework/primitives/selector.h"
 #include "framework/primitives/zero_order_hold.h"
 #include "framework/simulator.h"
 #include "tests/framework/test_blocks.h"
@@ -39,6 +41,32 @@ TEST(Primitives, MultiplexerConcatenatesInOrder) {
   EXPECT_EQ(diagram->eval_output(*context, mux.output_port("y")), expected);
   EXPECT_EQ(mux.output_port("y").size(), 5);
   EXPECT_EQ(mux.output_reads(0), (std::vector<int>{0, 1, 2}));
+}
+
+TEST(Primitives, SelectorPicksTheElementsInTheOrderGiven) {
+  DiagramBuilder builder("top");
+  auto& source = builder.emplace<ConstantSource>("source", Eigen::Vector4d(1.0, 2.0, 3.0, 4.0));
+  auto& selector = builder.emplace<Selector>("pick", 4, std::vector<int>{3, 0, 3});
+  builder.connect(source, "y", selector, "u");
+  auto diagram = builder.build();
+  auto context = diagram->create_context();
+  EXPECT_EQ(diagram->eval_output(*context, selector.output_port("y")),
+            Eigen::Vector3d(4.0, 1.0, 4.0));
+  EXPECT_EQ(selector.output_reads(0), std::vector<int>{0});  // direct feedthrough
+}
+
+TEST(Primitives, SelectorRefusesIndicesOutsideItsInput) {
+  EXPECT_THAT(
+      [] {
+        Selector("pick", 4, {0, 4});
+      },
+      ::testing::ThrowsMessage<std::invalid_argument>(
+          "selector 'pick': index 4 is outside its input of size 4"));
+  EXPECT_THAT([] { Selector("pick", 4, {-1}); },
+              ::testing::ThrowsMessage<std::invalid_argument>(
+                  "selector 'pick': index -1 is outside its input of size 4"));
+  EXPECT_THAT([] { Selector("pick", 4, {}); }, ::testing::ThrowsMessage<std::invalid_argument>(
+                                                   "selector 'pick': select at least one element"));
 }
 
 TEST(Primitives, ZeroOrderHoldStartsFromItsInitialValueAndSamplesAtItsPeriod) {
