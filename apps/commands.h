@@ -24,6 +24,7 @@ struct RunOptions {
   std::filesystem::path load_weights;           // non-empty: learning starts from these weights
   std::filesystem::path save_weights;           // non-empty: the one learning run's weights go here
   bool figures = true;
+  bool replays = true;               // figures/ gets a replay page per arm (its first seed)
   bool replace = false;              // a finished results directory at --out may be replaced
   std::vector<std::string> grid;     // KEY=V1,V2,... axes of a sweep, in order
   std::optional<std::string> shard;  // "K/N" as typed: run only that shard of the sweep
@@ -44,6 +45,15 @@ struct GraphOptions {
 int graph_command(const GraphOptions& options);
 
 int plot_command(const std::filesystem::path& directory);
+
+struct ReplayOptions {
+  std::filesystem::path directory;  // a results directory
+  std::optional<std::string> arm;   // unset: its first arm
+  std::optional<long long> seed;    // unset: the arm's first seed
+  std::vector<int> trials;          // empty: the first, the first successful and the last
+  std::filesystem::path output;     // the page
+};
+int replay_command(const ReplayOptions& options);
 // A sweep's work directory: merged into one results directory, or its tasks counted.
 int merge_command(const std::filesystem::path& target);
 int status_command(const std::filesystem::path& target);

@@ -11,10 +11,25 @@
 
 namespace cbbg::app {
 
-// Draws DIR/figures/. A missing Python/matplotlib or Graphviz is reported as a warning: the
-// data files stand on their own. Returns false when a figure could not be made.
-// Quiet hides the script's list of files written.
-bool draw_figures(const std::filesystem::path& directory, const config::Config& config, bool quiet);
+struct FigureOptions {
+  bool quiet = false;    // hide the script's list of files written
+  bool replays = true;   // the replay pages too (write_run_replays)
+  std::string run_name;  // the replays' title; empty: the directory's name
+};
+
+// Draws DIR/figures/. A missing Python/matplotlib, Graphviz or replay page is reported as a
+// warning: the data files stand on their own. Returns false when a figure could not be made.
+bool draw_figures(const std::filesystem::path& directory, const config::Config& config,
+                  const FigureOptions& options);
+
+// DIR/figures/replay_<arm>.html per arm of the run: its first seed's first trial, first
+// successful trial and last trial. Warns and returns false when they cannot be written.
+bool write_run_replays(const std::filesystem::path& directory, const config::Config& config,
+                       const std::string& run_name);
+
+// A file cbbg installs in share/cbbg/ beside the directory of this executable (bin/ when
+// installed, apps/ in the build tree), or the path in the environment variable `override`.
+std::filesystem::path shared_file(const char* override, const char* name);
 
 // Runs the plotting script on DIR; returns its exit code.
 int run_plot_script(const std::filesystem::path& directory, bool quiet);

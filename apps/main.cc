@@ -64,6 +64,8 @@ int main(int argc, char** argv) {
                     "replace the results of an earlier run at --out (kept until the new ones "
                     "are complete)");
   run_app->add_flag("!--no-figures", run.figures, "skip the figures");
+  run_app->add_flag("!--no-replay", run.replays,
+                    "skip the replay pages in figures/ (cbbg replay makes one of any trial)");
   run_app->add_option("--load-weights", run.load_weights,
                       "start learning from a weights file (docs/weights-format.md)");
   run_app->add_option("--save-weights", run.save_weights,
@@ -99,6 +101,17 @@ int main(int argc, char** argv) {
   std::filesystem::path plot_directory;
   CLI::App* plot_app = app.add_subcommand("plot", "draw the figures of a results directory");
   plot_app->add_option("DIR", plot_directory, "a results directory")->required();
+
+  ReplayOptions replay;
+  CLI::App* replay_app = app.add_subcommand(
+      "replay", "a 3-D replay of trials in one offline HTML file (open it in a browser)");
+  replay_app->add_option("DIR", replay.directory, "a results directory")->required();
+  replay_app->add_option("--arm", replay.arm, "the arm (default: the run's first)");
+  replay_app->add_option("--seed", replay.seed, "the seed (default: the arm's first)");
+  replay_app->add_option("--trial", replay.trials,
+                         "trials to show, from 1 (default: the first, the first successful "
+                         "and the last)");
+  replay_app->add_option("-o,--out", replay.output, "the page to write, FILE.html")->required();
 
   EvalOptions eval;
   CLI::App* eval_app =
@@ -149,6 +162,7 @@ int main(int argc, char** argv) {
     if (eval_app->parsed()) return eval_command(eval);
     if (graph_app->parsed()) return graph_command(graph);
     if (plot_app->parsed()) return plot_command(plot_directory);
+    if (replay_app->parsed()) return replay_command(replay);
     if (list_app->parsed()) return list_command();
     if (merge_app->parsed()) return merge_command(merge_directory);
     if (status_app->parsed()) return status_command(status_directory);

@@ -25,21 +25,17 @@ std::string quoted(const std::string& text) {
   return result + "'";
 }
 
-// The plotting script: $CBBG_PLOT_SCRIPT, else share/cbbg/plot_results.py beside the
-// directory of this executable (bin/ when installed, apps/ in the build tree).
-std::filesystem::path plot_script() {
-  if (const char* chosen = std::getenv("CBBG_PLOT_SCRIPT"); chosen != nullptr && *chosen) {
-    return chosen;
-  }
-  std::error_code error;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  return self.parent_path().parent_path() / "share" / "cbbg" / "plot_results.py";
-}
-
 }  // namespace
 
+std::filesystem::path shared_file(const char* override, const char* name) {
+  if (const char* chosen = std::getenv(override); chosen != nullptr && *chosen) return chosen;
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  return self.parent_path().parent_path() / "share" / "cbbg" / name;
+}
+
 int run_plot_script(const std::filesystem::path& directory, bool quiet) {
-  const std::filesystem::path script = plot_script();
+  const std::filesystem::path script = shared_file("CBBG_PLOT_SCRIPT", "plot_results.py");
   if (!std::filesystem::is_regular_file(script)) {
     spdlog::warn("the plotting script '{}' is missing (set CBBG_PLOT_SCRIPT)", script.string());
     return 1;
@@ -53,8 +49,8 @@ int run_plot_script(const std::filesystem::path& directory, bool quiet) {
 }
 
 bool draw_figures(const std::filesystem::path& directory, const config::Config& config,
-                  bool quiet) {
-  bool complete = run_plot_script(directory, quiet) == 0;
+                  const FigureOptions& options) {
+  bool complete = run_plot_script(directory, options.quiet) == 0;
   if (!complete) spdlog::warn("the plots could not be drawn (see the message above)");
   std::filesystem::create_directories(directory / "figures");
   const std::string arm = experiments::experiment_arms(config).front();
@@ -64,6 +60,9 @@ bool draw_figures(const std::filesystem::path& directory, const config::Config& 
   } catch (const std::runtime_error& error) {
     spdlog::warn("diagram.svg: {}", error.what());
     complete = false;
+  }
+  if (options.replays) {
+    complete = write_run_replays(directory, config, options.run_name) && complete;
   }
   return complete;
 }
@@ -93,7 +92,7 @@ int plot_command(const std::filesystem::path& directory) {
   } catch (const std::exception& error) {
     return report_error(kMachineError, describe(error));
   }
-  return draw_figures(directory, config, /*quiet=*/false) ? 0 : 1;
+  return draw_figures(directory, config, {}) ? 0 : 1;
 }
 
 }  // namespace cbbg::app

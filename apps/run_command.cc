@@ -127,11 +127,12 @@ struct PreparedRun {
 void check_resume_alone(const RunOptions& options) {
   if (!options.config_file.empty() || !options.sets.empty() || options.experiment ||
       options.seeds || options.seed || !options.load_weights.empty() || options.replace ||
-      !options.figures || !options.grid.empty() || options.shard) {
+      !options.figures || !options.replays || !options.grid.empty() || options.shard) {
     throw config::ConfigError(
         "--resume continues with the config, weights and options of the interrupted run; drop "
         "--config, --set, --experiment, --seeds, --seed, --load-weights, --replace, "
-        "--no-figures, --grid and --shard (a sweep continues by running its command again)");
+        "--no-figures, --no-replay, --grid and --shard (a sweep continues by running its "
+        "command again)");
   }
 }
 
@@ -161,7 +162,8 @@ PreparedRun prepare(const RunOptions& options) {
   }
   if (!run.directory) {
     run.directory = store::RunDirectory::create(
-        options.out, run.config, {.figures = options.figures, .replace = options.replace});
+        options.out, run.config,
+        {.figures = options.figures, .replays = options.replays, .replace = options.replace});
     if (run.initial_weights) {
       store::save_weights(run.directory->initial_weights(), *run.initial_weights);
     }
@@ -189,7 +191,12 @@ void execute(const RunOptions& options, PreparedRun& run) {
   const experiments::ExperimentResults results = experiments::run_experiment(config, experiment);
   progress.close();
   store::write_result_files(results, config, directory.work(), &store);
-  if (directory.shape().figures) draw_figures(directory.work(), config, /*quiet=*/true);
+  if (directory.shape().figures) {
+    draw_figures(directory.work(), config,
+                 {.quiet = true,
+                  .replays = directory.shape().replays,
+                  .run_name = directory.target().filename().string()});
+  }
   directory.commit();
   print_summary(results);
   if (!options.save_weights.empty()) {

@@ -1,18 +1,18 @@
 # Install rules and a CMake package: find_package(cbbg) gives every library as a target
-# (cbbg::framework, plant, blocks, config, diagrams, experiments, store), the `cbbg`
-# command and its plotting script. Headers install under include/cbbg/ with their tree
+# (cbbg::framework, plant, blocks, config, diagrams, experiments, store, replay), the `cbbg`
+# command, its plotting script and its replay page. Headers install under include/cbbg/ with their tree
 # (framework/..., diagrams/...), as the sources include them; plant/simbody/ is the plant
 # library's own (its headers include Simbody) and stays out.
 include(CMakePackageConfigHelpers)
 
 set(CBBG_LIBRARIES cbbg_framework cbbg_plant cbbg_blocks cbbg_config cbbg_diagrams
-                   cbbg_experiments cbbg_store)
+                   cbbg_experiments cbbg_store cbbg_replay)
 install(TARGETS ${CBBG_LIBRARIES} EXPORT cbbgTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(folder framework plant blocks config diagrams experiments store)
+foreach(folder framework plant blocks config diagrams experiments store replay)
   install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/${folder}
-          FILES_MATCHING PATTERN "*.h" PATTERN "simbody" EXCLUDE)
+          FILES_MATCHING PATTERN "*.h" PATTERN "simbody" EXCLUDE PATTERN "node_modules" EXCLUDE)
 endforeach()
 install(TARGETS cbbg RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The command finds its plotting script in share/cbbg/ beside its bin/.

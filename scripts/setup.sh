@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# Installs the Debian packages cbbg builds, tests and plots with; only the missing ones.
+# Installs the Debian packages cbbg builds, tests and plots with (only the missing ones),
+# then the replay page's npm packages (three.js and its bundler, pinned by
+# replay/page/package-lock.json) into replay/page/node_modules.
 set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 packages=(
   build-essential cmake ninja-build pkg-config git
@@ -10,7 +13,11 @@ packages=(
   clang clang-format libclang-rt-14-dev libfuzzer-14-dev time
   graphviz python3 python3-matplotlib python3-numpy
   parallel slurm-wlm munge
+  chromium
 )
+# Node.js and npm may come from Debian or from NodeSource's nodejs (which brings npm along).
+command -v node >/dev/null || packages+=(nodejs)
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for package in "${packages[@]}"; do
@@ -18,12 +25,17 @@ for package in "${packages[@]}"; do
     missing+=("$package")
   fi
 done
-if ((${#missing[@]} == 0)); then
-  exit 0
+if ((${#missing[@]} > 0)); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-echo "setup: installing ${missing[*]}"
-sudo=""
-if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
-$sudo apt-get update -q
-DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+# npm ci again only when the lock file is newer than what npm last installed.
+page="$root/replay/page"
+if [[ ! "$page/node_modules/.package-lock.json" -nt "$page/package-lock.json" ]]; then
+  echo "setup: installing the replay page's npm packages (npm ci in replay/page)"
+  (cd "$page" && npm ci --no-audit --no-fund --loglevel=error)
+fi

@@ -25,15 +25,19 @@ bool has(const fs::path& directory, const char* marker) {
 
 std::string work_marker(const std::string& config_hash, const RunShape& shape) {
   return std::string("cbbg-run 1\nconfig ") + config_hash + "\nfigures " +
-         (shape.figures ? "1" : "0") + "\nreplace " + (shape.replace ? "1" : "0") + "\n";
+         (shape.figures ? "1" : "0") + "\nreplays " + (shape.replays ? "1" : "0") + "\nreplace " +
+         (shape.replace ? "1" : "0") + "\n";
 }
 
 // What a finished results directory holds that cbbg wrote: these files, and in weights/ and
 // figures/ files of these endings. Anything else there is the user's.
 constexpr const char* kResultFiles[] = {kResultsMarker, "config.yaml",    "summary.json",
                                         "trials.csv",   "evaluation.csv", "steps.csv"};
-constexpr std::pair<const char*, const char*> kResultFolders[] = {
-    {"weights", ".txt"}, {"figures", ".png"}, {"figures", ".svg"}, {"figures", ".dot"}};
+constexpr std::pair<const char*, const char*> kResultFolders[] = {{"weights", ".txt"},
+                                                                  {"figures", ".png"},
+                                                                  {"figures", ".svg"},
+                                                                  {"figures", ".dot"},
+                                                                  {"figures", ".html"}};
 
 bool is_own_entry(const fs::path& directory, const fs::directory_entry& entry) {
   const std::string name = entry.path().filename().string();
@@ -217,11 +221,13 @@ void RunDirectory::read_marker() {
   std::string hash;
   int version = 0;
   int figures = 1;
+  int replays = 1;
   int replace = 0;
   marker >> word >> version;
   for (std::string key; marker >> key;) {
     if (key == "config") marker >> hash;
     if (key == "figures") marker >> figures;
+    if (key == "replays") marker >> replays;
     if (key == "replace") marker >> replace;
   }
   if (word != "cbbg-run" || version != 1 || hash.empty()) {
@@ -237,6 +243,7 @@ void RunDirectory::read_marker() {
   }
   config_.merge_file(config_file);
   shape_.figures = figures != 0;
+  shape_.replays = replays != 0;
   shape_.replace = replace != 0;
 }
 

@@ -35,6 +35,7 @@ inline constexpr const char* kLockFile = ".cbbg-lock";
 // --resume.
 struct RunShape {
   bool figures = true;   // figures/ is drawn (cbbg run --no-figures: not)
+  bool replays = true;   // figures/ gets the replay pages (cbbg run --no-replay: not)
   bool replace = false;  // a finished results directory at the target may be replaced
 };
 

@@ -126,6 +126,13 @@ std::vector<BadInput> bad_inputs() {
       {"plot {S}/mine", "'{S}/mine' is not a results directory (it has no config.yaml)"},
       {"plot {S}/broken", "unknown key 'colour'"},
       // eval.
+      {"replay {S}/learnt", "--out is required"},
+      {"replay {S}/mine -o {S}/r.html", "'{S}/mine' is not a results directory"},
+      {"replay {S}/learnt --arm cbbg -o {S}/r.html", "--arm: no arm 'cbbg' in this run"},
+      {"replay {S}/learnt --trial 99 -o {S}/r.html", "--trial: arm 'bg_only', seed 1 has trials"},
+      {"replay {S}/learnt --seed x -o {S}/r.html", "--seed"},
+      {"replay {S}/learnt -o {S}/file", "-o: '{S}/file' exists and is not a cbbg replay"},
+      {"replay {S}/learnt -o {S}/mine", "-o"},
       {"eval", "--load-weights is required"},
       {"eval --load-weights {S}/missing.txt", "missing.txt"},
       {"eval --load-weights {S}/file", "{S}/file"},
@@ -151,7 +158,7 @@ std::vector<BadInput> bad_inputs() {
       {"run --grid seeds=1,2 --resume {S}/out",
        "drop --config, --set, --experiment, --seeds, "
        "--seed, --load-weights, --replace, "
-       "--no-figures, --grid and --shard"},
+       "--no-figures, --no-replay, --grid and --shard"},
       {"run --set plant.kind=analytic --grid actor.alpha=0.1 --out {S}/mine",
        "--out '{S}/mine' exists; a sweep writes a new directory"},
       {"merge", "DIR is required"},

@@ -1,0 +1,98 @@
+// cbbg replay DIR: a run's trials as one offline HTML page (replay/), and the replays
+// `cbbg run` leaves in figures/.
+
+#include <fstream>
+#include <iterator>
+
+#include <spdlog/spdlog.h>
+
+#include "apps/commands.h"
+#include "apps/errors.h"
+#include "apps/figures.h"
+#include "experiments/experiments.h"
+#include "replay/replay_page.h"
+#include "store/files.h"
+
+namespace cbbg::app {
+namespace {
+
+// The bundled page: $CBBG_REPLAY_PAGE, else share/cbbg/replay.html beside bin/.
+std::string page_template() {
+  const std::filesystem::path page = shared_file("CBBG_REPLAY_PAGE", "replay.html");
+  std::ifstream in(page, std::ios::binary);
+  if (!in) {
+    throw std::runtime_error("the replay page '" + page.string() +
+                             "' is missing: it is bundled at build time with node and npm "
+                             "(scripts/setup.sh installs them), or set CBBG_REPLAY_PAGE");
+  }
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A file at `path` that cbbg replay did not write is the user's: never replaced.
+void check_replaceable(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) return;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  if (head.find(replay::kGeneratorTag) == std::string::npos) {
+    throw config::ConfigError("-o: '" + path.string() +
+                              "' exists and is not a cbbg replay; choose another file");
+  }
+}
+
+}  // namespace
+
+int replay_command(const ReplayOptions& options) {
+  std::string page;
+  try {
+    if (options.output.empty()) throw config::ConfigError("-o FILE.html is required");
+    for (const int trial : options.trials) {
+      if (trial < 1) {
+        throw config::ConfigError("--trial must be 1 or more; got " + std::to_string(trial));
+      }
+    }
+    check_output_file(options.output, "-o");
+    check_replaceable(options.output);
+    page = replay::replay_of_run(options.directory, {options.arm, options.seed, options.trials},
+                                 page_template());
+  } catch (const config::ConfigError& error) {
+    return report_error(kUserError, error.what());
+  } catch (const replay::InputError& error) {
+    return report_error(kUserError, error.what());
+  } catch (const replay::ChoiceError& error) {
+    return report_error(kUserError, error.what());
+  } catch (const std::exception& error) {
+    return report_error(kMachineError, describe(error));
+  }
+  try {
+    store::write_atomically(options.output, page);
+  } catch (const std::exception& error) {
+    return report_error(kMachineError, describe(error));
+  }
+  spdlog::info("replay in {} (open it in a browser; it needs no network)", options.output.string());
+  return 0;
+}
+
+bool write_run_replays(const std::filesystem::path& directory, const config::Config& config,
+                       const std::string& run_name) {
+  if (config.integer("log.decimation") == 0) {
+    spdlog::info("no replays: the run logged no ticks (log.decimation: 0)");
+    return true;
+  }
+  try {
+    const std::string page = page_template();
+    for (const std::string& arm : experiments::experiment_arms(config)) {
+      store::write_atomically(
+          directory / "figures" / ("replay_" + arm + ".html"),
+          replay::replay_of_run(directory, {arm, std::nullopt, {}}, page, run_name));
+    }
+    return true;
+  } catch (const std::exception& error) {
+    spdlog::warn("the replays could not be written: {}", describe(error));
+    return false;
+  }
+}
+
+}  // namespace cbbg::app

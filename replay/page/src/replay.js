@@ -1,0 +1,170 @@
+// The replay page: the trials embedded in the page (written by `cbbg replay`), played in the
+// 3-D scene with the pitch and the torque plotted beside it.
+//
+// The page takes, after '#', trial=N (from 1), t=SECONDS and pause, so that a link or a
+// test can open it at one moment; window.cbbgReplay offers the same to scripts.
+
+import { RobotScene } from "./robot_scene.js";
+import { TimePlot } from "./time_plot.js";
+
+const data = JSON.parse(document.getElementById("cbbg-replay-data").textContent);
+const $ = (id) => document.getElementById(id);
+
+// The last logged tick at or before `time` (the log's value there is what the page shows).
+function tickAt(trial, time) {
+  const t = trial.t;
+  let low = 0;
+  let high = t.length - 1;
+  if (time <= t[0]) return 0;
+  if (time >= t[high]) return high;
+  while (high - low > 1) {
+    const middle = (low + high) >> 1;
+    if (t[middle] <= time) low = middle; else high = middle;
+  }
+  return low;
+}
+
+// The pose at `time`, linear between ticks, for a smooth picture.
+function poseAt(trial, time) {
+  const k = tickAt(trial, time);
+  const next = Math.min(k + 1, trial.t.length - 1);
+  const span = trial.t[next] - trial.t[k];
+  const w = span > 0 ? Math.min(1, Math.max(0, (time - trial.t[k]) / span)) : 0;
+  const lerp = (name) => trial[name][k] + w * (trial[name][next] - trial[name][k]);
+  return { x: lerp("x"), y: lerp("y"), yaw: lerp("yaw"), theta_b: lerp("theta_b"),
+           phi_l: lerp("phi_l"), phi_r: lerp("phi_r") };
+}
+
+function describe(trial) {
+  const end = trial.t[trial.t.length - 1];
+  const how = trial.status === "success" ? "balanced the whole trial"
+                                         : `${trial.status} at ${end.toFixed(2)} s`;
+  const k1 = trial.k1 !== undefined ? `, k1 ${trial.k1}` : "";
+  return `${trial.arm}, seed ${trial.seed}, trial ${trial.trial}${k1}: ${how}`;
+}
+
+class Replay {
+  constructor() {
+    this.scene = new RobotScene($("scene"), data.robot);
+    this.pitch = new TimePlot($("pitch-plot"), { title: "pitch θ_b", unit: "rad",
+                                                  limit: data.robot.failure_angle,
+                                                  colour: "#1f6fb4" });
+    this.torque = new TimePlot($("torque-plot"), { title: "torque a, commanded", unit: "N m",
+                                                    limit: data.robot.torque_limit,
+                                                    colour: "#d9822b" });
+    this.playing = false;
+    this.speed = 1;
+    this.time = 0;
+    this.index = 0;
+    for (const plot of [this.pitch, this.torque]) plot.onSeek = (t) => this.seek(t);
+    this.wireControls();
+  }
+
+  get trial() { return data.trials[this.index]; }
+  get end() { return this.trial.t[this.trial.t.length - 1]; }
+
+  wireControls() {
+    data.trials.forEach((trial, i) => $("trial").add(new Option(describe(trial), String(i))));
+    $("trial").addEventListener("change", (e) => this.select(Number(e.target.value)));
+    $("play").addEventListener("click", () => (this.playing ? this.pause() : this.play()));
+    $("speed").addEventListener("change", (e) => { this.speed = Number(e.target.value); });
+    $("time").addEventListener("input", (e) => this.seek(Number(e.target.value)));
+    window.addEventListener("keydown", (e) => {
+      if (e.code === "Space" && e.target.tagName !== "SELECT") {
+        e.preventDefault();
+        this.playing ? this.pause() : this.play();
+      }
+    });
+    window.addEventListener("resize", () => this.layout());
+  }
+
+  select(index) {
+    this.index = Math.min(Math.max(0, index), data.trials.length - 1);
+    $("trial").value = String(this.index);
+    const trial = this.trial;
+    $("time").max = String(this.end);
+    $("time").step = String(trial.t.length > 1 ? trial.t[1] - trial.t[0] : 0.01);
+    this.scene.setPath(trial.x, trial.y);
+    this.pitch.setSeries(trial.t, trial.theta_b);
+    this.torque.setSeries(trial.t, trial.a);
+    this.seek(0);
+  }
+
+  play() {
+    if (this.time >= this.end) this.seek(0);
+    this.playing = true;
+    this.last = performance.now();
+    $("play").textContent = "❚❚ pause";
+  }
+
+  pause() {
+    this.playing = false;
+    $("play").textContent = "▶ play";
+  }
+
+  seek(time) {
+    this.time = Math.min(Math.max(0, time), this.end);
+    this.update();
+  }
+
+  update() {
+    const trial = this.trial;
+    this.scene.show(poseAt(trial, this.time));
+    const k = tickAt(trial, this.time);
+    $("time").value = String(this.time);
+    $("readout-time").textContent = `${trial.t[k].toFixed(2)} s`;
+    $("readout-pitch").textContent = `${trial.theta_b[k].toFixed(4)} rad`;
+    $("readout-pitch").dataset.value = String(trial.theta_b[k]);
+    $("readout-torque").textContent = `${trial.a[k].toFixed(3)} N m`;
+    $("readout-x").textContent = `${trial.x[k].toFixed(3)} m`;
+    $("readout-yaw").textContent = `${trial.yaw[k].toFixed(3)} rad`;
+    this.pitch.showCursor(this.time);
+    this.torque.showCursor(this.time);
+  }
+
+  frame(now) {
+    if (this.playing) {
+      this.time += ((now - this.last) / 1000) * this.speed;
+      this.last = now;
+      if (this.time >= this.end) {
+        this.time = this.end;
+        this.pause();
+      }
+      this.update();
+    }
+    this.scene.render();
+    requestAnimationFrame((t) => this.frame(t));
+  }
+
+  layout() {
+    const view = $("scene");
+    this.scene.resize(view.clientWidth, view.clientHeight);
+    this.pitch.drawPicture();
+    this.torque.drawPicture();
+    if (this.trial) this.update();
+  }
+}
+
+function fromHash(replay) {
+  const options = new URLSearchParams(window.location.hash.slice(1));
+  replay.select(options.has("trial") ? Number(options.get("trial")) - 1 : 0);
+  if (options.has("t")) replay.seek(Number(options.get("t")));
+  if (!options.has("pause")) replay.play();
+}
+
+const replay = new Replay();
+$("title").textContent = data.title;
+fromHash(replay);
+replay.layout();
+requestAnimationFrame((t) => replay.frame(t));
+
+// For scripts and tests: the same moves as the controls.
+window.cbbgReplay = {
+  trials: data.trials.map(describe),
+  select: (index) => replay.select(index),
+  seek: (time) => { replay.seek(time); replay.scene.render(); },
+  play: () => replay.play(),
+  pause: () => replay.pause(),
+  state: () => ({ trial: replay.index, time: replay.time, playing: replay.playing }),
+};
+document.body.dataset.ready = "true";
