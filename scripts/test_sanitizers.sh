@@ -3,8 +3,8 @@
 # CMakePresets.json: build-asan/, -O1 -g, assertions on, no benchmarks) and runs its tests.
 # A memory error, a leak or any undefined behaviour fails the test it happens in.
 #   test_sanitizers.sh         the tests of framework/, config/, blocks/, diagrams/,
-#                              experiments/ and store/ (several of them run both plants,
-#                              Simbody's too)
+#                              experiments/, store/ and replay/ (several of them run both
+#                              plants, Simbody's too)
 #   test_sanitizers.sh --all   every test: adds plant/'s and the cbbg command's, and takes
 #                              about half as long again (the sanitizers make compiling slow)
 # --all leaves out example_find_package (it links the installed, sanitized libraries into a
@@ -12,7 +12,7 @@
 # compiled code); scripts/test.sh runs all three.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-areas=(framework config blocks diagrams experiments store)
+areas=(framework config blocks diagrams experiments store replay)
 case "${1:-}" in
   "") all=false ;;
   --all) all=true ;;

@@ -35,6 +35,18 @@ function poseAt(trial, time) {
            phi_l: lerp("phi_l"), phi_r: lerp("phi_r") };
 }
 
+// The forward speed at tick k, m/s: the axle's travel along its heading between the ticks
+// either side.
+function speedAt(trial, k) {
+  const before = Math.max(0, k - 1);
+  const after = Math.min(trial.t.length - 1, k + 1);
+  const span = trial.t[after] - trial.t[before];
+  if (!(span > 0)) return 0;
+  const heading = trial.yaw[k];
+  return ((trial.x[after] - trial.x[before]) * Math.cos(heading) +
+          (trial.y[after] - trial.y[before]) * Math.sin(heading)) / span;
+}
+
 function describe(trial) {
   const end = trial.t[trial.t.length - 1];
   const how = trial.status === "success" ? "balanced the whole trial"
@@ -117,6 +129,7 @@ class Replay {
     $("readout-pitch").dataset.value = String(trial.theta_b[k]);
     $("readout-torque").textContent = `${trial.a[k].toFixed(3)} N m`;
     $("readout-x").textContent = `${trial.x[k].toFixed(3)} m`;
+    $("readout-speed").textContent = `${speedAt(trial, k).toFixed(2)} m/s`;
     $("readout-yaw").textContent = `${trial.yaw[k].toFixed(3)} rad`;
     this.pitch.showCursor(this.time);
     this.torque.showCursor(this.time);
