@@ -29,6 +29,16 @@ std::string json_string(const std::string& text) {
   return out + "\"";
 }
 
+// Appends ,"name":value (the first member without its comma), piece by piece: GCC 12 warns
+// falsely (-Wrestrict) on chains of operator+.
+void append_member(std::string& json, const char* name, const std::string& value) {
+  if (json.size() > 1) json += ',';
+  json += '"';
+  json += name;
+  json += "\":";
+  json += value;
+}
+
 void append_numbers(std::string& json, const char* name, const std::vector<double>& values) {
   json += ",\"";
   json += name;
@@ -41,28 +51,40 @@ void append_numbers(std::string& json, const char* name, const std::vector<doubl
   json += ']';
 }
 
+// Every stride-th of `values`, and the last.
+std::vector<double> every(const std::vector<double>& values, std::size_t stride) {
+  std::vector<double> kept;
+  for (std::size_t i = 0; i < values.size(); i += stride) kept.push_back(values[i]);
+  if ((values.size() - 1) % stride != 0) kept.push_back(values.back());
+  return kept;
+}
+
 std::string trial_json(const TrialLog& log) {
-  std::string json = "{\"arm\":" + json_string(log.entry.arm);
-  json += ",\"seed\":" + std::to_string(log.entry.seed);
-  json += ",\"trial\":" + std::to_string(log.entry.trial);
-  json += ",\"status\":" + json_string(log.entry.status);
-  append_numbers(json, "t", log.t);
-  append_numbers(json, "theta_b", log.theta_b);
-  append_numbers(json, "phi_l", log.phi_l);
-  append_numbers(json, "phi_r", log.phi_r);
-  append_numbers(json, "x", log.x);
-  append_numbers(json, "y", log.y);
-  append_numbers(json, "yaw", log.yaw);
-  append_numbers(json, "a", log.a);
+  // A long trial is shown every stride-th tick, so the page stays a few megabytes.
+  const std::size_t stride = (log.t.size() + kMaxTicksShown - 1) / kMaxTicksShown;
+  std::string json = "{";
+  append_member(json, "arm", json_string(log.entry.arm));
+  append_member(json, "seed", std::to_string(log.entry.seed));
+  append_member(json, "trial", std::to_string(log.entry.trial));
+  append_member(json, "status", json_string(log.entry.status));
+  append_member(json, "stride", std::to_string(stride));
+  const std::pair<const char*, const std::vector<double>*> signals[] = {
+      {"t", &log.t},         {"theta_b", &log.theta_b},
+      {"phi_l", &log.phi_l}, {"phi_r", &log.phi_r},
+      {"x", &log.x},         {"y", &log.y},
+      {"yaw", &log.yaw},     {"a", &log.a}};
+  for (const auto& [name, values] : signals) append_numbers(json, name, every(*values, stride));
   return json + "}";
 }
 
 std::string robot_json(const ReplayRobot& robot) {
-  return "{\"wheel_radius\":" + format_number(robot.wheel_radius) +
-         ",\"track_width\":" + format_number(robot.track_width) +
-         ",\"com_height\":" + format_number(robot.com_height) +
-         ",\"failure_angle\":" + format_number(robot.failure_angle) +
-         ",\"torque_limit\":" + format_number(robot.torque_limit) + "}";
+  std::string json = "{";
+  append_member(json, "wheel_radius", format_number(robot.wheel_radius));
+  append_member(json, "track_width", format_number(robot.track_width));
+  append_member(json, "com_height", format_number(robot.com_height));
+  append_member(json, "failure_angle", format_number(robot.failure_angle));
+  append_member(json, "torque_limit", format_number(robot.torque_limit));
+  return json + "}";
 }
 
 }  // namespace
@@ -81,8 +103,10 @@ std::string replay_page(const std::string& page_template, const std::string& tit
         "the replay page template is not cbbg's (no generator tag or "
         "no data placeholder)");
   }
-  std::string data =
-      "{\"title\":" + json_string(title) + ",\"robot\":" + robot_json(robot) + ",\"trials\":[";
+  std::string data = "{";
+  append_member(data, "title", json_string(title));
+  append_member(data, "robot", robot_json(robot));
+  append_member(data, "trials", "[");
   for (std::size_t i = 0; i < trials.size(); ++i) {
     if (i > 0) data += ',';
     data += trial_json(trials[i]);

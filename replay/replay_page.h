@@ -15,6 +15,10 @@ namespace cbbg::replay {
 // The page's generator tag: a file holding it was written by cbbg replay.
 inline constexpr const char* kGeneratorTag = "<meta name=\"generator\" content=\"cbbg replay\">";
 
+// Ticks a trial keeps on the page at most: a longer one is shown every n-th logged tick
+// (and its last), n the smallest that fits.
+inline constexpr std::size_t kMaxTicksShown = 20000;
+
 // What the page draws of the robot and of its limits.
 struct ReplayRobot {
   double wheel_radius = 0.15;   // plant.wheel_radius, m

@@ -1,5 +1,6 @@
 #include "replay/replay_page.h"
 
+#include <algorithm>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -36,9 +37,27 @@ TEST(ReplayPage, WritesTheTrialsIntoThePlaceholder) {
   EXPECT_THAT(page, HasSubstr("{\"title\":\"exp1\",\"robot\":{\"wheel_radius\":0.15,"
                               "\"track_width\":0.44,\"com_height\":0.4,\"failure_angle\":0.52,"
                               "\"torque_limit\":5},\"trials\":[{\"arm\":\"cbbg\",\"seed\":3,"
-                              "\"trial\":2,\"status\":\"success\",\"t\":[0,0.01],"
+                              "\"trial\":2,\"status\":\"success\",\"stride\":1,\"t\":[0,0.01],"
                               "\"theta_b\":[0.1744,0.1],\"phi_l\":[0,0.25],\"phi_r\":[0,-0.25],"
                               "\"x\":[0,1e-07],\"y\":[0,0],\"yaw\":[0,0.5],\"a\":[8.72,null]}]}"));
+}
+
+TEST(ReplayPage, ALongTrialIsShownEveryNthTickAndItsLast) {
+  TrialLog log;
+  log.entry = {"cbbg", 1, 1, "success"};
+  for (int k = 0; k < 45000; ++k) {
+    for (auto* signal :
+         {&log.t, &log.theta_b, &log.phi_l, &log.phi_r, &log.x, &log.y, &log.yaw, &log.a}) {
+      signal->push_back(k);
+    }
+  }
+  const std::string page = replay_page(kTemplate, "long", ReplayRobot{}, {log});
+  // 45000 ticks over 20000 at most: every 3rd, 0, 3, ..., 44997, then the last, 44999.
+  EXPECT_THAT(page, HasSubstr("\"stride\":3,\"t\":[0,3,6,"));
+  EXPECT_THAT(page, HasSubstr(",44994,44997,44999],\"theta_b\":[0,3,"));
+  const std::size_t start = page.find("\"t\":[");
+  const std::string times = page.substr(start, page.find(']', start) - start);
+  EXPECT_EQ(std::count(times.begin(), times.end(), ','), 15000);  // 15001 ticks
 }
 
 TEST(ReplayPage, TextCannotCloseThePagesScript) {

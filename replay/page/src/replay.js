@@ -51,8 +51,8 @@ function describe(trial) {
   const end = trial.t[trial.t.length - 1];
   const how = trial.status === "success" ? "balanced the whole trial"
                                          : `${trial.status} at ${end.toFixed(2)} s`;
-  const k1 = trial.k1 !== undefined ? `, k1 ${trial.k1}` : "";
-  return `${trial.arm}, seed ${trial.seed}, trial ${trial.trial}${k1}: ${how}`;
+  const thinned = trial.stride > 1 ? ` (every ${trial.stride}th tick)` : "";
+  return `${trial.arm}, seed ${trial.seed}, trial ${trial.trial}: ${how}${thinned}`;
 }
 
 class Replay {
