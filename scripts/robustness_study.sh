@@ -12,8 +12,10 @@
 # those of an uninterrupted run. It refuses a DIR it did not make.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-# cbbg: $CBBG, else the tree's build (scripts/build.sh), else the one on PATH (installed).
+# cbbg: $CBBG, else the tree's build (scripts/build.sh), else the installed one beside this
+# script (PREFIX/share/cbbg/ and PREFIX/bin/), else the one on PATH.
 cbbg="${CBBG:-$here/../build/apps/cbbg}"
+[[ -x "$cbbg" ]] || cbbg="$here/../../bin/cbbg"
 [[ -x "$cbbg" ]] || cbbg="$(command -v cbbg || true)"
 plant=analytic seeds=20 jobs="$(nproc)" out=""
 usage() { echo "robustness_study.sh: $1 (usage: --out DIR [--plant analytic|simbody] [--seeds N] [--jobs J])" >&2; exit 2; }
