@@ -108,6 +108,10 @@ void print_table(const experiments::PolicyEvaluation& evaluation, const config::
     std::printf("; push %g N m on each wheel from %g s for %g s", *options.push_torque,
                 *options.push_time, *options.push_duration);
   }
+  if (const std::string conditions = experiments::describe_conditions(config);
+      !conditions.empty()) {
+    std::printf("; evaluated on a changed robot: %s", conditions.c_str());
+  }
   std::printf("\n%10s %10s\n", "theta0", "balanced");
   for (const auto& angle : evaluation.angles) {
     const std::string ratio =

@@ -54,4 +54,25 @@ config::Config evaluation_config(const config::Config& training) {
   return config;
 }
 
+std::string describe_conditions(const config::Config& config) {
+  std::string words;
+  auto add = [&words](const std::string& part) {
+    if (!words.empty()) words += ", ";
+    words += part;
+  };
+  const double mass = config.number("evaluation.body_mass_scale");
+  if (mass != 1.0) add("body mass x" + format_number(mass));
+  const double height = config.number("evaluation.com_height_scale");
+  if (height != 1.0) add("CoM height x" + format_number(height));
+  const double noise = config.number("evaluation.noise_std");
+  if (noise != 0.0) add("pitch noise " + format_number(noise));
+  const double push = config.number("evaluation.push_torque");
+  if (push != 0.0) {
+    add("push " + format_number(push) + " N m from " +
+        format_number(config.number("evaluation.push_start")) + " s for " +
+        format_number(config.number("evaluation.push_duration")) + " s");
+  }
+  return words;
+}
+
 }  // namespace cbbg::experiments

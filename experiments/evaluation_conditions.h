@@ -16,10 +16,16 @@
 // parameter read by a controller at build time (supervisor.kind = lqr designs its gains
 // from plant.*) sees the perturbed value: the PD supervisor has fixed gains.
 
+#include <string>
+
 #include "config/config.h"
 
 namespace cbbg::experiments {
 
 config::Config evaluation_config(const config::Config& training);
+
+// The perturbations of `config`'s evaluation.* keys in words ("body mass x1.3, pitch noise
+// 0.02"), or "" at their defaults.
+std::string describe_conditions(const config::Config& config);
 
 }  // namespace cbbg::experiments

@@ -25,6 +25,18 @@ TEST(EvaluationConditions, AtTheirDefaultsTheEvaluationIsTheTraining) {
   EXPECT_EQ(evaluation_config(training), training);
 }
 
+TEST(EvaluationConditions, AreDescribedInWordsOnlyWhenChanged) {
+  config::Config config = analytic_config();
+  EXPECT_EQ(describe_conditions(config), "");
+  config.set("evaluation.body_mass_scale=0.7");
+  config.set("evaluation.com_height_scale=1.15");
+  config.set("evaluation.noise_std=0.02");
+  config.set("evaluation.push_torque=5");
+  config.set("evaluation.push_duration=0.5");
+  EXPECT_EQ(describe_conditions(config),
+            "body mass x0.7, CoM height x1.15, pitch noise 0.02, push 5 N m from 5 s for 0.5 s");
+}
+
 TEST(EvaluationConditions, TheMassScaleMakesTheBodyDenserAndLeavesTheWheels) {
   config::Config training = analytic_config();
   training.set("evaluation.body_mass_scale=1.3");

@@ -330,5 +330,16 @@ TEST_F(EvalCommand, AFallIsAResultNotAnError) {
   EXPECT_THAT(outcome.out, HasSubstr("      0.05        0/1\n"));
 }
 
+TEST_F(EvalCommand, SaysWhenTheRobotIsNotTheOneTrained) {
+  app::EvalOptions changed = options();
+  EXPECT_THAT(run(changed).out, ::testing::Not(HasSubstr("changed robot")));
+  changed.sets.push_back("evaluation.body_mass_scale=1.3");
+  changed.sets.push_back("evaluation.push_torque=-2");
+  const Outcome outcome = run(changed);
+  EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_THAT(outcome.out, HasSubstr("; evaluated on a changed robot: body mass x1.3, push -2 N m "
+                                     "from 5 s for 0.2 s\n"));
+}
+
 }  // namespace
 }  // namespace cbbg::experiments
