@@ -1,5 +1,6 @@
 // cbbg list: the diagrams, the blocks and every config key with its default and meaning.
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -76,8 +77,12 @@ int list_command() {
   std::printf("\nBlocks of the diagrams:\n");
   for (const auto& entry : kBlocks) std::printf("  %-20s %s\n", entry.name, entry.meaning);
   std::printf("\nConfig keys (--set key=value, or a YAML file with --config):\n");
+  int width = 0;  // the longest key's, so the defaults line up
   for (const auto& spec : config::schema()) {
-    std::printf("  %-26s %-22s %s\n", spec.path.c_str(), shown(spec.default_value).c_str(),
+    width = std::max(width, static_cast<int>(spec.path.size()));
+  }
+  for (const auto& spec : config::schema()) {
+    std::printf("  %-*s %-22s %s\n", width, spec.path.c_str(), shown(spec.default_value).c_str(),
                 spec.meaning.c_str());
   }
   return 0;
