@@ -61,12 +61,20 @@ void finish_run(const config::Config& config, const diagrams::Arm& arm,
   evaluate_run(config, arm, loop.learner.learns(), run);
 }
 
-void start_from(const diagrams::ClosedLoop& loop, TrialRunner& runner,
-                const LearntWeights* initial_weights) {
-  if (initial_weights != nullptr && loop.learner.learns()) {
-    load_learnt_weights(loop, runner.context(), *initial_weights);
+// One seed of an arm: its learning closed loop and the runner of its trials, started from
+// the initial weights when there are some.
+struct SeedLoop {
+  SeedLoop(const config::Config& config, const diagrams::Arm& arm,
+           const TelemetryOptions& telemetry, const LearntWeights* initial_weights, long long seed)
+      : loop(arm.learner(config)),
+        runner(loop, static_cast<std::uint64_t>(seed), config.number("trial.period"), telemetry) {
+    if (initial_weights != nullptr && loop.learner.learns()) {
+      load_learnt_weights(loop, runner.context(), *initial_weights);
+    }
   }
-}
+  diagrams::ClosedLoop loop;
+  TrialRunner runner;  // runs `loop`: declared after it
+};
 
 // The next trial of exp1's protocol (exp3's too): from trial.theta0, k1 fixed.
 TrialRecord next_trial(const config::Config& config, TrialRunner& runner, int trial) {
@@ -78,12 +86,9 @@ TrialRecord next_trial(const config::Config& config, TrialRunner& runner, int tr
 void run_until_success(const config::Config& config, const diagrams::Arm& arm,
                        const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                        SeedRun& run) {
-  const diagrams::ClosedLoop loop = arm.learner(config);
-  TrialRunner runner(loop, static_cast<std::uint64_t>(run.seed), config.number("trial.period"),
-                     telemetry);
-  start_from(loop, runner, initial_weights);
+  SeedLoop seed(config, arm, telemetry, initial_weights, run.seed);
   for (int trial = 1; trial <= config.integer("max_trials"); ++trial) {
-    const TrialRecord record = next_trial(config, runner, trial);
+    const TrialRecord record = next_trial(config, seed.runner, trial);
     run.trials.push_back(record);
     if (record.outcome.status == TrialStatus::kSuccess) {
       run.succeeded = true;
@@ -91,7 +96,7 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
     }
     ++run.failures_before_success;
   }
-  finish_run(config, arm, loop, runner.context(), run);
+  finish_run(config, arm, seed.loop, seed.runner.context(), run);
 }
 
 // exp3's test after a trial: the weights learnt so far, frozen, with the actor alone, from
@@ -115,10 +120,9 @@ bool actor_alone_balances(const config::Config& config, const diagrams::Arm& arm
 void run_until_skill(const config::Config& config, const diagrams::Arm& arm,
                      const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                      SeedRun& run) {
-  const diagrams::ClosedLoop loop = arm.learner(config);
-  TrialRunner runner(loop, static_cast<std::uint64_t>(run.seed), config.number("trial.period"),
-                     telemetry);
-  start_from(loop, runner, initial_weights);
+  SeedLoop seed(config, arm, telemetry, initial_weights, run.seed);
+  TrialRunner& runner = seed.runner;
+  const diagrams::ClosedLoop& loop = seed.loop;
   const bool has_actor = loop.learner.learns() && static_cast<bool>(arm.policy);
   int failures = 0;
   for (int trial = 1; trial <= config.integer("max_trials"); ++trial) {
@@ -162,17 +166,15 @@ void run_annealing(const config::Config& config, const diagrams::Arm& coordinate
   const double theta0 = config.number("trial.theta0");
   const double duration = config.number("trial.duration");
   const auto& schedule = config.annealing("annealing");
-  const diagrams::ClosedLoop first_loop = coordinated.learner(config);
-  const diagrams::ClosedLoop later_loop = operant.learner(config);
-  TrialRunner first(first_loop, static_cast<std::uint64_t>(run.seed), period, telemetry);
-  start_from(first_loop, first, initial_weights);
-  set_k1(first_loop, first.context(), annealed_k1(schedule, 1));
+  SeedLoop first(config, coordinated, telemetry, initial_weights, run.seed);
+  set_k1(first.loop, first.runner.context(), annealed_k1(schedule, 1));
   run.trials.push_back(
-      {1, annealed_k1(schedule, 1), first.run_trial(theta0, duration, 1), std::nullopt});
+      {1, annealed_k1(schedule, 1), first.runner.run_trial(theta0, duration, 1), std::nullopt});
 
   // The operant loop carries on: weights, the omega counter and the random streams.
+  const diagrams::ClosedLoop later_loop = operant.learner(config);
   TrialRunner later(later_loop, static_cast<std::uint64_t>(run.seed), period, telemetry);
-  later.context().continue_from(first.context());
+  later.context().continue_from(first.runner.context());
   for (int trial = 2; trial <= config.integer("exp2.trials"); ++trial) {
     const double k1 = annealed_k1(schedule, trial);
     set_k1(later_loop, later.context(), k1);

@@ -8,7 +8,7 @@
 namespace cbbg::replay {
 namespace {
 
-constexpr std::string_view kDataPlaceholder = "__CBBG_REPLAY_DATA__";
+constexpr std::string_view kDataMarker = "__CBBG_REPLAY_DATA__";
 
 // A JSON string of plain text: arm names, statuses and titles, with '<' escaped so that the
 // text cannot close the page's script element.
@@ -97,11 +97,11 @@ ReplayRobot replay_robot(const config::Config& config) {
 
 std::string replay_page(const std::string& page_template, const std::string& title,
                         const ReplayRobot& robot, const std::vector<TrialLog>& trials) {
-  const std::size_t at = page_template.find(kDataPlaceholder);
+  const std::size_t at = page_template.find(kDataMarker);
   if (page_template.find(kGeneratorTag) == std::string::npos || at == std::string::npos) {
     throw std::invalid_argument(
         "the replay page template is not cbbg's (no generator tag or "
-        "no data placeholder)");
+        "no data marker)");
   }
   std::string data = "{";
   append_member(data, "title", json_string(title));
@@ -114,7 +114,7 @@ std::string replay_page(const std::string& page_template, const std::string& tit
   data += "]}";
   std::string page = page_template.substr(0, at);
   page += data;
-  page += page_template.substr(at + kDataPlaceholder.size());
+  page += page_template.substr(at + kDataMarker.size());
   return page;
 }
 

@@ -31,7 +31,7 @@ struct ReplayRobot {
 ReplayRobot replay_robot(const config::Config& config);
 
 // `page_template` with `trials` in it. Throws std::invalid_argument when the template is not
-// a replay page (no generator tag or no data placeholder).
+// a replay page (no generator tag or no data marker).
 std::string replay_page(const std::string& page_template, const std::string& title,
                         const ReplayRobot& robot, const std::vector<TrialLog>& trials);
 

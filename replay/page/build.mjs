@@ -1,5 +1,5 @@
 // Bundles the replay page at build time: src/replay.js with three.js (esbuild, one script)
-// into page.html, which keeps one placeholder, __CBBG_REPLAY_DATA__, for `cbbg replay` to
+// into page.html, which keeps one marker, __CBBG_REPLAY_DATA__, for `cbbg replay` to
 // fill with a run's trials.
 //   node viewer/build.mjs OUT.html
 import { build } from "esbuild";

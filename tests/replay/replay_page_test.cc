@@ -29,7 +29,7 @@ TrialLog one_tick(const std::string& arm) {
   return log;
 }
 
-TEST(ReplayPage, WritesTheTrialsIntoThePlaceholder) {
+TEST(ReplayPage, WritesTheTrialsInPlaceOfTheDataMarker) {
   const std::string page = replay_page(kTemplate, "exp1", ReplayRobot{}, {one_tick("cbbg")});
   EXPECT_THAT(page, ::testing::StartsWith(std::string("<html><head>") + kGeneratorTag));
   EXPECT_THAT(page, ::testing::EndsWith("</script></html>"));
@@ -72,7 +72,7 @@ TEST(ReplayPage, RefusesATemplateThatIsNotCbbgs) {
   EXPECT_THAT([] { replay_page("<html>__CBBG_REPLAY_DATA__</html>", "t", {}, {}); },
               ::testing::ThrowsMessage<std::invalid_argument>(
                   "the replay page template is not cbbg's (no generator tag or no data "
-                  "placeholder)"));
+                  "marker)"));
 }
 
 }  // namespace
