@@ -44,9 +44,7 @@ void check_plant_ports(const plant::RobotPlant& robot) {
 std::optional<blocks::PushParams> configured_push(const config::Config& config) {
   const double torque = config.number("push.torque");
   if (torque == 0.0) return std::nullopt;
-  blocks::PushParams push{config.number("push.start"), torque, config.number("push.duration")};
-  push.validate();
-  return push;
+  return blocks::PushParams{config.number("push.start"), torque, config.number("push.duration")};
 }
 
 // The action sampled every tick and held (zero-order hold), optionally pushed, to both wheels.

@@ -68,12 +68,9 @@ std::string trial_json(const TrialLog& log) {
   append_member(json, "trial", std::to_string(log.entry.trial));
   append_member(json, "status", json_string(log.entry.status));
   append_member(json, "stride", std::to_string(stride));
-  const std::pair<const char*, const std::vector<double>*> signals[] = {
-      {"t", &log.t},         {"theta_b", &log.theta_b},
-      {"phi_l", &log.phi_l}, {"phi_r", &log.phi_r},
-      {"x", &log.x},         {"y", &log.y},
-      {"yaw", &log.yaw},     {"a", &log.a}};
-  for (const auto& [name, values] : signals) append_numbers(json, name, every(*values, stride));
+  for (int c = 0; c < TrialLog::kColumns; ++c) {
+    append_numbers(json, TrialLog::kColumnNames[c], every(log.column(c), stride));
+  }
   return json + "}";
 }
 

@@ -85,16 +85,6 @@ class CsvFile {
 
 using Key = std::tuple<std::string, long long, int>;
 
-// The columns of steps.csv a replay reads after t, in TrialLog's order.
-constexpr int kSignalCount = 7;
-constexpr const char* kSignals[kSignalCount] = {"theta_b", "phi_l", "phi_r", "x", "y", "yaw", "a"};
-
-std::vector<double>& signal(TrialLog& log, int index) {
-  std::vector<double>* members[kSignalCount] = {&log.theta_b, &log.phi_l, &log.phi_r, &log.x,
-                                                &log.y,       &log.yaw,   &log.a};
-  return *members[index];
-}
-
 // Drops the ticks from the first whose pose is not finite (a diverged trial's end).
 void keep_finite_pose(TrialLog& log) {
   std::size_t keep = 0;
@@ -103,8 +93,7 @@ void keep_finite_pose(TrialLog& log) {
          std::isfinite(log.x[keep]) && std::isfinite(log.y[keep]) && std::isfinite(log.yaw[keep])) {
     ++keep;
   }
-  log.t.resize(keep);
-  for (int s = 0; s < kSignalCount; ++s) signal(log, s).resize(keep);
+  for (int c = 0; c < TrialLog::kColumns; ++c) log.column(c).resize(keep);
 }
 
 }  // namespace
@@ -130,9 +119,8 @@ std::vector<TrialLog> read_trial_logs(const std::filesystem::path& steps_csv,
   const std::size_t arm = file.column("arm");
   const std::size_t seed = file.column("seed");
   const std::size_t trial = file.column("trial");
-  const std::size_t t = file.column("t");
-  std::vector<std::size_t> signals;
-  for (const char* name : kSignals) signals.push_back(file.column(name));
+  std::size_t columns[TrialLog::kColumns];
+  for (int c = 0; c < TrialLog::kColumns; ++c) columns[c] = file.column(TrialLog::kColumnNames[c]);
 
   std::vector<TrialLog> logs(wanted.size());
   std::map<Key, std::size_t> index;
@@ -145,10 +133,8 @@ std::vector<TrialLog> read_trial_logs(const std::filesystem::path& steps_csv,
                                    static_cast<int>(file.integer(fields[trial], "trial"))});
     if (found == index.end()) continue;
     TrialLog& log = logs[found->second];
-    log.t.push_back(file.number(fields[t], "t"));
-    for (int s = 0; s < kSignalCount; ++s) {
-      const std::string_view field = fields[signals[static_cast<std::size_t>(s)]];
-      signal(log, s).push_back(file.number(field, kSignals[s]));
+    for (int c = 0; c < TrialLog::kColumns; ++c) {
+      log.column(c).push_back(file.number(fields[columns[c]], TrialLog::kColumnNames[c]));
     }
   }
   for (TrialLog& log : logs) {

@@ -35,6 +35,19 @@ struct TrialEntry {
 struct TrialLog {
   TrialEntry entry;
   std::vector<double> t, theta_b, phi_l, phi_r, x, y, yaw, a;
+
+  // The columns above by their steps.csv names, t first: what the reader fills and the page
+  // shows, listed once.
+  static constexpr int kColumns = 8;
+  static constexpr const char* kColumnNames[kColumns] = {"t", "theta_b", "phi_l", "phi_r",
+                                                         "x", "y",       "yaw",   "a"};
+  std::vector<double>& column(int index) { return this->*kMembers[index]; }
+  const std::vector<double>& column(int index) const { return this->*kMembers[index]; }
+
+ private:
+  static constexpr std::vector<double> TrialLog::*kMembers[kColumns] = {
+      &TrialLog::t, &TrialLog::theta_b, &TrialLog::phi_l, &TrialLog::phi_r,
+      &TrialLog::x, &TrialLog::y,       &TrialLog::yaw,   &TrialLog::a};
 };
 
 // The rows of DIR/trials.csv, in file order. Throws InputError naming the file.

@@ -8,21 +8,6 @@
 #include "store/sweep_directory.h"
 
 namespace cbbg::store {
-namespace {
-
-// A CSV field: quoted when it holds a comma or a quote (a list value, say).
-std::string field(const std::string& text) {
-  if (text.find_first_of(",\"") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  quoted += '"';
-  return quoted;
-}
-
-}  // namespace
 
 std::string headline_name(const std::string& experiment) {
   return experiment == "exp2" ? "balanced_trials" : "failures_before_success";
@@ -36,6 +21,18 @@ int headline(const std::string& experiment, const experiments::SeedRun& run) {
 }
 
 namespace {
+
+// A CSV field: quoted when it holds a comma or a quote (a list value, say).
+std::string field(const std::string& text) {
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  quoted += '"';
+  return quoted;
+}
 
 // The evaluation runs (exp1, exp3) of one arm over the seeds, and how many balanced.
 struct Evaluated {

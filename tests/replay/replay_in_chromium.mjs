@@ -2,18 +2,15 @@
 // and an exp2 run load without console errors or network requests; two moments of a trial
 // look different; the pitch the page shows at a logged time is the log's.
 //   node tests/replay/replay_in_chromium.mjs BUILD_DIR
-// It starts the browser itself and stops it by its pid, whatever happens.
+// It starts the browser itself and stops it by its pid, whatever happens (withChromium).
 import { execFileSync } from "node:child_process";
-import { existsSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
-import { createRequire } from "node:module";
+import { mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
+import { withChromium } from "../../replay/page/chromium.mjs";
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), "..", "..");
-const require = createRequire(join(root, "replay", "page", "package.json"));
-const { chromium } = require("playwright-core");
-const CHROMIUM = "/usr/bin/chromium";
 
 const build = resolve(process.argv[2] || join(root, "build"));
 const cbbg = join(build, "apps", "cbbg");
@@ -98,33 +95,22 @@ async function checkReplay(browser, file, label, trial, log) {
   return differ;
 }
 
-let server;
 try {
-  if (!existsSync(CHROMIUM)) throw new Error(`${CHROMIUM} is missing (scripts/setup.sh installs Debian's chromium)`);
   run(["run", "--set", "plant.kind=analytic", "--seeds", "1", "--out", join(scratch, "exp1")]);
   run(["run", "--experiment", "exp2", "--set", "plant.kind=analytic", "--seeds", "1",
        "--set", "exp2.trials=25", "--no-figures", "--out", join(scratch, "exp2")]);
   run(["replay", join(scratch, "exp2"), "--trial", "1", "25", "-o", join(scratch, "exp2.html")]);
 
-  server = await chromium.launchServer({
-    executablePath: CHROMIUM,
-    args: ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader"],
-  });
-  const browser = await chromium.connect(server.wsEndpoint());
-  const exp1 = await checkReplay(browser, join(scratch, "exp1", "figures", "replay_bg_only.html"),
-                                 "exp1 bg_only", 1, logged(join(scratch, "exp1"), "bg_only", 1, 1));
-  const exp2 = await checkReplay(browser, join(scratch, "exp2.html"), "exp2 trial 25", 2,
-                                 logged(join(scratch, "exp2"), "cbbg", 1, 25));
-  await browser.close();
+  const [exp1, exp2] = await withChromium(async (browser) => [
+    await checkReplay(browser, join(scratch, "exp1", "figures", "replay_bg_only.html"),
+                      "exp1 bg_only", 1, logged(join(scratch, "exp1"), "bg_only", 1, 1)),
+    await checkReplay(browser, join(scratch, "exp2.html"), "exp2 trial 25", 2,
+                      logged(join(scratch, "exp2"), "cbbg", 1, 25)),
+  ]);
   console.log(`replay_in_chromium: exp1 and exp2 replays load offline; their scenes change in ${exp1} and ${exp2} pixels`);
 } catch (error) {
   failures.push(String(error.message || error));
 } finally {
-  if (server) {
-    const pid = server.process().pid;
-    await server.close().catch(() => {});
-    try { process.kill(pid, "SIGKILL"); } catch { /* already gone */ }
-  }
   rmSync(scratch, { recursive: true, force: true });
 }
 if (failures.length > 0) {
