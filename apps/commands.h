@@ -39,7 +39,7 @@ struct GraphOptions {
   std::filesystem::path config_file;
   std::vector<std::string> sets;
   std::filesystem::path output;
-  int max_depth = -1;
+  std::optional<int> max_depth;  // unset: every level
   bool show_telemetry = false;
 };
 int graph_command(const GraphOptions& options);

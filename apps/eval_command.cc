@@ -3,6 +3,7 @@
 #include "apps/eval_command.h"
 #include "apps/errors.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -15,10 +16,13 @@
 #include "experiments/evaluation_conditions.h"
 #include "experiments/policy_evaluation.h"
 #include "store/files.h"
+#include "store/output_guard.h"
 #include "store/weights_file.h"
 
 namespace cbbg::app {
 namespace {
+
+constexpr const char* kEvaluationFile = "evaluation.csv";
 
 // More runs per angle than this is a typing slip, not a study.
 constexpr int kMaxRepeats = 10000;
@@ -57,6 +61,28 @@ std::optional<blocks::PushParams> push_from(const EvalOptions& options) {
   return blocks::PushParams{*options.push_time, *options.push_torque, *options.push_duration};
 }
 
+// --angles as typed: finite numbers separated by single commas ("0.1,,0.2" is refused).
+std::vector<double> parse_angles(const std::string& text) {
+  std::vector<double> angles;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    double angle = 0.0;
+    const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), angle);
+    if (item.empty() || error != std::errc() || end != item.data() + item.size() ||
+        !std::isfinite(angle)) {
+      throw config::ConfigError(
+          "--angles must be finite numbers separated by commas (rad), "
+          "e.g. 0.1,0.2; got '" +
+          text + "'");
+    }
+    angles.push_back(angle);
+    if (comma == text.size()) return angles;
+    start = comma + 1;
+  }
+}
+
 // The config of the file, the overrides and --angles, validated.
 config::Config resolve(const EvalOptions& options) {
   config::Config config;
@@ -64,11 +90,7 @@ config::Config resolve(const EvalOptions& options) {
   for (const auto& assignment : options.sets) config.set(assignment);
   if (!options.angles.empty()) {
     std::string list = "[";
-    for (const double angle : options.angles) {
-      if (!std::isfinite(angle)) {
-        throw config::ConfigError("--angles: every angle must be a finite number; got " +
-                                  format_number(angle));
-      }
+    for (const double angle : parse_angles(options.angles)) {
       list += (list.size() > 1 ? ", " : "") + format_number(angle);
     }
     config.set("evaluation.angles=" + list + "]", "--angles");
@@ -77,6 +99,7 @@ config::Config resolve(const EvalOptions& options) {
     throw config::ConfigError("evaluation.angles is empty: give --angles or set some");
   }
   diagrams::validate_all(config);
+  experiments::check_evaluation_conditions(config);
   return experiments::evaluation_config(config);
 }
 
@@ -133,7 +156,10 @@ int eval_command(const EvalOptions& options) {
       throw config::ConfigError("--repeats must be from 1 to " + std::to_string(kMaxRepeats) +
                                 "; got " + std::to_string(options.repeats));
     }
-    if (!options.out.empty()) check_output_directory(options.out, "--out");
+    if (!options.out.empty()) {
+      check_output_directory(options.out, "--out");
+      store::Manifest(options.out).check_writable({kEvaluationFile}, "--out");
+    }
     loop.push = push_from(options);
     config = resolve(options);
     weights = store::load_weights(options.weights_file);
@@ -153,7 +179,9 @@ int eval_command(const EvalOptions& options) {
         weights, settings);
     if (!options.out.empty()) {
       std::filesystem::create_directories(options.out);
-      store::write_atomically(options.out / "evaluation.csv", evaluation_csv(evaluation));
+      store::Manifest manifest(options.out);
+      manifest.add({kEvaluationFile});
+      store::write_atomically(options.out / kEvaluationFile, evaluation_csv(evaluation));
     }
     print_table(evaluation, config, weights, options);
   } catch (const std::exception& error) {

@@ -15,7 +15,8 @@ struct EvalOptions {
   std::filesystem::path weights_file;  // --load-weights (required)
   std::filesystem::path config_file;   // --config; empty: defaults only
   std::vector<std::string> sets;       // --set key.path=value overrides, in order
-  std::vector<double> angles;          // --angles, rad; empty: the config's evaluation.angles
+  std::string angles;                  // --angles as typed: rad, comma-separated; empty: the
+                                       // config's evaluation.angles
   int repeats = 1;                     // --repeats: runs per angle, >= 1
   // --push-time (s, >= 0), --push-torque (N m, added to both wheels), --push-duration (s, > 0):
   // all three or none.
@@ -23,7 +24,8 @@ struct EvalOptions {
   std::optional<double> push_torque;
   std::optional<double> push_duration;
   // --out: a directory that receives evaluation.csv (theta0, seed, balanced, steps,
-  // final_theta, status: one row per run); empty: no file.
+  // final_theta, status: one row per run); empty: no file. An evaluation.csv there is
+  // replaced only when cbbg wrote it (the directory's .cbbg-written lists it).
   std::filesystem::path out;
 };
 

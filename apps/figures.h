@@ -17,10 +17,23 @@ struct FigureOptions {
   std::string run_name;  // the replays' title; empty: the directory's name
 };
 
-// Draws DIR/figures/. A missing Python/matplotlib, Graphviz or replay page is reported as a
-// warning: the data files stand on their own. Returns false when a figure could not be made.
-bool draw_figures(const std::filesystem::path& directory, const config::Config& config,
-                  const FigureOptions& options);
+// The figures cbbg itself writes into DIR/figures (the plots are the script's).
+inline constexpr const char* kDiagramFigure = "diagram.svg";
+inline std::string replay_figure(const std::string& arm) { return "replay_" + arm + ".html"; }
+
+// Draws DIR/figures/, listing each file in its manifest (store/output_guard.h), never over a
+// file of the user's. A missing Python/matplotlib, Graphviz or replay page is reported as a
+// warning: the data files stand on their own. Returns 0 when every figure was made, 1 when
+// one could not be, 2 when the plotting script refused a name a user's file holds.
+int draw_figures(const std::filesystem::path& directory, const config::Config& config,
+                 const FigureOptions& options);
+
+// The arms whose trials DIR holds (its trials.csv; else the config's).
+std::vector<std::string> run_arms(const std::filesystem::path& directory,
+                                  const config::Config& config);
+// What draw_figures writes itself for those arms.
+std::vector<std::string> own_figure_names(const std::vector<std::string>& arms,
+                                          const FigureOptions& options);
 
 // DIR/figures/replay_<arm>.html per arm of the run: its first seed's first trial, first
 // successful trial and last trial. Warns and returns false when they cannot be written.

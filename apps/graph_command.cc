@@ -8,6 +8,7 @@
 #include "diagrams/params_from_config.h"
 #include "diagrams/presets.h"
 #include "experiments/experiments.h"
+#include "store/output_guard.h"
 
 namespace cbbg::app {
 
@@ -24,7 +25,12 @@ int graph_command(const GraphOptions& options) {
     } catch (const std::invalid_argument& error) {
       throw config::ConfigError(std::string("--diagram: ") + error.what());
     }
+    if (options.max_depth && *options.max_depth < 0) {
+      throw config::ConfigError("--depth must be 0 or more (the nesting levels to expand); got " +
+                                std::to_string(*options.max_depth));
+    }
     check_output_file(options.output, "-o");
+    store::check_replaceable_file(options.output, "-o", kDiagramGeneratorTag);
   } catch (const config::ConfigError& error) {
     return report_error(kUserError, error.what());
   } catch (const std::exception& error) {
@@ -33,7 +39,7 @@ int graph_command(const GraphOptions& options) {
   try {
     draw_diagram(
         diagram, config, options.output,
-        GraphvizOptions{.max_depth = options.max_depth,
+        GraphvizOptions{.max_depth = options.max_depth.value_or(-1),
                         .hidden_blocks = options.show_telemetry ? std::vector<std::string>{}
                                                                 : telemetry_blocks(diagram)});
   } catch (const std::invalid_argument& error) {

@@ -122,8 +122,8 @@ int main(int argc, char** argv) {
   eval_app->add_option("--config", eval.config_file, "a YAML config (keys: `cbbg list`)");
   eval_app->add_option("--set", eval.sets,
                        "override one key: --set plant.kind=analytic (repeatable)");
-  eval_app->add_option("--angles", eval.angles, "initial pitches, rad (default: evaluation.angles)")
-      ->delimiter(',');
+  eval_app->add_option("--angles", eval.angles,
+                       "initial pitches, rad, comma-separated (default: evaluation.angles)");
   eval_app->add_option("--repeats", eval.repeats, "runs per angle, seeds seed, seed + 1, ...");
   eval_app->add_option("--push-time", eval.push_time,
                        "push start, s (with --push-torque, --push-duration)");

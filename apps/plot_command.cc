@@ -1,5 +1,6 @@
 // cbbg plot DIR, and the figures `cbbg run` draws at its end.
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -12,6 +13,8 @@
 #include "apps/figures.h"
 #include "diagrams/presets.h"
 #include "experiments/experiments.h"
+#include "replay/trial_log.h"
+#include "store/output_guard.h"
 
 namespace cbbg::app {
 namespace {
@@ -23,6 +26,12 @@ std::string quoted(const std::string& text) {
   std::string result = "'";
   for (const char c : text) result += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return result + "'";
+}
+
+// A sweep's merged results: its figures are the plotting script's alone.
+bool is_sweep(const std::filesystem::path& directory) {
+  std::error_code error;
+  return std::filesystem::exists(directory / "sweep.csv", error);
 }
 
 }  // namespace
@@ -48,23 +57,56 @@ int run_plot_script(const std::filesystem::path& directory, bool quiet) {
   return WEXITSTATUS(status);
 }
 
-bool draw_figures(const std::filesystem::path& directory, const config::Config& config,
-                  const FigureOptions& options) {
-  bool complete = run_plot_script(directory, options.quiet) == 0;
-  if (!complete) spdlog::warn("the plots could not be drawn (see the message above)");
-  std::filesystem::create_directories(directory / "figures");
-  const std::string arm = experiments::experiment_arms(config).front();
+std::vector<std::string> run_arms(const std::filesystem::path& directory,
+                                  const config::Config& config) {
+  // trials.csv names the arms that ran, a user's own too; config.yaml may not know them.
+  std::vector<std::string> arms;
   try {
-    draw_diagram(arm, config, directory / "figures" / "diagram.svg",
-                 GraphvizOptions{.hidden_blocks = telemetry_blocks(arm)});
-  } catch (const std::runtime_error& error) {
-    spdlog::warn("diagram.svg: {}", error.what());
-    complete = false;
+    for (const replay::TrialEntry& entry : replay::read_trial_entries(directory / "trials.csv")) {
+      if (std::find(arms.begin(), arms.end(), entry.arm) == arms.end()) arms.push_back(entry.arm);
+    }
+  } catch (const replay::InputError&) {
+    arms.clear();
+  }
+  return arms.empty() ? experiments::experiment_arms(config) : arms;
+}
+
+std::vector<std::string> own_figure_names(const std::vector<std::string>& arms,
+                                          const FigureOptions& options) {
+  std::vector<std::string> names{kDiagramFigure};
+  if (options.replays) {
+    for (const std::string& arm : arms) names.push_back(replay_figure(arm));
+  }
+  return names;
+}
+
+int draw_figures(const std::filesystem::path& directory, const config::Config& config,
+                 const FigureOptions& options) {
+  const int plotted = run_plot_script(directory, options.quiet);
+  if (plotted == kUserError) return kUserError;  // a figure's name is taken by a user's file
+  bool complete = plotted == 0;
+  if (!complete) spdlog::warn("the plots could not be drawn (see the message above)");
+  if (is_sweep(directory)) return complete ? 0 : kMachineError;  // the script's figures alone
+  std::filesystem::create_directories(directory / "figures");
+  const std::vector<std::string> arms = run_arms(directory, config);
+  const std::vector<std::string>& presets = config::diagram_names();
+  if (std::find(presets.begin(), presets.end(), arms.front()) == presets.end()) {
+    spdlog::info("no diagram.svg: arm '{}' is not a preset (draw it with cbbg::to_dot)",
+                 arms.front());
+  } else {
+    try {
+      store::Manifest(directory / "figures").add({kDiagramFigure});
+      draw_diagram(arms.front(), config, directory / "figures" / kDiagramFigure,
+                   GraphvizOptions{.hidden_blocks = telemetry_blocks(arms.front())});
+    } catch (const std::runtime_error& error) {
+      spdlog::warn("{}: {}", kDiagramFigure, error.what());
+      complete = false;
+    }
   }
   if (options.replays) {
     complete = write_run_replays(directory, config, options.run_name) && complete;
   }
-  return complete;
+  return complete ? 0 : kMachineError;
 }
 
 void draw_diagram(const std::string& name, const config::Config& config,
@@ -87,12 +129,17 @@ int plot_command(const std::filesystem::path& directory) {
     }
     config.merge_file(directory / "config.yaml");
     check_output_directory(directory / "figures", "cbbg plot");
+    if (!is_sweep(directory)) {
+      store::Manifest(directory / "figures")
+          .check_writable(own_figure_names(run_arms(directory, config), {}), "cbbg plot");
+    }
+    store::remove_temporaries(directory, store::Leftovers::kStale);  // a killed plot's staging
   } catch (const config::ConfigError& error) {
     return report_error(kUserError, error.what());
   } catch (const std::exception& error) {
     return report_error(kMachineError, describe(error));
   }
-  return draw_figures(directory, config, {}) ? 0 : 1;
+  return draw_figures(directory, config, {});
 }
 
 }  // namespace cbbg::app

@@ -12,6 +12,7 @@
 #include "experiments/experiments.h"
 #include "replay/replay_page.h"
 #include "store/files.h"
+#include "store/output_guard.h"
 
 namespace cbbg::app {
 namespace {
@@ -28,20 +29,6 @@ std::string page_template() {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// A file at `path` that cbbg replay did not write is the user's: never replaced.
-void check_replaceable(const std::filesystem::path& path) {
-  std::error_code error;
-  if (!std::filesystem::exists(path, error)) return;
-  std::ifstream in(path, std::ios::binary);
-  std::string head(4096, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  if (head.find(replay::kGeneratorTag) == std::string::npos) {
-    throw config::ConfigError("-o: '" + path.string() +
-                              "' exists and is not a cbbg replay; choose another file");
-  }
-}
-
 }  // namespace
 
 int replay_command(const ReplayOptions& options) {
@@ -54,7 +41,7 @@ int replay_command(const ReplayOptions& options) {
       }
     }
     check_output_file(options.output, "-o");
-    check_replaceable(options.output);
+    store::check_replaceable_file(options.output, "-o", replay::kGeneratorTag);
     page = replay::replay_of_run(options.directory, {options.arm, options.seed, options.trials},
                                  page_template());
   } catch (const config::ConfigError& error) {
@@ -83,9 +70,12 @@ bool write_run_replays(const std::filesystem::path& directory, const config::Con
   }
   try {
     const std::string page = page_template();
-    for (const std::string& arm : experiments::experiment_arms(config)) {
+    store::Manifest manifest(directory / "figures");
+    for (const std::string& arm : run_arms(directory, config)) {
+      manifest.check_writable({replay_figure(arm)}, "the replay");
+      manifest.add({replay_figure(arm)});
       store::write_atomically(
-          directory / "figures" / ("replay_" + arm + ".html"),
+          directory / "figures" / replay_figure(arm),
           replay::replay_of_run(directory, {arm, std::nullopt, {}}, page, run_name));
     }
     return true;

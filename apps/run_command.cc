@@ -14,7 +14,9 @@
 #include "apps/progress.h"
 #include "diagrams/params_from_config.h"
 #include "diagrams/presets.h"
+#include "experiments/evaluation_conditions.h"
 #include "experiments/experiments.h"
+#include "store/output_guard.h"
 #include "store/results_writer.h"
 #include "store/run_directory.h"
 #include "store/task_store.h"
@@ -37,6 +39,7 @@ config::Config resolve(const RunOptions& options) {
   if (options.seeds) config.set("seeds=" + *options.seeds, "--seeds " + *options.seeds);
   if (options.seed) config.set("seed=" + *options.seed, "--seed " + *options.seed);
   diagrams::validate_all(config);
+  experiments::check_evaluation_conditions(config);
   return config;
 }
 
@@ -144,6 +147,7 @@ PreparedRun prepare(const RunOptions& options) {
     run.config = run.directory->config();
     if (run.directory->published()) return run;
     diagrams::validate_all(run.config);
+    experiments::check_evaluation_conditions(run.config);
   } else {
     run.config = resolve(options);
   }
@@ -155,6 +159,7 @@ PreparedRun prepare(const RunOptions& options) {
           " (use --experiment ARM --seeds 1; every run's weights are in DIR/weights/)");
     }
     check_output_file(options.save_weights, "--save-weights");
+    store::check_replaceable_file(options.save_weights, "--save-weights", store::kWeightsFormat);
   }
   if (!options.load_weights.empty()) {
     run.initial_weights = store::load_weights(options.load_weights);

@@ -14,6 +14,7 @@
 #include "apps/figures.h"
 #include "config/sweep.h"
 #include "diagrams/params_from_config.h"
+#include "experiments/evaluation_conditions.h"
 #include "experiments/experiments.h"
 #include "store/files.h"
 #include "store/results_writer.h"
@@ -48,6 +49,7 @@ SweepPlan plan(config::Config base, config::Sweep sweep) {
     result.points.push_back(result.sweep.config(result.base, p));
     try {
       diagrams::validate_all(result.points.back());
+      experiments::check_evaluation_conditions(result.points.back());
     } catch (const config::ConfigError& error) {
       throw config::ConfigError("grid point " + store::point_name(p, result.sweep.points()) + ": " +
                                 error.what());
@@ -243,6 +245,7 @@ int status_command(const std::filesystem::path& target) {
     work += ".partial";
     std::error_code error;
     if (std::filesystem::exists(target / store::kResultsMarker, error) &&
+        std::filesystem::exists(target / "sweep.csv", error) &&
         !std::filesystem::exists(work, error)) {
       std::cout << target.string() << ": merged\n";
       return 0;

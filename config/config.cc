@@ -277,6 +277,13 @@ std::string last_segment(std::string_view path) {
   return std::string(dot == std::string_view::npos ? path : path.substr(dot + 1));
 }
 
+// A text as a YAML scalar: plain when YAML reads it back unchanged, else quoted.
+std::string yaml_scalar(const std::string& text) {
+  YAML::Emitter out;
+  out << text;
+  return out.c_str();
+}
+
 void write_value(std::ostringstream& out, const Value& value) {
   std::visit(
       [&out](const auto& v) {
@@ -286,15 +293,15 @@ void write_value(std::ostringstream& out, const Value& value) {
         } else if constexpr (std::is_same_v<T, long long>) {
           out << v;
         } else if constexpr (std::is_same_v<T, std::string>) {
-          out << v;
+          out << yaml_scalar(v);
         } else if constexpr (std::is_same_v<T, std::vector<double>>) {
           out << "[";
           for (std::size_t i = 0; i < v.size(); ++i) out << (i ? ", " : "") << format_number(v[i]);
           out << "]";
         } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
-          out << "[";
-          for (std::size_t i = 0; i < v.size(); ++i) out << (i ? ", " : "") << v[i];
-          out << "]";
+          YAML::Emitter list;  // quotes what a flow list needs quoted (a comma, a bracket)
+          list << YAML::Flow << v;
+          out << list.c_str();
         } else {
           for (const auto& step : v) {
             out << "\n  - {from_trial: " << step.from_trial << ", k1: " << format_number(step.k1)

@@ -33,6 +33,44 @@ std::string trimmed(const std::string& text) {
   return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
+// A value as YAML reads it, written back in YAML's own flow form: "0.1 # note" becomes
+// "0.1", a string that needs quotes gets them. So a sweep's config.yaml always reads back to
+// the values swept, whatever a user typed.
+// A loaded node keeps the style it was written in; a grid value is one line of flow YAML.
+void set_flow_style(YAML::Node node) {
+  if (!node.IsSequence() && !node.IsMap()) return;
+  node.SetStyle(YAML::EmitterStyle::Flow);
+  for (auto entry : node) {
+    if (node.IsMap()) {
+      set_flow_style(entry.first);
+      set_flow_style(entry.second);
+    } else {
+      set_flow_style(entry);
+    }
+  }
+}
+
+std::string flow_text(const YAML::Node& node) {
+  const YAML::Node copy = YAML::Clone(node);
+  set_flow_style(copy);
+  YAML::Emitter out;
+  out << YAML::Flow << copy;
+  return out.c_str();
+}
+
+std::string canonical_value(const std::string& text, const std::string& source) {
+  YAML::Node node;
+  try {
+    node = YAML::Load(text);
+  } catch (const YAML::Exception& error) {
+    throw ConfigError(source + ": '" + text + "' is not a YAML value: " + error.msg);
+  }
+  if (!node.IsDefined() || node.IsNull()) {
+    throw ConfigError(source + ": an empty value; give V1,V2,...");
+  }
+  return flow_text(node);
+}
+
 }  // namespace
 
 void Sweep::add_axis(SweepAxis axis) {
@@ -60,7 +98,9 @@ void Sweep::add_flag(std::string_view assignment) {
   }
   SweepAxis axis{trimmed(std::string(assignment.substr(0, equals))), {}, source};
   for (const std::string& value : split_values(assignment.substr(equals + 1))) {
-    axis.values.push_back(trimmed(value));
+    const std::string text = trimmed(value);
+    if (text.empty()) throw ConfigError(source + ": an empty value; give V1,V2,...");
+    axis.values.push_back(canonical_value(text, source));
   }
   add_axis(std::move(axis));
 }
@@ -79,15 +119,18 @@ void Sweep::add_yaml(const std::string& text, const std::string& source) {
                       "(sweep: {actor.alpha: [0.1, 0.2]})");
   }
   for (const auto& entry : section) {
+    if (!entry.first.IsScalar()) {
+      throw ConfigError(source + ": a sweep's key is a key path such as actor.alpha; got " +
+                        flow_text(entry.first));
+    }
     const std::string key = entry.first.as<std::string>();
     SweepAxis axis{key, {}, source + ": sweep." + key};
     if (!entry.second.IsSequence() || entry.second.size() == 0) {
       throw ConfigError(axis.source + " must be a list of values, e.g. [0.1, 0.2]");
     }
     for (const auto& value : entry.second) {
-      YAML::Emitter out;
-      out << YAML::Flow << value;
-      axis.values.emplace_back(out.c_str());
+      if (value.IsNull()) throw ConfigError(axis.source + ": an empty value; give V1,V2,...");
+      axis.values.push_back(flow_text(value));
     }
     add_axis(std::move(axis));
   }

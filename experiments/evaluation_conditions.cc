@@ -5,13 +5,21 @@
 #include <vector>
 
 #include "blocks/measured_signals.h"
+#include "diagrams/params_from_config.h"
 #include "framework/number_text.h"
 
 namespace cbbg::experiments {
 namespace {
 
-void scale(config::Config& config, const std::string& key, double factor) {
-  config.set(key + "=" + format_number(config.number(key) * factor), "evaluation");
+void scale(config::Config& config, const std::string& key, const char* scale_key) {
+  const double factor = config.number(scale_key);
+  const double scaled = config.number(key) * factor;
+  if (!std::isfinite(scaled) || scaled <= 0.0) {
+    throw config::ConfigError(std::string(scale_key) + " (" + format_number(factor) + ") makes " +
+                              key + " " + format_number(scaled) +
+                              "; the scaled value must be a finite number > 0");
+  }
+  config.set(key + "=" + format_number(scaled), scale_key);
 }
 
 void add_pitch_noise(config::Config& config, double std) {
@@ -36,11 +44,11 @@ config::Config evaluation_config(const config::Config& training) {
   if (mass != 1.0) {
     for (const char* key : {"plant.body_mass", "plant.body_pitch_inertia", "plant.body_yaw_inertia",
                             "plant.body_roll_inertia"}) {
-      scale(config, key, mass);
+      scale(config, key, "evaluation.body_mass_scale");
     }
   }
   const double height = training.number("evaluation.com_height_scale");
-  if (height != 1.0) scale(config, "plant.com_height", height);
+  if (height != 1.0) scale(config, "plant.com_height", "evaluation.com_height_scale");
   const double noise = training.number("evaluation.noise_std");
   if (noise != 0.0) add_pitch_noise(config, noise);
   const double push = training.number("evaluation.push_torque");
@@ -52,6 +60,16 @@ config::Config evaluation_config(const config::Config& training) {
                "evaluation");
   }
   return config;
+}
+
+void check_evaluation_conditions(const config::Config& training) {
+  const config::Config evaluated = evaluation_config(training);
+  try {
+    diagrams::validate_all(evaluated);
+  } catch (const config::ConfigError& error) {
+    throw config::ConfigError("the evaluated robot (" + describe_conditions(training) +
+                              ") is invalid: " + error.what());
+  }
 }
 
 std::string describe_conditions(const config::Config& config) {

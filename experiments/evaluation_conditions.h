@@ -24,6 +24,11 @@ namespace cbbg::experiments {
 
 config::Config evaluation_config(const config::Config& training);
 
+// Before any work: the robot and the push the evaluation.* keys make of `training` are valid
+// (a scale of 1e308 makes an infinite mass). Throws config::ConfigError naming the evaluation
+// key and the value it makes.
+void check_evaluation_conditions(const config::Config& training);
+
 // The perturbations of `config`'s evaluation.* keys in words ("body mass x1.3, pitch noise
 // 0.02"), or "" at their defaults.
 std::string describe_conditions(const config::Config& config);

@@ -12,8 +12,11 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <optional>
 #include <stdexcept>
 #include <string_view>
@@ -105,6 +108,7 @@ class DotWriter {
 
   std::string write(const Diagram& root) {
     text_ = "digraph " + dot_quoted(root.name()) + " {\n";
+    text_ += "  comment=\"" + std::string(kDiagramGeneratorTag) + "\";\n";
     text_ += "  rankdir=LR;\n";
     text_ += "  node [fontname=\"Helvetica\", fontsize=11];\n";
     text_ += "  edge [fontname=\"Helvetica\", fontsize=9];\n";
@@ -230,7 +234,9 @@ class PendingFile {
   explicit PendingFile(const std::filesystem::path& output) : output_(output) {
     const std::filesystem::path directory =
         output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
-    std::string pattern = (directory / ("." + output.filename().string() + ".XXXXXX")).string();
+    // ".cbbg-tmp-" marks it as cbbg's temporary, which a later command may clean up.
+    std::string pattern =
+        (directory / ("." + output.filename().string() + ".cbbg-tmp-XXXXXX")).string();
     fd_ = ::mkostemp(pattern.data(), O_CLOEXEC);
     if (fd_ < 0) throw std::runtime_error(errno_message("cannot write '" + output.string() + "'"));
     path_ = pattern;
@@ -324,6 +330,41 @@ std::string trimmed(std::string text) {
 }
 
 // Runs `dot -T<format> -o <file>` with the DOT text on stdin; throws unless it succeeds.
+std::uint32_t png_crc(std::string_view bytes) {
+  std::uint32_t crc = 0xffffffffU;
+  for (const char c : bytes) {
+    crc ^= static_cast<unsigned char>(c);
+    for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xedb88320U & (0U - (crc & 1U)));
+  }
+  return crc ^ 0xffffffffU;
+}
+
+std::string big_endian(std::uint32_t value) {
+  return {static_cast<char>(value >> 24), static_cast<char>(value >> 16),
+          static_cast<char>(value >> 8), static_cast<char>(value)};
+}
+
+// Graphviz cannot label a PNG: a tEXt chunk ("Software", the tag) goes in after IHDR.
+void tag_png(const std::string& path, const std::filesystem::path& output) {
+  std::string png;
+  {
+    std::ifstream in(path, std::ios::binary);
+    png.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  constexpr std::size_t kAfterHeader = 8 + 4 + 4 + 13 + 4;  // signature, IHDR chunk
+  if (png.size() < kAfterHeader || png.compare(12, 4, "IHDR") != 0) {
+    throw std::runtime_error("cannot render '" + output.string() + "': dot wrote no PNG");
+  }
+  const std::string body = std::string("tEXtSoftware") + '\0' + kDiagramGeneratorTag;
+  const std::string chunk =
+      big_endian(static_cast<std::uint32_t>(body.size() - 4)) + body + big_endian(png_crc(body));
+  png.insert(kAfterHeader, chunk);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << png;
+  if (!out.flush())
+    throw std::runtime_error(errno_message("cannot write '" + output.string() + "'"));
+}
+
 void run_dot(const std::filesystem::path& dot_program, const std::string& format,
              const std::string& dot, const std::string& file, const std::filesystem::path& output) {
   FileDescriptor input = anonymous_file(output);
@@ -395,6 +436,7 @@ void render_dot(const std::string& dot, const std::filesystem::path& output) {
   }
   PendingFile file(output);
   run_dot(*dot_program, extension.substr(1), dot, file.path(), output);
+  if (extension == ".png") tag_png(file.path(), output);
   file.commit();
 }
 

@@ -36,6 +36,10 @@ struct GraphvizOptions {
   std::vector<std::string> hidden_blocks{};
 };
 
+// Every drawing render_dot writes carries this tag (a DOT and SVG comment, a PNG text chunk),
+// so a later command knows the file as cbbg's own and may replace it.
+inline constexpr const char* kDiagramGeneratorTag = "made by cbbg";
+
 // The DOT text (a `digraph`, laid out left to right) of `diagram` and everything inside it.
 std::string to_dot(const Diagram& diagram, const GraphvizOptions& options = {});
 

@@ -20,9 +20,12 @@ and for a sweep (a directory with sweep.csv, written by cbbg merge):
                        swept key, one line per arm and per value of the other keys, and
                        beside it the evaluation's balance rate where sweep.csv has one
 
-The figures are drawn into a staging folder that replaces DIR/figures only when all of
-them are written. Exit status: 0 done, 2 a missing or malformed input file (one line on
-stderr naming the file), 1 the figures could not be written.
+The figures are drawn into a staging folder and moved into DIR/figures only when all of
+them are written. DIR/figures may hold files of yours: they are never replaced or removed.
+DIR/figures/.cbbg-written lists the files cbbg wrote there; a figure whose name is taken by
+a file not listed is refused before anything moves. Exit status: 0 done, 2 a missing or
+malformed input file or a figure's name taken by a file of yours (one line on stderr naming
+the file), 1 the figures could not be written.
 
 Needs Debian's python3-numpy and python3-matplotlib: run it with /usr/bin/python3.
 """
@@ -33,8 +36,8 @@ import math
 import os
 import re
 import shutil
+import socket
 import sys
-import tempfile
 from dataclasses import dataclass
 
 MISSING_MODULE = None  # numpy or matplotlib absent: main() says so instead of a traceback
@@ -850,18 +853,50 @@ def draw_exp2(save, summary, trials, pitch_path, failure_angle, stages, experime
                                    failure_angle, stages, plant), name)
 
 
-def replace_folder(staging, final):
-    """Put the staged figures at `final`, replacing any previous figures folder."""
-    previous = None
-    if os.path.lexists(final):
-        if not os.path.isdir(final) or os.path.islink(final):
-            raise OSError(f"{final} exists and is not a folder")
-        previous = tempfile.mkdtemp(prefix=".figures.old-", dir=os.path.dirname(final))
-        os.rmdir(previous)
-        os.rename(final, previous)
-    os.rename(staging, final)
-    if previous is not None:
-        shutil.rmtree(previous, ignore_errors=True)
+# What cbbg's temporaries and manifests are called (the C++ store's output discipline).
+TEMPORARY_TAG = ".cbbg-tmp-"
+MANIFEST = ".cbbg-written"
+MANIFEST_HEADER = "cbbg-written 1"
+
+
+def temporary_name(folder, name):
+    """A hidden name beside `name` that marks it as cbbg's temporary (removed on resume)."""
+    return os.path.join(folder, f".{name}{TEMPORARY_TAG}{socket.gethostname()}-{os.getpid()}-0")
+
+
+def read_manifest(folder):
+    """The names cbbg wrote into `folder`, as its manifest lists them (none: empty)."""
+    try:
+        with open(os.path.join(folder, MANIFEST), encoding="utf-8") as f:
+            lines = f.read().splitlines()
+    except FileNotFoundError:
+        return []
+    return lines[1:] if lines and lines[0] == MANIFEST_HEADER else []
+
+
+def write_manifest(folder, names):
+    path = os.path.join(folder, MANIFEST)
+    temporary = temporary_name(folder, MANIFEST)
+    with open(temporary, "w", encoding="utf-8") as f:
+        f.write("".join(line + "\n" for line in [MANIFEST_HEADER] + names))
+    os.replace(temporary, path)
+
+
+def publish_figures(staging, final, names):
+    """Move the staged figures into `final`, never over a file that cbbg did not write."""
+    if os.path.lexists(final) and (not os.path.isdir(final) or os.path.islink(final)):
+        raise InputError(final, "exists and is not a folder; move it away")
+    os.makedirs(final, exist_ok=True)
+    listed = read_manifest(final)
+    for name in names:
+        target = os.path.join(final, name)
+        if os.path.lexists(target) and name not in listed:
+            raise InputError(target, "exists and cbbg did not write it; cbbg never replaces a "
+                             "file of yours: move it away")
+    # Listed before they arrive, so a kill never leaves a figure of cbbg's unlisted.
+    write_manifest(final, listed + [name for name in names if name not in listed])
+    for name in names:
+        os.replace(os.path.join(staging, name), os.path.join(final, name))
 
 
 def read_sweep(path):
@@ -999,10 +1034,8 @@ def run(results_dir):
 
 def draw_into(results_dir, draw):
     """Runs draw(save) into a staging folder that then replaces DIR/figures."""
-    staging = tempfile.mkdtemp(prefix=".figures.tmp-", dir=results_dir)
-    umask = os.umask(0)
-    os.umask(umask)
-    os.chmod(staging, 0o777 & ~umask)  # mkdtemp's folder is private; figures are not
+    staging = temporary_name(results_dir, "figures")
+    os.makedirs(staging)
     written = []
 
     def save(fig, name):
@@ -1010,13 +1043,12 @@ def draw_into(results_dir, draw):
         plt.close(fig)
         written.append(name)
 
+    final = os.path.join(results_dir, "figures")
     try:
         draw(save)
-        final = os.path.join(results_dir, "figures")
-        replace_folder(staging, final)
-    except BaseException:
+        publish_figures(staging, final, written)
+    finally:
         shutil.rmtree(staging, ignore_errors=True)
-        raise
     for name in written:
         print(f"wrote {os.path.join(final, name)}")
 

@@ -1,5 +1,7 @@
 #include "store/files.h"
 
+#include "store/output_guard.h"
+
 #include <unistd.h>
 
 #include <atomic>
@@ -13,10 +15,8 @@
 namespace cbbg::store {
 
 void write_atomically(const std::filesystem::path& path, const std::string& text) {
-  // Unique per process and call, so threads writing at once never share a temporary file.
-  static std::atomic<int> counter{0};
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  // Tagged as cbbg's temporary (store/output_guard.h), so a resume or a merge removes it.
+  const std::filesystem::path temporary = temporary_beside(path);
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     out << text;

@@ -13,6 +13,9 @@
 
 #include "store/fault_point.h"
 #include "store/files.h"
+#include "store/output_guard.h"
+#include "store/sweep_directory.h"
+#include "store/task_store.h"
 
 namespace cbbg::store {
 namespace fs = std::filesystem;
@@ -40,6 +43,7 @@ constexpr std::pair<const char*, const char*> kResultFolders[] = {{"weights", ".
                                                                   {"figures", ".html"}};
 
 bool is_own_entry(const fs::path& directory, const fs::directory_entry& entry) {
+  if (is_temporary(entry.path())) return true;  // a killed write's leftover, cbbg's own
   const std::string name = entry.path().filename().string();
   for (const char* file : kResultFiles) {
     if (name == file && entry.is_regular_file()) return true;
@@ -49,7 +53,7 @@ bool is_own_entry(const fs::path& directory, const fs::directory_entry& entry) {
   for (const auto& inner : fs::directory_iterator(directory / name, error)) {
     bool known = false;
     for (const auto& [folder, ending] : kResultFolders) {
-      known = known ||
+      known = known || is_temporary(inner.path()) || inner.path().filename() == kManifestFile ||
               (name == folder && inner.is_regular_file() && inner.path().extension() == ending);
     }
     if (!known) return false;
@@ -100,6 +104,11 @@ void check_target(const fs::path& target, bool replace) {
 void check_work_free(const fs::path& work, const fs::path& target) {
   std::error_code error;
   if (!fs::exists(fs::symlink_status(work, error))) return;
+  if (has(work, kSweepWorkMarker)) {
+    throw config::ConfigError(quoted_path(work) + " holds a sweep's unfinished tasks: continue " +
+                              "it with the same cbbg run --grid command, or see cbbg status " +
+                              target.string());
+  }
   if (!has(work, kWorkMarker)) {
     throw config::ConfigError(
         quoted_path(work) + " is in the way and was not made by cbbg; move it " +
@@ -155,12 +164,10 @@ RunDirectory RunDirectory::create(const fs::path& target, const config::Config& 
   RunDirectory directory(target);
   check_work_free(directory.work_, directory.target_);
   create_parent(directory.work_);
+  remove_stale_staging(directory.work_);
   // Built under a private name and renamed into place, so TARGET.partial never exists
   // without its marker.
-  std::string hidden = ".";
-  hidden += directory.work_.filename().string();
-  hidden += ".new-" + std::to_string(::getpid());
-  const fs::path staging = directory.work_.parent_path() / hidden;
+  const fs::path staging = temporary_beside(directory.work_);
   std::error_code error;
   fs::create_directories(staging / "tasks", error);
   if (error) {
@@ -191,6 +198,7 @@ RunDirectory RunDirectory::resume(const fs::path& target) {
   if (has(directory.target_, kWorkMarker)) {
     // Published (commit step 3), not yet cleaned up: only step 4 remains.
     directory.lock_.emplace(directory.target_ / kLockFile, directory.target_.string());
+    remove_temporaries(directory.target_);
     directory.published_ = true;
     directory.config_.merge_file(directory.target_ / "config.yaml");
     return directory;
@@ -203,6 +211,8 @@ RunDirectory RunDirectory::resume(const fs::path& target) {
                                 " is in the way and was not made by cbbg; move it away");
     }
     directory.lock_.emplace(work / kLockFile, work.string());
+    remove_temporaries(work);  // the killed run's half-written files: redone from its tasks
+    check_own_tasks(work / "tasks");
     directory.read_marker();
     check_target(directory.target_, directory.shape_.replace);
     return directory;
@@ -262,6 +272,7 @@ void RunDirectory::remove_replaced() const {
 
 void RunDirectory::commit() {
   if (!published_) {
+    refuse_temporaries(work_);
     fault_point("commit:marker");
     write_atomically(work_ / kResultsMarker, "cbbg-results 1\n");
     fault_point("commit:publish");
@@ -274,7 +285,8 @@ void RunDirectory::commit() {
   }
   fault_point("commit:clean");
   remove_replaced();
-  for (const char* name : {"tasks", "initial_weights.txt"}) remove_tree(target_ / name);
+  remove_own_tasks(target_ / "tasks");
+  remove_tree(target_ / "initial_weights.txt");
   fault_point("commit:unmark");
   std::error_code error;
   fs::remove(target_ / kLockFile, error);

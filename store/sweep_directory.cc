@@ -12,7 +12,9 @@
 #include "config/config.h"
 #include "store/fault_point.h"
 #include "store/files.h"
+#include "store/output_guard.h"
 #include "store/run_directory.h"
+#include "store/task_store.h"
 
 namespace cbbg::store {
 namespace fs = std::filesystem;
@@ -33,11 +35,8 @@ bool present(const fs::path& path) {
 // Builds TARGET.partial under a private name and renames it into place, so that it never
 // exists without its marker; false when another shard's got there first.
 bool try_create(const fs::path& work, const std::string& config_yaml, bool figures) {
-  std::string hidden = ".";
-  hidden += work.filename().string();
-  hidden += ".new-";
-  hidden += std::to_string(::getpid());
-  const fs::path staging = work.parent_path() / hidden;
+  remove_stale_staging(work);
+  const fs::path staging = temporary_beside(work);
   std::error_code error;
   fs::create_directories(staging / "tasks", error);
   if (error) {
@@ -52,7 +51,11 @@ bool try_create(const fs::path& work, const std::string& config_yaml, bool figur
   throw std::runtime_error("cannot create " + quoted_path(work) + ": " + error.message());
 }
 
-void check_is_sweep(const fs::path& work) {
+void check_is_sweep(const fs::path& work, const fs::path& target) {
+  if (present(work / kWorkMarker)) {
+    throw config::ConfigError(quoted_path(work) + " holds an interrupted cbbg run, not a sweep: " +
+                              "continue it with cbbg run --resume " + target.string());
+  }
   if (!present(work / kSweepWorkMarker)) {
     throw config::ConfigError(quoted_path(work) +
                               " is in the way and is not a cbbg sweep's; move it away");
@@ -95,7 +98,7 @@ SweepDirectory SweepDirectory::open_shard(const fs::path& target, const std::str
   fs::create_directories(directory.work_.parent_path(), error);
   // false when another shard made it first: then this one joins it.
   if (!present(directory.work_)) try_create(directory.work_, config_yaml, figures);
-  check_is_sweep(directory.work_);
+  check_is_sweep(directory.work_, directory.target_);
   const std::string marker = read_text(directory.work_ / kSweepWorkMarker);
   if (marker == sweep_marker(config_yaml, !figures)) {
     throw config::ConfigError(quoted_path(directory.work_) + "'s shards were started " +
@@ -120,6 +123,8 @@ SweepDirectory SweepDirectory::open_shard(const fs::path& target, const std::str
   what += std::to_string(shards);
   what += ")";
   directory.lock_.emplace(directory.work_ / lock_file, what);
+  // Other shards may be writing: only the leftovers of writers that are gone.
+  remove_temporaries(directory.work_, Leftovers::kStale);
   return directory;
 }
 
@@ -130,16 +135,22 @@ SweepDirectory SweepDirectory::open_existing(const fs::path& target, bool lock) 
     // Renamed into place by a merge that was stopped before it had cleaned up.
     directory.published_ = true;
     if (lock) directory.lock_.emplace(directory.target_ / kLockFile, directory.target_.string());
+    if (lock) remove_temporaries(directory.target_);
     return directory;
   }
   if (!present(directory.work_)) {
+    if (present(directory.target_ / kResultsMarker) && !present(directory.target_ / "sweep.csv")) {
+      throw config::ConfigError(quoted_path(directory.target_) +
+                                " holds the results of a cbbg run, not of a sweep; status and "
+                                "merge are for sweeps (cbbg run --grid)");
+    }
     if (present(directory.target_ / kResultsMarker)) {
       throw config::ConfigError(quoted_path(directory.target_) + " is merged already");
     }
     throw config::ConfigError("no sweep at " + quoted_path(directory.target_) + ": " +
                               quoted_path(directory.work_) + " does not exist");
   }
-  check_is_sweep(directory.work_);
+  check_is_sweep(directory.work_, directory.target_);
   if (!lock) return directory;
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(directory.work_, error)) {
@@ -150,7 +161,9 @@ SweepDirectory SweepDirectory::open_existing(const fs::path& target, bool lock) 
                                 " is still running; merge when every shard has finished");
     }
   }
+  check_own_tasks(directory.work_ / "tasks");  // before the lock: a refusal writes nothing
   directory.lock_.emplace(directory.work_ / kLockFile, directory.work_.string());
+  remove_temporaries(directory.work_);  // every shard has ended: none is writing
   return directory;
 }
 
@@ -195,6 +208,7 @@ std::vector<std::pair<std::string, std::string>> SweepDirectory::failures() cons
 
 void SweepDirectory::commit() {
   if (!published_) {
+    refuse_temporaries(work_);
     fault_point("commit:marker");
     write_atomically(work_ / kResultsMarker, "cbbg-results 1\n");
     fault_point("commit:publish");
@@ -202,7 +216,8 @@ void SweepDirectory::commit() {
     published_ = true;
   }
   fault_point("commit:clean");
-  for (const char* name : {"tasks", "failed"}) remove_tree(target_ / name);
+  remove_own_tasks(target_ / "tasks");
+  remove_tree(target_ / "failed");
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(target_, error)) {
     const std::string name = entry.path().filename().string();

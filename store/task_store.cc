@@ -1,10 +1,13 @@
 #include "store/task_store.h"
 
+#include "config/config.h"
 #include "framework/number_text.h"
 #include "store/fault_point.h"
 #include "store/files.h"
+#include "store/output_guard.h"
 #include "store/weights_file.h"
 
+#include <algorithm>
 #include <charconv>
 #include <sstream>
 #include <stdexcept>
@@ -59,7 +62,59 @@ TrialOutcome read_outcome(std::istringstream& in, const std::string& source) {
   return outcome;
 }
 
+bool all_digits(const std::string& text) {
+  return !text.empty() &&
+         std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// N.run, N.steps.csv, N.steps.csv.pending, N.weights.txt, or a temporary of one.
+bool is_task_file(const std::filesystem::path& path) {
+  if (is_temporary(path)) return true;
+  const std::string name = path.filename().string();
+  const auto dot = name.find('.');
+  if (dot == std::string::npos || !all_digits(name.substr(0, dot))) return false;
+  const std::string kind = name.substr(dot);
+  return kind == ".run" || kind == ".steps.csv" || kind == ".steps.csv.pending" ||
+         kind == ".weights.txt";
+}
+
+// A sweep's tasks/POINT/ folder ("001") or a task file: what a tasks folder holds of cbbg's.
+bool is_own_task_entry(const std::filesystem::directory_entry& entry) {
+  std::error_code error;
+  if (entry.is_directory(error)) return all_digits(entry.path().filename().string());
+  return entry.is_regular_file(error) && is_task_file(entry.path());
+}
+
 }  // namespace
+
+void check_own_tasks(const std::filesystem::path& tasks) {
+  std::error_code error;
+  for (std::filesystem::recursive_directory_iterator it(tasks, error), end; !error && it != end;
+       it.increment(error)) {
+    if (!is_own_task_entry(*it)) {
+      throw config::ConfigError(quoted_path(it->path()) +
+                                " is not a task file of cbbg's, and the tasks are removed when "
+                                "the results are published; move it away first");
+    }
+  }
+}
+
+void remove_own_tasks(const std::filesystem::path& tasks) {
+  std::vector<std::filesystem::path> files;
+  std::vector<std::filesystem::path> folders;
+  std::error_code error;
+  for (std::filesystem::recursive_directory_iterator it(tasks, error), end; !error && it != end;
+       it.increment(error)) {
+    if (it->is_directory(error)) folders.push_back(it->path());
+    if (!it->is_directory(error) && is_own_task_entry(*it)) files.push_back(it->path());
+  }
+  for (const auto& file : files) remove_tree(file);
+  folders.insert(folders.begin(), tasks);
+  // Deepest first; a folder still holding something of the user's stays.
+  for (auto folder = folders.rbegin(); folder != folders.rend(); ++folder) {
+    if (std::filesystem::is_empty(*folder, error)) remove_tree(*folder);
+  }
+}
 
 std::string serialize_run(const SeedRun& run) {
   std::ostringstream out;
@@ -188,15 +243,23 @@ bool TaskStore::has(std::size_t task) const {
 bool TaskStore::load(std::size_t task, SeedRun& run) const {
   const std::filesystem::path path = record_path(task);
   if (!std::filesystem::exists(path)) return false;
-  SeedRun loaded = parse_run(read_text(path), path.string());
-  if (loaded.arm != run.arm || loaded.seed != run.seed) {
-    throw std::runtime_error(path.string() + ": holds " + loaded.arm + " seed " +
-                             std::to_string(loaded.seed) + ", expected " + run.arm + " seed " +
-                             std::to_string(run.seed));
+  try {
+    SeedRun loaded = parse_run(read_text(path), path.string());
+    if (loaded.arm != run.arm || loaded.seed != run.seed) {
+      throw std::runtime_error(path.string() + ": holds " + loaded.arm + " seed " +
+                               std::to_string(loaded.seed) + ", expected " + run.arm + " seed " +
+                               std::to_string(run.seed));
+    }
+    if (std::filesystem::exists(weights_path(task))) {
+      loaded.weights = load_weights(weights_path(task));
+    }
+    run = std::move(loaded);
+  } catch (const std::runtime_error& error) {
+    // The files are cbbg's own: the way forward is to redo that one task, not the whole run.
+    throw std::runtime_error(std::string(error.what()) + "; remove " + quoted_path(path) +
+                             " to redo that task (" + run.arm + " seed " +
+                             std::to_string(run.seed) + "), then continue as before");
   }
-  if (std::filesystem::exists(weights_path(task)))
-    loaded.weights = load_weights(weights_path(task));
-  run = std::move(loaded);
   return true;
 }
 

@@ -39,6 +39,13 @@ class TaskStore final : public experiments::TaskStorage {
   std::filesystem::path directory_;
 };
 
+// Before a resume or a merge, which ends by removing `tasks`: throws config::ConfigError naming
+// the first entry below it that is not a task file of cbbg's (a user's, to move away).
+void check_own_tasks(const std::filesystem::path& tasks);
+// Removes cbbg's task files below `tasks`, and the folders they leave empty; a user's file
+// that arrived since the check stays, with its folders.
+void remove_own_tasks(const std::filesystem::path& tasks);
+
 // A task's record as text; every number in shortest round-trip form, so it reads back to the
 // same bits. The steps rows are not part of it.
 std::string serialize_run(const SeedRun& run);

@@ -5,15 +5,19 @@ import { chromium } from "playwright-core";
 
 export const CHROMIUM = "/usr/bin/chromium";
 
-// Runs `use(browser)` and returns what it returns.
-export async function withChromium(use) {
+// SwiftShader gives WebGL without a GPU.
+export const WITH_WEBGL = ["--enable-unsafe-swiftshader", "--use-angle=swiftshader"];
+// A browser that offers no WebGL at all, as some do (no GPU, or WebGL turned off).
+export const WITHOUT_WEBGL = ["--disable-webgl", "--disable-3d-apis"];
+
+// Runs `use(browser)` and returns what it returns; `graphics` chooses the browser's WebGL.
+export async function withChromium(use, graphics = WITH_WEBGL) {
   if (!existsSync(CHROMIUM)) {
     throw new Error(`${CHROMIUM} is missing (scripts/setup.sh installs Debian's chromium)`);
   }
-  // SwiftShader gives WebGL without a GPU.
   const server = await chromium.launchServer({
     executablePath: CHROMIUM,
-    args: ["--no-sandbox", "--enable-unsafe-swiftshader", "--use-angle=swiftshader"],
+    args: ["--no-sandbox", ...graphics],
   });
   const pid = server.process().pid;
   try {

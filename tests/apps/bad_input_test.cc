@@ -2,6 +2,8 @@
 // the key, flag or path and what is allowed, exit 2 for what the user typed, and nothing
 // written or changed.
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -99,6 +101,15 @@ std::vector<BadInput> bad_inputs() {
        "--save-weights {S}/mine",
        "--save-weights '{S}/mine' is a directory; give a file path"},
       {"run --set plant.kind=analytic --experiment bg_only --seeds 1 --out {S}/out "
+       "--save-weights {S}/file",
+       "--save-weights '{S}/file' exists and cbbg did not write it"},
+      {"run --set plant.kind=analytic --experiment bg_only --seeds 1 --out {S}/out "
+       "--save-weights {S}/fifo",
+       "--save-weights '{S}/fifo' is a FIFO"},
+      {quick + "--set evaluation.body_mass_scale=1e308",
+       "evaluation.body_mass_scale (1e+308) makes plant.body_mass inf; the scaled value must be "
+       "a finite number > 0"},
+      {"run --set plant.kind=analytic --experiment bg_only --seeds 1 --out {S}/out "
        "--save-weights {S}/none/x.txt",
        "the directory '{S}/none' does not exist"},
       {quick + "--load-weights {S}/missing.txt", "missing.txt"},
@@ -121,6 +132,9 @@ std::vector<BadInput> bad_inputs() {
       {graph + "-o ''", "-o needs a file path"},
       {graph + "--set trial.theta0=1 -o {S}/x.dot", "trial.theta0 (1 rad) must lie inside"},
       {"graph", "--output is required"},
+      {graph + "--depth -5 -o {S}/x.dot", "--depth must be 0 or more (the nesting levels"},
+      {graph + "-o {S}/file", "-o '{S}/file' exists and cbbg did not write it"},
+      {graph + "-o {S}/fifo", "-o '{S}/fifo' is a FIFO"},
       // plot.
       {"plot {S}/never", "'{S}/never' is not a results directory (it has no config.yaml)"},
       {"plot {S}/mine", "'{S}/mine' is not a results directory (it has no config.yaml)"},
@@ -131,14 +145,19 @@ std::vector<BadInput> bad_inputs() {
       {"replay {S}/learnt --arm cbbg -o {S}/r.html", "--arm: no arm 'cbbg' in this run"},
       {"replay {S}/learnt --trial 99 -o {S}/r.html", "--trial: arm 'bg_only', seed 1 has trials"},
       {"replay {S}/learnt --seed x -o {S}/r.html", "--seed"},
-      {"replay {S}/learnt -o {S}/file", "-o: '{S}/file' exists and is not a cbbg replay"},
+      {"replay {S}/learnt -o {S}/file", "-o '{S}/file' exists and cbbg did not write it"},
+      {"replay {S}/learnt -o {S}/fifo", "-o '{S}/fifo' is a FIFO; give a regular file's path"},
       {"replay {S}/learnt -o {S}/mine", "-o"},
       {"eval", "--load-weights is required"},
       {"eval --load-weights {S}/missing.txt", "missing.txt"},
       {"eval --load-weights {S}/file", "{S}/file"},
       {eval + "--repeats 0", "--repeats must be from 1 to 10000; got 0"},
       {eval + "--repeats 10001", "--repeats must be from 1 to 10000; got 10001"},
-      {eval + "--angles 0.1,inf", "--angles: every angle must be a finite number; got inf"},
+      {eval + "--angles 0.1,inf", "--angles must be finite numbers separated by commas (rad)"},
+      {eval + "--angles 0.1,,0.2", "e.g. 0.1,0.2; got '0.1,,0.2'"},
+      {eval + "--out {S}/theirs", "--out: '{S}/theirs/evaluation.csv' exists and cbbg did not"},
+      {eval + "--set evaluation.body_mass_scale=1e308",
+       "evaluation.body_mass_scale (1e+308) makes plant.body_mass inf"},
       {eval + "--angles 0.7", "evaluation.angles[0] (0.7 rad) must lie inside"},
       {eval + "--push-time 1", "--push-time, --push-torque and --push-duration go together"},
       {eval + "--push-time 1 --push-torque 2 --push-duration 0",
@@ -165,6 +184,12 @@ std::vector<BadInput> bad_inputs() {
       {"merge {S}/never", "no sweep at '{S}/never'"},
       {"merge {S}/mine", "no sweep at '{S}/mine'"},
       {"status {S}/never", "no sweep at '{S}/never'"},
+      {"status {S}/learnt", "'{S}/learnt' holds the results of a cbbg run, not of a sweep"},
+      {"merge {S}/learnt", "'{S}/learnt' holds the results of a cbbg run, not of a sweep"},
+      {quick + "--config {S}/sweep_key.yaml",
+       "sweep_key.yaml: a sweep's key is a key path such "
+       "as actor.alpha; got [a, b]"},
+      {quick + "--grid 'critic.beta=[0.1'", "'[0.1' is not a YAML value"},
       // Other commands.
       {"list --bogus", "--bogus"},
       {"frobnicate", "frobnicate"},
@@ -181,6 +206,10 @@ TEST(BadInput, EveryCaseExitsTwoWithOneLineAndLeavesEverythingAsItWas) {
   std::ofstream(scratch / "twice.yaml") << "seeds: 2\nseeds: 3\n";
   std::ofstream(scratch / "malformed.yaml") << "critic:\n  gamma: [0.5\n";
   std::ofstream(scratch / "list.yaml") << "- 1\n- 2\n";
+  std::ofstream(scratch / "sweep_key.yaml") << "sweep: {[a, b]: [1]}\n";
+  fs::create_directories(scratch / "theirs");
+  std::ofstream(scratch / "theirs" / "evaluation.csv") << "theta0\n0.1\n";
+  ASSERT_EQ(::mkfifo((scratch / "fifo").c_str(), 0644), 0);
   fs::create_directories(scratch / "broken");
   std::ofstream(scratch / "broken" / "config.yaml") << "colour: red\n";
   const cbbg::testing::Outcome learnt = cbbg::testing::cbbg(

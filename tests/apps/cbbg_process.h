@@ -63,13 +63,17 @@ inline std::string read_file(const std::filesystem::path& path) {
   return text.str();
 }
 
-// Every file below `root` (relative path -> bytes) and every directory (path -> "<dir>").
+// Every file below `root` (relative path -> bytes), every directory (path -> "<dir>") and
+// every FIFO, socket or device (path -> "<special>").
 inline std::map<std::string, std::string> tree_of(const std::filesystem::path& root) {
   std::map<std::string, std::string> tree;
   std::error_code error;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root, error)) {
     const std::string name = std::filesystem::relative(entry.path(), root).string();
-    tree[name] = entry.is_directory() ? "<dir>" : read_file(entry.path());
+    // A FIFO or a device is named, never opened (reading a FIFO would block).
+    tree[name] = entry.is_directory()      ? "<dir>"
+                 : entry.is_regular_file() ? read_file(entry.path())
+                                           : "<special>";
   }
   return tree;
 }

@@ -77,9 +77,9 @@ TEST_F(ReplayCommand, RefusesWhatItCannotShowWithOneLine) {
        "cbbg: error: '" + scratch_.path().string() +
            "' is not a results directory (it has no config.yaml)\n"},
       {"replay " + run_->string() + " -o " + out("mine.html"),
-       "cbbg: error: -o: '" + out("mine.html") +
-           "' exists and is not a cbbg replay; choose "
-           "another file\n"},
+       "cbbg: error: -o '" + out("mine.html") +
+           "' exists and cbbg did not write it; cbbg never replaces a file of yours: give a "
+           "new path\n"},
       {"replay " + run_->string() + " -o " + out("no/such/dir/a.html"), ""},
   };
   for (const auto& [arguments, message] : cases) {

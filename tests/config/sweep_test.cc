@@ -16,7 +16,8 @@ TEST(SweepGrid, AGridFlagSplitsAtCommasOutsideBrackets) {
   sweep.add_flag("rbf.centres=[-1, 0, 1],[-2,0,2]");
   ASSERT_EQ(sweep.axes().size(), 1u);
   EXPECT_EQ(sweep.axes()[0].key, "rbf.centres");
-  EXPECT_EQ(sweep.axes()[0].values, (std::vector<std::string>{"[-1, 0, 1]", "[-2,0,2]"}));
+  // Each value in YAML's flow form, as the sweep's config.yaml writes it.
+  EXPECT_EQ(sweep.axes()[0].values, (std::vector<std::string>{"[-1, 0, 1]", "[-2, 0, 2]"}));
   EXPECT_EQ(sweep.axes()[0].source, "--grid rbf.centres=[-1, 0, 1],[-2,0,2]");
 }
 
@@ -86,6 +87,72 @@ TEST(SweepGrid, BadAxesAreRefusedNamingTheirSource) {
       },
       ThrowsMessage<ConfigError>(
           "--grid actor.rule=a,b: the grid would have more than 10000 points"));
+}
+
+}  // namespace
+}  // namespace cbbg::config
+
+namespace cbbg::config {
+namespace {
+
+// Whatever a user may type as a grid value is either refused before anything is written, or
+// written as YAML that reads back to the same values and the same grid points.
+TEST(SweepGrid, HostileValuesAreRefusedOrReadBackUnchanged) {
+  const std::vector<std::string> keys = {"critic.beta", "arms", "evaluation.angles", "plant.kind"};
+  const std::vector<std::string> values = {"0.1 # note",
+                                           "0.1#x",
+                                           "  0.2",
+                                           "'0.1'",
+                                           "\"0.1\"",
+                                           "0.1\n# more",
+                                           "0.1 # é ünï",
+                                           "[cbbg, bg_only] # mine",
+                                           "[bg_only]",
+                                           "a: b",
+                                           "'it''s'",
+                                           "\"x\\ny\"",
+                                           "é",
+                                           "#",
+                                           "[cbbg",
+                                           ":",
+                                           "'analytic' # fast",
+                                           "\"simbody\"",
+                                           "'[0.1, 0.2]'",
+                                           "[0.05, 0.1] # two",
+                                           "- 1",
+                                           "&a 1",
+                                           "!!str 0.1",
+                                           "{}",
+                                           "~"};
+  int accepted = 0;
+  for (const std::string& key : keys) {
+    for (const std::string& value : values) {
+      SCOPED_TRACE(key + "=" + value);
+      Sweep sweep;
+      try {
+        sweep.add_flag(key + "=" + value);
+        sweep.check(Config());
+      } catch (const ConfigError&) {
+        continue;  // refused with a message, before any file is written
+      }
+      ++accepted;
+      const std::string yaml = sweep.to_yaml();
+      Sweep again;
+      ASSERT_NO_THROW(again.add_yaml(yaml, "config.yaml")) << yaml;
+      EXPECT_EQ(again.axes()[0].values, sweep.axes()[0].values) << yaml;
+      EXPECT_EQ(again.config(Config(), 0).to_yaml(), sweep.config(Config(), 0).to_yaml());
+    }
+  }
+  EXPECT_GE(accepted, 12);  // the comments, quotes and spaces around valid values
+}
+
+TEST(SweepGrid, ASweepKeyThatIsNotAKeyPathIsNamed) {
+  EXPECT_THAT([] { Sweep().add_yaml("sweep: {[a, b]: [1]}", "my.yaml"); },
+              ThrowsMessage<ConfigError>(
+                  "my.yaml: a sweep's key is a key path such as actor.alpha; got [a, b]"));
+  EXPECT_THAT([] { Sweep().add_flag("actor.alpha=[0.1"); },
+              ThrowsMessage<ConfigError>(
+                  ::testing::StartsWith("--grid actor.alpha=[0.1: '[0.1' is not a YAML value")));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "experiments/policy_evaluation.h"
 #include "tests/support/scratch_directory.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -211,7 +212,7 @@ class EvalCommand : public ::testing::Test {
     app::EvalOptions result;
     result.weights_file = weights_file_;
     result.sets = {"plant.kind=analytic"};
-    result.angles = {0.05};
+    result.angles = "0.05";
     return result;
   }
 
@@ -268,8 +269,12 @@ TEST_F(EvalCommand, BadOptionsExitTwoWithOneLine) {
   bad.repeats = 0;
   EXPECT_EQ(refused(bad), "cbbg: error: --repeats must be from 1 to 10000; got 0\n");
   bad = options();
-  bad.angles = {0.05, std::numeric_limits<double>::infinity()};
-  EXPECT_EQ(refused(bad), "cbbg: error: --angles: every angle must be a finite number; got inf\n");
+  for (const char* angles : {"0.05,inf", "0.1,,0.2", "0.1,", ",0.1", "0.1;0.2", "0.1 ,0.2"}) {
+    bad.angles = angles;
+    EXPECT_EQ(refused(bad), std::string("cbbg: error: --angles must be finite numbers separated by "
+                                        "commas (rad), e.g. 0.1,0.2; got '") +
+                                angles + "'\n");
+  }
   bad = options();
   bad.out = weights_file_;
   EXPECT_EQ(refused(bad),
@@ -294,7 +299,7 @@ TEST_F(EvalCommand, PrintsBalancedRunsPerAngleAndWritesTheCsv) {
   app::EvalOptions good = options();
   // 0.05 rad the learnt policy balances; from 0.5 rad gravity's torque on the body (M g L
   // sin 0.5 = 18.8 N m) beats what both motors can push back (10 N m): every policy falls.
-  good.angles = {0.05, 0.5};
+  good.angles = "0.05,0.5";
   good.repeats = 2;
   good.out = directory_ / "eval";
   const Outcome outcome = run(good);
@@ -314,9 +319,13 @@ TEST_F(EvalCommand, PrintsBalancedRunsPerAngleAndWritesTheCsv) {
   EXPECT_THAT(rows[1], ::testing::StartsWith("0.05,2,1,2000,"));
   EXPECT_THAT(rows[3], ::testing::StartsWith("0.5,2,0,"));
   EXPECT_THAT(rows[3], ::testing::EndsWith(",failed"));
-  int files = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(good.out)) ++files;
-  EXPECT_EQ(files, 1);  // evaluation.csv alone: no temporary file left
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(good.out)) {
+    files.push_back(entry.path().filename().string());
+  }
+  std::sort(files.begin(), files.end());
+  // evaluation.csv and the manifest that names it as cbbg's: no temporary file left.
+  EXPECT_EQ(files, (std::vector<std::string>{".cbbg-written", "evaluation.csv"}));
 }
 
 TEST_F(EvalCommand, AFallIsAResultNotAnError) {

@@ -64,15 +64,21 @@ class PlotResults(unittest.TestCase):
         self.assertEqual((width, height), (WIDTH, HEIGHT), path)
         self.assertGreater(os.path.getsize(path), MIN_BYTES, f"{path} looks empty")
 
-    def assert_figures(self, results_dir, names, stdout):
+    def assert_figures(self, results_dir, names, stdout, users=()):
+        """DIR/figures holds `names` (listed in its manifest as cbbg's) and the user's files."""
         figures = os.path.join(results_dir, "figures")
-        self.assertEqual(sorted(os.listdir(figures)), sorted(names))
+        self.assertEqual(sorted(os.listdir(figures)),
+                         sorted(list(names) + list(users) + [".cbbg-written"]))
+        with open(os.path.join(figures, ".cbbg-written"), encoding="utf-8") as f:
+            listed = f.read().splitlines()
+        self.assertEqual(listed[0], "cbbg-written 1")
+        self.assertEqual(sorted(listed[1:]), sorted(names))
         for name in names:
             self.assert_png(os.path.join(figures, name))
         wrote = [line for line in stdout.splitlines() if line.startswith("wrote ")]
         self.assertEqual(sorted(wrote),
                          sorted(f"wrote {os.path.join(figures, name)}" for name in names))
-        leftovers = [n for n in os.listdir(results_dir) if n.startswith(".figures")]
+        leftovers = [n for n in os.listdir(results_dir) if ".cbbg-tmp-" in n]
         self.assertEqual(leftovers, [], "staging folders left behind")
 
     def assert_input_error(self, result, file_name, what):
@@ -117,18 +123,35 @@ class PlotResults(unittest.TestCase):
         self.assert_figures(results, ["failures.png"], result.stdout)
         self.assertIn("steps.csv absent", result.stdout)
 
-    def test_rerun_replaces_the_previous_figures_folder(self):
+    def test_rerun_replaces_its_own_figures_and_keeps_the_users(self):
         results = os.path.join(self.root, "exp1")
         make_fixtures.make_exp1(results)
-        stale = os.path.join(results, "figures", "pitch_removed_arm.png")
-        os.makedirs(os.path.dirname(stale))
-        with open(stale, "wb") as f:
-            f.write(b"old")
+        mine = os.path.join(results, "figures", "my_plot.png")
+        os.makedirs(os.path.dirname(mine))
+        with open(mine, "wb") as f:
+            f.write(b"mine")
+        names = ["pitch_cbbg.png", "pitch_bg_only.png", "failures.png"]
+        for _ in range(2):
+            result = run_script(results)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assert_figures(results, names, result.stdout, users=["my_plot.png"])
+        with open(mine, "rb") as f:
+            self.assertEqual(f.read(), b"mine")
+
+    def test_a_figures_name_taken_by_a_users_file_exits_2_and_moves_nothing(self):
+        results = os.path.join(self.root, "exp1")
+        make_fixtures.make_exp1(results)
+        taken = os.path.join(results, "figures", "failures.png")
+        os.makedirs(os.path.dirname(taken))
+        with open(taken, "wb") as f:
+            f.write(b"mine")
         result = run_script(results)
-        self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertFalse(os.path.exists(stale))
-        self.assert_figures(results, ["pitch_cbbg.png", "pitch_bg_only.png", "failures.png"],
-                            result.stdout)
+        self.assertEqual(result.returncode, 2, result.stderr)
+        self.assertIn(f"{taken}: exists and cbbg did not write it", result.stderr)
+        self.assertEqual(os.listdir(os.path.dirname(taken)), ["failures.png"])
+        with open(taken, "rb") as f:
+            self.assertEqual(f.read(), b"mine")
+        self.assertEqual([n for n in os.listdir(results) if ".cbbg-tmp-" in n], [])
 
     # ------------------------------------------------------------ bad input
 
@@ -146,7 +169,7 @@ class PlotResults(unittest.TestCase):
         result = run_script(results)
         self.assert_input_error(result, trials_csv, "line 4: seed 'x")
         self.assertEqual(sorted(os.listdir(os.path.join(results, "figures"))), before)
-        self.assertEqual([n for n in os.listdir(results) if n.startswith(".figures")], [])
+        self.assertEqual([n for n in os.listdir(results) if ".cbbg-tmp-" in n], [])
 
     def test_trials_csv_with_a_short_row_exits_2(self):
         results = os.path.join(self.root, "exp1")

@@ -3,8 +3,12 @@
 //
 // The page takes, after '#', trial=N (from 1), t=SECONDS and pause, so that a link or a
 // test can open it at one moment; window.cbbgReplay offers the same to scripts.
+//
+// It degrades rather than stop: without WebGL it says so and keeps the plots and readouts;
+// a diverged trial's values that are not numbers (null in the page's data) are gaps in the
+// plots, "—" in the readouts, and the robot stays at its last known pose.
 
-import { RobotScene } from "./robot_scene.js";
+import { openRobotScene } from "./robot_scene.js";
 import { TimePlot } from "./time_plot.js";
 
 const data = JSON.parse(document.getElementById("cbbg-replay-data").textContent);
@@ -24,15 +28,28 @@ function tickAt(trial, time) {
   return low;
 }
 
-// The pose at `time`, linear between ticks, for a smooth picture.
+const POSE = ["x", "y", "yaw", "theta_b", "phi_l", "phi_r"];
+
+function knownPose(trial, k) {
+  return POSE.every((name) => Number.isFinite(trial[name][k]));
+}
+
+// The pose at `time`, linear between ticks, for a smooth picture; or, where the log's pose
+// there is not all numbers, the last pose before it that is (null when there is none).
 function poseAt(trial, time) {
-  const k = tickAt(trial, time);
-  const next = Math.min(k + 1, trial.t.length - 1);
+  let k = tickAt(trial, time);
+  while (k >= 0 && !knownPose(trial, k)) --k;
+  if (k < 0) return null;
+  const next = k + 1 < trial.t.length && knownPose(trial, k + 1) ? k + 1 : k;
   const span = trial.t[next] - trial.t[k];
   const w = span > 0 ? Math.min(1, Math.max(0, (time - trial.t[k]) / span)) : 0;
   const lerp = (name) => trial[name][k] + w * (trial[name][next] - trial[name][k]);
-  return { x: lerp("x"), y: lerp("y"), yaw: lerp("yaw"), theta_b: lerp("theta_b"),
-           phi_l: lerp("phi_l"), phi_r: lerp("phi_r") };
+  return Object.fromEntries(POSE.map((name) => [name, lerp(name)]));
+}
+
+// `value` with `decimals` and its unit, or "—" when it is not a number.
+function reading(value, decimals, unit) {
+  return Number.isFinite(value) ? `${value.toFixed(decimals)} ${unit}` : "—";
 }
 
 // The forward speed at tick k, m/s: the axle's travel along its heading between the ticks
@@ -57,7 +74,11 @@ function describe(trial) {
 
 class Replay {
   constructor() {
-    this.scene = new RobotScene($("scene"), data.robot);
+    this.scene = openRobotScene($("scene"), data.robot); // null without WebGL
+    if (!this.scene) {
+      $("scene").hidden = true;
+      $("no-webgl").hidden = false;
+    }
     this.pitch = new TimePlot($("pitch-plot"), { title: "pitch θ_b", unit: "rad",
                                                   limit: data.robot.failure_angle,
                                                   colour: "#1f6fb4" });
@@ -96,7 +117,7 @@ class Replay {
     const trial = this.trial;
     $("time").max = String(this.end);
     $("time").step = String(trial.t.length > 1 ? trial.t[1] - trial.t[0] : 0.01);
-    this.scene.setPath(trial.x, trial.y);
+    this.scene?.setPath(trial.x, trial.y);
     this.pitch.setSeries(trial.t, trial.theta_b);
     this.torque.setSeries(trial.t, trial.a);
     this.seek(0);
@@ -121,21 +142,24 @@ class Replay {
 
   update() {
     const trial = this.trial;
-    this.scene.show(poseAt(trial, this.time));
+    const pose = poseAt(trial, this.time);
+    if (pose) this.scene?.show(pose);
     const k = tickAt(trial, this.time);
     $("time").value = String(this.time);
-    $("readout-time").textContent = `${trial.t[k].toFixed(2)} s`;
-    $("readout-pitch").textContent = `${trial.theta_b[k].toFixed(4)} rad`;
-    $("readout-pitch").dataset.value = String(trial.theta_b[k]);
-    $("readout-torque").textContent = `${trial.a[k].toFixed(3)} N m`;
-    $("readout-x").textContent = `${trial.x[k].toFixed(3)} m`;
-    $("readout-speed").textContent = `${speedAt(trial, k).toFixed(2)} m/s`;
-    $("readout-yaw").textContent = `${trial.yaw[k].toFixed(3)} rad`;
+    $("readout-time").textContent = reading(trial.t[k], 2, "s");
+    $("readout-pitch").textContent = reading(trial.theta_b[k], 4, "rad");
+    $("readout-pitch").dataset.value = String(trial.theta_b[k] ?? "");
+    $("readout-torque").textContent = reading(trial.a[k], 3, "N m");
+    $("readout-x").textContent = reading(trial.x[k], 3, "m");
+    $("readout-speed").textContent = reading(speedAt(trial, k), 2, "m/s");
+    $("readout-yaw").textContent = reading(trial.yaw[k], 3, "rad");
     this.pitch.showCursor(this.time);
     this.torque.showCursor(this.time);
   }
 
   frame(now) {
+    // Asked for first, so that one frame's failure does not end the replay.
+    requestAnimationFrame((t) => this.frame(t));
     if (this.playing) {
       this.time += ((now - this.last) / 1000) * this.speed;
       this.last = now;
@@ -145,13 +169,12 @@ class Replay {
       }
       this.update();
     }
-    this.scene.render();
-    requestAnimationFrame((t) => this.frame(t));
+    this.scene?.render();
   }
 
   layout() {
     const view = $("scene");
-    this.scene.resize(view.clientWidth, view.clientHeight);
+    this.scene?.resize(view.clientWidth, view.clientHeight);
     this.pitch.drawPicture();
     this.torque.drawPicture();
     if (this.trial) this.update();
@@ -175,7 +198,7 @@ requestAnimationFrame((t) => replay.frame(t));
 window.cbbgReplay = {
   trials: data.trials.map(describe),
   select: (index) => replay.select(index),
-  seek: (time) => { replay.seek(time); replay.scene.render(); },
+  seek: (time) => { replay.seek(time); replay.scene?.render(); },
   play: () => replay.play(),
   pause: () => replay.pause(),
   state: () => ({ trial: replay.index, time: replay.time, playing: replay.playing }),

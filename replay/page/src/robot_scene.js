@@ -1,5 +1,6 @@
 // The 3-D scene of a replay: the ground with a metre grid and the path so far, the robot
-// (body, two wheels), lights, and a camera that follows the robot.
+// (body, two wheels), lights, and a camera that follows the robot. It needs WebGL 2
+// (three.js's renderer does); openRobotScene says when the browser cannot give it.
 //
 // cbbg's frame is x forward, y left, z up; three.js's is y up. A point (x, y, z) of cbbg is
 // (x, z, -y) here, a heading (yaw about z) is a rotation about three.js's y.
@@ -81,11 +82,31 @@ function ground() {
   return group;
 }
 
-export class RobotScene {
-  constructor(canvas, robot) {
+// A renderer on `canvas`, or null where the browser offers no WebGL 2 context. The context
+// is asked for first, so that a browser without WebGL is told apart from a failure.
+function webglRenderer(canvas) {
+  // Kept drawn after each frame, so that a screenshot of the view shows it.
+  const attributes = { antialias: true, preserveDrawingBuffer: true };
+  const context = canvas.getContext("webgl2", attributes);
+  if (!context) return null;
+  return new THREE.WebGLRenderer({ canvas, context, ...attributes });
+}
+
+// The scene on `canvas`, or null when it cannot be drawn there: the page goes on without it.
+export function openRobotScene(canvas, robot) {
+  try {
+    const renderer = webglRenderer(canvas);
+    return renderer && new RobotScene(renderer, canvas, robot);
+  } catch (error) {
+    console.warn(`cbbg replay: no 3-D view: ${error.message}`);
+    return null;
+  }
+}
+
+class RobotScene {
+  constructor(renderer, canvas, robot) {
     this.robot = robot;
-    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true,
-                                              preserveDrawingBuffer: true });
+    this.renderer = renderer;
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0xf8f9fa);
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x8d99a6, 2.2));
@@ -94,8 +115,8 @@ export class RobotScene {
     this.scene.add(sun);
     this.ground = ground();
     this.scene.add(this.ground);
-    this.path = new THREE.Line(new THREE.BufferGeometry(),
-                               new THREE.LineBasicMaterial({ color: 0xd94f4f }));
+    this.path = new THREE.LineSegments(new THREE.BufferGeometry(),
+                                       new THREE.LineBasicMaterial({ color: 0xd94f4f }));
     this.path.position.y = 0.015;
     this.scene.add(this.path);
 
@@ -115,10 +136,15 @@ export class RobotScene {
     this.controls.update();
   }
 
-  // The path the axle takes over a trial, drawn on the ground.
+  // The path the axle takes over a trial, drawn on the ground as the segments between
+  // ticks, leaving out those with an end that is not a number (null in a diverged log).
   setPath(xs, ys) {
     const points = [];
-    for (let i = 0; i < xs.length; ++i) points.push(new THREE.Vector3(xs[i], 0, -ys[i]));
+    const known = (i) => Number.isFinite(xs[i]) && Number.isFinite(ys[i]);
+    for (let i = 1; i < xs.length; ++i) {
+      if (!known(i - 1) || !known(i)) continue;
+      points.push(new THREE.Vector3(xs[i - 1], 0, -ys[i - 1]), new THREE.Vector3(xs[i], 0, -ys[i]));
+    }
     this.path.geometry.dispose();
     this.path.geometry = new THREE.BufferGeometry().setFromPoints(points);
   }

@@ -1,5 +1,6 @@
 // A signal against time on a 2-D canvas, with limit lines and a cursor at the replay's time.
-// The curve is drawn once per trial; a cursor move redraws from that picture.
+// The curve is drawn once per trial; a cursor move redraws from that picture. A value that
+// is not a number (a diverged trial's null) is a gap in the curve.
 
 const MARGIN = { left: 52, right: 10, top: 22, bottom: 26 };
 
@@ -90,6 +91,26 @@ export class TimePlot {
     g.restore();
   }
 
+  // The series as a polyline, broken where a value is not a number (null in a diverged
+  // log), so that a gap shows as a gap.
+  drawCurve(g) {
+    g.strokeStyle = this.options.colour;
+    g.lineWidth = 1.5;
+    g.beginPath();
+    let joined = false;
+    this.values.forEach((v, i) => {
+      if (!Number.isFinite(v)) {
+        joined = false;
+        return;
+      }
+      const x = this.xOf(this.t[i]);
+      const y = this.yOf(v);
+      if (joined) g.lineTo(x, y); else g.moveTo(x, y);
+      joined = true;
+    });
+    g.stroke();
+  }
+
   drawPicture() {
     if (!this.t) return;
     const ratio = window.devicePixelRatio || 1;
@@ -100,15 +121,7 @@ export class TimePlot {
     g.clearRect(0, 0, this.width(), this.height());
     this.drawAxes(g);
     this.drawLimits(g);
-    g.strokeStyle = this.options.colour;
-    g.lineWidth = 1.5;
-    g.beginPath();
-    this.values.forEach((v, i) => {
-      const x = this.xOf(this.t[i]);
-      const y = this.yOf(v);
-      if (i === 0) g.moveTo(x, y); else g.lineTo(x, y);
-    });
-    g.stroke();
+    this.drawCurve(g);
     // Kept as a picture: a cursor move copies it back and draws the cursor over it.
     this.picture = this.picture || document.createElement("canvas");
     this.picture.width = this.canvas.width;

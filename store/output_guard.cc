@@ -1,0 +1,218 @@
+#include "store/output_guard.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <fstream>
+#include <sstream>
+
+#include "config/config.h"
+#include "store/files.h"
+
+namespace cbbg::store {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr const char* kManifestHeader = "cbbg-written 1";
+
+bool all_digits(std::string_view text) {
+  return !text.empty() &&
+         std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// NAME.tmp-PID-N: the temporaries of cbbg before they carried kTemporaryTag.
+bool is_legacy_temporary(const std::string& name) {
+  const auto at = name.rfind(".tmp-");
+  if (at == std::string::npos || at == 0) return false;
+  const std::string_view rest = std::string_view(name).substr(at + 5);
+  const auto dash = rest.find('-');
+  return dash != std::string_view::npos && all_digits(rest.substr(0, dash)) &&
+         all_digits(rest.substr(dash + 1));
+}
+
+const std::string& host_name() {
+  static const std::string name = [] {
+    char buffer[256] = {};
+    if (::gethostname(buffer, sizeof buffer - 1) != 0) return std::string("host");
+    return std::string(buffer);
+  }();
+  return name;
+}
+
+bool process_runs(long long pid) {
+  return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+}
+
+}  // namespace
+
+fs::path temporary_beside(const fs::path& path) {
+  static std::atomic<long long> counter{0};
+  // Built by appends: GCC 12 warns falsely (-Wrestrict) on "." + text + ....
+  std::string name = ".";
+  name += path.filename().string();
+  name += kTemporaryTag;
+  name += host_name();
+  name += '-';
+  name += std::to_string(::getpid());
+  name += '-';
+  name += std::to_string(counter++);
+  return path.parent_path() / name;
+}
+
+bool is_temporary(const fs::path& name) {
+  const std::string text = name.filename().string();
+  return text.find(kTemporaryTag) != std::string::npos || is_legacy_temporary(text);
+}
+
+bool is_stale_temporary(const fs::path& name) {
+  const std::string text = name.filename().string();
+  const auto tag = text.find(kTemporaryTag);
+  if (tag == std::string::npos) return is_legacy_temporary(text);
+  // HOST-PID-N after the tag; the host may hold dashes, so it is split from the right.
+  const std::string rest = text.substr(tag + std::string_view(kTemporaryTag).size());
+  const auto last = rest.rfind('-');
+  if (last == std::string::npos || last == 0) return false;
+  const auto before = rest.rfind('-', last - 1);
+  if (before == std::string::npos) return false;
+  const std::string pid = rest.substr(before + 1, last - before - 1);
+  return rest.substr(0, before) == host_name() && all_digits(pid) && !process_runs(std::stoll(pid));
+}
+
+int remove_temporaries(const fs::path& directory, Leftovers which) {
+  std::vector<fs::path> found;
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(directory, error), end; !error && it != end;
+       it.increment(error)) {
+    const bool leftover =
+        which == Leftovers::kAll ? is_temporary(it->path()) : is_stale_temporary(it->path());
+    if (!leftover) continue;
+    found.push_back(it->path());
+    if (it->is_directory(error)) it.disable_recursion_pending();
+  }
+  for (const fs::path& path : found) remove_tree(path);
+  return static_cast<int>(found.size());
+}
+
+void remove_stale_staging(const fs::path& path) {
+  std::string prefix = ".";
+  prefix += path.filename().string();
+  prefix += kTemporaryTag;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(path.parent_path(), error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) == 0 && is_stale_temporary(name)) remove_tree(entry.path());
+  }
+}
+
+std::optional<fs::path> find_temporary(const fs::path& directory) {
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(directory, error), end; !error && it != end;
+       it.increment(error)) {
+    if (is_temporary(it->path())) return it->path();
+  }
+  return std::nullopt;
+}
+
+void refuse_temporaries(const fs::path& directory) {
+  if (const auto temporary = find_temporary(directory)) {
+    throw std::runtime_error("not publishing " + quoted_path(directory) + ": it holds " +
+                             quoted_path(*temporary) +
+                             ", a half-written file of cbbg's; run the command again");
+  }
+}
+
+std::string non_regular_kind(const fs::path& path) {
+  std::error_code error;
+  switch (fs::status(path, error).type()) {
+    case fs::file_type::directory:
+      return "a directory";
+    case fs::file_type::fifo:
+      return "a FIFO";
+    case fs::file_type::socket:
+      return "a socket";
+    case fs::file_type::block:
+    case fs::file_type::character:
+      return "a device";
+    case fs::file_type::regular:
+    case fs::file_type::not_found:
+    case fs::file_type::none:
+      return "";
+    default:
+      return "not a regular file";
+  }
+}
+
+bool carries_tag(const fs::path& path, std::string_view tag) {
+  if (!non_regular_kind(path).empty()) return false;  // never open a FIFO or a device
+  std::ifstream in(path, std::ios::binary);
+  std::string head(64 * 1024, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  return head.find(tag) != std::string::npos;
+}
+
+void check_replaceable_file(const fs::path& path, const std::string& flag, std::string_view tag) {
+  if (const std::string kind = non_regular_kind(path); !kind.empty()) {
+    throw config::ConfigError(flag + " " + quoted_path(path) + " is " + kind +
+                              "; give a regular file's path");
+  }
+  std::error_code error;
+  if (fs::exists(fs::symlink_status(path, error)) && !carries_tag(path, tag)) {
+    throw config::ConfigError(flag + " " + quoted_path(path) +
+                              " exists and cbbg did not write it; cbbg never replaces a file of "
+                              "yours: give a new path");
+  }
+}
+
+Manifest::Manifest(fs::path directory) : directory_(std::move(directory)) {
+  std::ifstream in(directory_ / kManifestFile);
+  std::string line;
+  if (!std::getline(in, line) || line != kManifestHeader) return;  // none: nothing is cbbg's
+  while (std::getline(in, line)) {
+    if (!line.empty()) names_.push_back(line);
+  }
+}
+
+bool Manifest::lists(const std::string& name) const {
+  return std::find(names_.begin(), names_.end(), name) != names_.end();
+}
+
+void Manifest::check_writable(const std::vector<std::string>& names,
+                              const std::string& flag) const {
+  for (const std::string& name : names) {
+    const fs::path path = directory_ / name;
+    if (const std::string kind = non_regular_kind(path); !kind.empty()) {
+      throw config::ConfigError(flag + ": " + quoted_path(path) + " is " + kind +
+                                "; move it away, cbbg writes a file there");
+    }
+    std::error_code error;
+    if (fs::exists(fs::symlink_status(path, error)) && !lists(name)) {
+      throw config::ConfigError(flag + ": " + quoted_path(path) +
+                                " exists and cbbg did not write it; cbbg never replaces a file "
+                                "of yours: move it away");
+    }
+  }
+}
+
+void Manifest::add(const std::vector<std::string>& names) {
+  for (const std::string& name : names) {
+    if (!lists(name)) names_.push_back(name);
+  }
+  save();
+}
+
+void Manifest::reset(std::vector<std::string> names) {
+  names_ = std::move(names);
+  save();
+}
+
+void Manifest::save() const {
+  std::string text = std::string(kManifestHeader) + "\n";
+  for (const std::string& name : names_) text += name + "\n";
+  write_atomically(directory_ / kManifestFile, text);
+}
+
+}  // namespace cbbg::store
