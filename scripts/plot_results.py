@@ -864,6 +864,27 @@ def temporary_name(folder, name):
     return os.path.join(folder, f".{name}{TEMPORARY_TAG}{socket.gethostname()}-{os.getpid()}-0")
 
 
+def remove_stale_temporaries(folder, names):
+    """Remove the temporaries of `names` in `folder` that a killed process of this host left."""
+    for entry in os.listdir(folder):
+        for name in names:
+            prefix = f".{name}{TEMPORARY_TAG}{socket.gethostname()}-"
+            pid = entry[len(prefix):].split("-")[0]
+            if entry.startswith(prefix) and pid.isdigit() and not process_runs(int(pid)):
+                path = os.path.join(folder, entry)
+                shutil.rmtree(path) if os.path.isdir(path) else os.unlink(path)
+
+
+def process_runs(pid):
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
 def read_manifest(folder):
     """The names cbbg wrote into `folder`, as its manifest lists them (none: empty)."""
     try:
@@ -1034,8 +1055,9 @@ def run(results_dir):
 
 def draw_into(results_dir, draw):
     """Runs draw(save) into a staging folder that then replaces DIR/figures."""
+    remove_stale_temporaries(results_dir, ["figures"])  # a killed plot's staging folder
     staging = temporary_name(results_dir, "figures")
-    os.makedirs(staging)
+    os.makedirs(staging, exist_ok=True)
     written = []
 
     def save(fig, name):

@@ -17,7 +17,6 @@ Exit status: 0 done, 2 a missing or malformed sweep (one line on stderr naming t
 
 import os
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import plot_results  # noqa: E402  (the sweep reader, the figure style)
@@ -115,10 +114,9 @@ def figure(study):
 
 
 def write_atomically(path, write):
-    """write(temporary path), then the rename: a reader never sees half a file."""
-    handle, temporary = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".",
-                                         dir=os.path.dirname(path))
-    os.close(handle)
+    """write(temporary path), then the rename: a reader never sees half a file. The temporary
+    has cbbg's temporary name, so a report run after a kill removes what the kill left."""
+    temporary = plot_results.temporary_name(os.path.dirname(path), os.path.basename(path))
     try:
         write(temporary)
         os.chmod(temporary, 0o644)
@@ -146,6 +144,7 @@ def main(argv):
                   "robustness_study.sh: move it away first", file=sys.stderr)
             return 2
     table = markdown_table(study)
+    plot_results.remove_stale_temporaries(directory, ["robustness.md", "robustness.png"])
 
     def write_table(path):
         with open(path, "w", encoding="utf-8") as file:

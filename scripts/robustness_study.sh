@@ -9,7 +9,9 @@
 # DIR/<key>/ is each sweep's results directory, DIR/robustness.md the table and
 # DIR/robustness.png the figure. Run again after a kill, it resumes: a finished sweep is
 # kept, an interrupted one (DIR/<key>.partial) resumes where it stopped, so the bytes are
-# those of an uninterrupted run. It refuses a DIR it did not make.
+# those of an uninterrupted run. It refuses a DIR it did not make. A refusal (exit 2, one
+# line) leaves nothing behind: the options are checked before DIR is made, and a DIR this
+# run made is removed again when cbbg refuses the study's first command.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 # cbbg: $CBBG, else the tree's build (scripts/build.sh), else the installed one beside this
@@ -32,11 +34,15 @@ while [[ $# -gt 0 ]]; do
 done
 [[ -n "$out" ]] || usage "--out DIR is required"
 [[ "$plant" == analytic || "$plant" == simbody ]] || usage "--plant must be analytic or simbody; got '$plant'"
-[[ "$seeds" =~ ^[1-9][0-9]{0,5}$ ]] || usage "--seeds must be a whole number >= 1; got '$seeds'"
-[[ "$jobs" =~ ^[1-9][0-9]{0,3}$ ]] || usage "--jobs must be a whole number >= 1; got '$jobs'"
+# cbbg's own limits (config `seeds`, --jobs), checked here so that a refusal leaves nothing.
+in_range() { [[ "$1" =~ ^[1-9][0-9]{0,5}$ ]] && (( $1 <= $2 )); }
+in_range "$seeds" 10000 || usage "--seeds must be a whole number from 1 to 10000; got '$seeds'"
+in_range "$jobs" 1024 || usage "--jobs must be a whole number from 1 to 1024; got '$jobs'"
 [[ -n "$cbbg" && -x "$cbbg" ]] || { echo "robustness_study.sh: no cbbg found (build it: scripts/build.sh, or set CBBG)" >&2; exit 1; }
+while [[ "$out" == */ && "$out" != / ]]; do out="${out%/}"; done  # DIR.new-study is beside DIR
 
-marker="$out/.cbbg-robustness-study"
+marker_name=.cbbg-robustness-study
+marker="$out/$marker_name"
 if [[ -e "$out" && ! -f "$marker" ]]; then
   echo "robustness_study.sh: $out exists and was not made by this script; choose a new --out" >&2
   exit 2
@@ -46,8 +52,57 @@ if [[ -f "$marker" && "$(cat "$marker")" != "$settings" ]]; then
   echo "robustness_study.sh: $out holds a study with $(cat "$marker"); this one has $settings" >&2
   exit 2
 fi
-mkdir -p "$out"
-echo "$settings" > "$marker"
+
+# DIR is made under this name beside it, marked, then renamed into place, so that no kill
+# leaves a DIR without its marker (which the next run would refuse).
+staging="$out.new-study"
+# Removes `folder` if it holds at most the marker (a study's start or take-back, killed);
+# refuses anything else.
+remove_unstarted() {
+  local folder="$1"
+  if [[ -L "$folder" || ! -d "$folder" ||
+        -n "$(find "$folder" -mindepth 1 -maxdepth 1 ! -name "$marker_name")" ]]; then
+    echo "robustness_study.sh: $folder is in the way and not this script's; move it away" >&2
+    exit 2
+  fi
+  rm -f "$folder/$marker_name"
+  rmdir "$folder"
+}
+# The first of DIR and its parents that does not exist yet: all this invocation makes, and
+# so all it may take back.
+first_missing() {
+  local path="$1" missing=""
+  while [[ ! -e "$path" && ! -L "$path" ]]; do
+    missing="$path"
+    [[ "$(dirname "$path")" != "$path" ]] || break
+    path="$(dirname "$path")"
+  done
+  echo "$missing"
+}
+made=""
+if [[ ! -e "$out" ]]; then
+  [[ ! -e "$staging" ]] || remove_unstarted "$staging"
+  made="$(first_missing "$out")"
+  mkdir -p "$(dirname "$out")"
+  mkdir "$staging"
+  echo "$settings" > "$staging/$marker_name"
+  mv -T "$staging" "$out"
+fi
+
+# cbbg refused the first command of a study this invocation began (exit 2: it wrote
+# nothing), so that the corrected command is not refused: DIR goes back to its temporary
+# name in one step and is removed there, with the parents made above (rmdir removes only
+# empty folders).
+take_back() {
+  [[ -z "$(find "$out" -mindepth 1 -maxdepth 1 ! -name "$marker_name")" ]] || return 0
+  mv -T "$out" "$staging"
+  remove_unstarted "$staging"
+  local dir
+  dir="$(dirname "$out")"
+  while [[ "$out" != "$made" ]] && rmdir "$dir" 2>/dev/null && [[ "$dir" != "$made" ]]; do
+    dir="$(dirname "$dir")"
+  done
+}
 
 # The perturbations: each key's values, the nominal robot (1 or 0) among them.
 grids=(
@@ -61,15 +116,23 @@ push_duration=0.5
 for grid in "${grids[@]}"; do
   key="${grid%%=*}"
   sweep="$out/${key#evaluation.}"
-  if [[ -d "$sweep" && ! -e "$sweep.partial" ]]; then
-    echo "robustness_study.sh: $key done ($sweep)" >&2
+  if [[ -e "$sweep/.cbbg-sweep-run" ]]; then
+    # Killed while publishing (the sweep is in place, cbbg's work marker still in it): the
+    # merge finishes it.
+    "$cbbg" merge "$sweep"
   elif [[ -d "$sweep" ]]; then
-    "$cbbg" merge "$sweep"  # killed while publishing: the merge finishes it
+    echo "robustness_study.sh: $key done ($sweep)" >&2
   else
     # New or interrupted: the same command again carries on from the finished tasks.
+    status=0
     "$cbbg" run --experiment exp3 --set plant.kind="$plant" --set "arms=[cbbg, bg_only, pd_only]" \
       --seeds "$seeds" --jobs "$jobs" --set evaluation.push_duration=$push_duration \
-      --grid "$grid" --out "$sweep"
+      --grid "$grid" --out "$sweep" || status=$?
+    if [[ $status != 0 ]]; then
+      [[ $status == 2 && -n "$made" ]] && take_back
+      exit "$status"
+    fi
   fi
+  made=""  # a sweep has run: DIR is a study now, whatever a later command does
 done
 /usr/bin/python3 "$here/robustness_report.py" "$out"

@@ -110,10 +110,11 @@ def merged_sweep(folder):
 class Runner:
     """Starts commands in their own process groups, logs their stderr, kills them."""
 
-    def __init__(self, scratch, env):
+    def __init__(self, scratch):
         self.logs = os.path.join(scratch, "logs")
         os.makedirs(self.logs)
-        self.env, self.count = env, 0
+        self.count = 0
+        self.live = []  # the process groups of run(), for stop()
 
     def run(self, commands, folder, delay=None):
         """Runs `commands` at once in `folder`; after `delay` s, kills what still runs.
@@ -122,6 +123,7 @@ class Runner:
         command that ended on its own with an error ("" if none).
         """
         started = [self.start(command, folder) for command in commands]
+        self.live = [process for process, _ in started]
         deadline = time.monotonic() + (HANG_SECONDS if delay is None else delay)
         for process, _ in started:
             try:
@@ -135,6 +137,7 @@ class Runner:
         for process, _ in started:
             process.wait()
             wait_for_group(process.pid)
+        self.live = []
         if any(running) and delay is None:
             return True, f"{describe(commands[0])} hung for {HANG_SECONDS} s"
         for (process, log), killed in zip(started, running):
@@ -143,11 +146,19 @@ class Runner:
                                      f"{process.returncode}: {last_line(log)}"
         return any(running), ""
 
+    def stop(self):
+        """Kills what runs (the test itself was stopped): its groups are not the test's."""
+        for process in self.live:
+            if process.poll() is None:
+                os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
+            wait_for_group(process.pid)
+
     def start(self, command, folder):
         self.count += 1
         log = os.path.join(self.logs, f"{self.count}.txt")
         with open(log, "wb") as stderr:
-            process = subprocess.Popen(command, cwd=folder, env=self.env, stdin=subprocess.DEVNULL,
+            process = subprocess.Popen(command, cwd=folder, stdin=subprocess.DEVNULL,
                                        stdout=subprocess.DEVNULL, stderr=stderr,
                                        start_new_session=True)
         return process, log
@@ -223,14 +234,20 @@ def same_bytes(first, second):
                 return True
 
 
+def leftovers(tree):
+    """The temporary files and folders in `tree` (the first three named), or ""."""
+    found = [path for path in sorted(listing(tree)) if temporary(os.path.basename(path))]
+    more = f" and {len(found) - 3} more" if len(found) > 3 else ""
+    return f"leftover {', '.join(found[:3])}{more}" if found else ""
+
+
 def first_difference(reference, tree):
-    """The first leftover temporary file in `tree`, else its first difference from
-    `reference` (paths in sorted order), else ""."""
+    """The leftover temporary files in `tree`, else its first difference from `reference`
+    (paths in sorted order), else ""."""
+    left = leftovers(tree)
+    if left:
+        return left
     expected, found = listing(reference), listing(tree)
-    leftovers = [path for path in sorted(found) if temporary(os.path.basename(path))]
-    if leftovers:
-        more = f" (and {len(leftovers) - 1} more)" if len(leftovers) > 1 else ""
-        return f"leftover {leftovers[0]}{more}"
     for path in sorted(expected.keys() | found.keys()):
         if path not in found:
             return f"{path} is missing"
@@ -261,17 +278,17 @@ def reference_run(case, runner, folder):
         failure = runner.run(case.finish, folder)[1]
     if failure:
         sys.exit(f"test_random_kills: {case.name}: the reference run failed: {failure}")
-    leftover = first_difference(folder, folder)
-    if leftover:
-        sys.exit(f"test_random_kills: {case.name}: the reference run left {leftover}")
+    left = leftovers(folder)
+    if left:
+        sys.exit(f"test_random_kills: {case.name}: the reference run has a {left}")
     return seconds
 
 
 def killed_run(case, runner, folder, reference, seconds, rng, tally):
     """One start, killed and resumed until it ends; its difference from the reference.
 
-    Its kills fall at moments drawn in [0, seconds] on the time the runs have run, in
-    order: each resume is killed after the gap between its moment and the previous one.
+    Its kills fall at moments drawn in [0, seconds], in order, on the time its runs add up
+    to: each resume is killed after the gap between its moment and the one before.
     """
     os.makedirs(folder)
     case.prepare(folder)
@@ -299,7 +316,7 @@ def test_case(case, runner, root, rng):
     reference = os.path.join(root, "reference")
     seconds = reference_run(case, runner, reference)
     tally = Tally()
-    while tally.kills < KILLS:
+    while tally.kills < KILLS and tally.starts < 3 * KILLS:  # a start that always fails
         folder = os.path.join(root, f"start{tally.starts + 1}")
         difference = killed_run(case, runner, folder, reference, seconds, rng, tally)
         if difference:
@@ -322,11 +339,14 @@ def main(argv):
     cbbg = os.path.join(os.path.abspath(argv[1]), "apps", "cbbg")
     study = os.path.join(os.path.dirname(os.path.abspath(__file__)), "robustness_study.sh")
     scratch = tempfile.mkdtemp(prefix="cbbg-random-kills.")
+    # ctest's timeout stops the test with SIGTERM: the finally below still runs.
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit("test_random_kills: stopped"))
+    runner = None
     try:
-        # Python's and cbbg's own temporary files stay in the scratch folder.
+        # The study runs this cbbg; temporary files outside the trees stay in the scratch.
         os.makedirs(os.path.join(scratch, "tmp"))
-        env = dict(os.environ, CBBG=cbbg, TMPDIR=os.path.join(scratch, "tmp"))
-        runner = Runner(scratch, env)
+        os.environ.update(CBBG=cbbg, TMPDIR=os.path.join(scratch, "tmp"))
+        runner = Runner(scratch)
         rng = random.Random(SEED)
         began = time.monotonic()
         passed = [test_case(case, runner, os.path.join(scratch, f"case{i}"), rng)
@@ -336,6 +356,8 @@ def main(argv):
               ("every tree identical" if all(passed) else "DIFFERENCES (above)"))
         return 0 if all(passed) else 1
     finally:
+        if runner:
+            runner.stop()
         shutil.rmtree(scratch)
 
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The robustness study end to end, small (analytic plant, 2 seeds): it writes a table of
-# every perturbation's values; killed part-way and run again, it ends with the bytes of an
-# uninterrupted study; and it refuses a folder it did not make.
+# The robustness study end to end, small (analytic plant, 2 seeds): a refused command leaves
+# nothing that would refuse the corrected one; it writes a table of every perturbation's
+# values; killed part-way and run again, it ends with the bytes of an uninterrupted study;
+# and it refuses a folder it did not make.
 #   test_robustness_study.sh BUILD_DIR
 set -euo pipefail
 export CBBG="$(cd "$1" && pwd)/apps/cbbg"
@@ -9,11 +10,35 @@ study="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/robustness_study.sh"
 scratch="$(mktemp -d /tmp/cbbg-robustness.XXXXXX)"
 trap 'rm -rf "$scratch"' EXIT
 fail() { echo "test_robustness_study: $1" >&2; exit 1; }
+whole="$scratch/new/whole"  # its parent is new too: a refusal removes both
 
-"$study" --seeds 2 --jobs 2 --out "$scratch/whole" >/dev/null 2>&1
-rows="$(grep -c '^| [a-z]' "$scratch/whole/robustness.md")"
+# refused MESSAGE OPTION...: the study exits 2 with MESSAGE as its one line and leaves no
+# trace of $whole (nor of its new parent).
+refused() {
+  local message="$1" status=0 left
+  shift
+  "$study" "$@" --out "$whole" 2>"$scratch/err" || status=$?
+  left="$(find "$scratch/new" 2>/dev/null | tr '\n' ' ')" || true  # none: find fails
+  [[ "$status" == 2 && "$(wc -l <"$scratch/err")" == 1 && -z "$left" ]] &&
+    grep -qF -- "$message" "$scratch/err" ||
+    fail "$* exited $status, left '$left' and said: $(cat "$scratch/err")"
+}
+# cbbg's limits, which the script checks before it makes anything.
+refused "robustness_study.sh: --seeds must be a whole number from 1 to 10000; got '99999'" \
+  --plant analytic --seeds 99999
+refused "robustness_study.sh: --jobs must be a whole number from 1 to 1024; got '2000'" \
+  --plant analytic --seeds 2 --jobs 2000
+# cbbg refusing the study's first command for a reason of its own (an unknown key here).
+printf '#!/bin/sh\nexec "%s" "$@" --set no_such_key=1\n' "$CBBG" >"$scratch/refusing-cbbg"
+chmod +x "$scratch/refusing-cbbg"
+CBBG="$scratch/refusing-cbbg" \
+  refused "cbbg: error: --set no_such_key=1: unknown key 'no_such_key'" --plant analytic --seeds 2
+
+# The corrected command.
+"$study" --plant analytic --seeds 2 --jobs 2 --out "$whole" >/dev/null 2>&1
+rows="$(grep -c '^| [a-z]' "$whole/robustness.md")"
 [[ "$rows" == 22 ]] || fail "robustness.md has $rows rows; expected 1 header + 21 values"
-grep -q '^| body mass and inertias x | 1 | .*/10 | .*/10 | 10/10 |$' "$scratch/whole/robustness.md" ||
+grep -q '^| body mass and inertias x | 1 | .*/10 | .*/10 | 10/10 |$' "$whole/robustness.md" ||
   fail "the nominal robot's row is not 2 seeds x 5 angles per arm with pd_only balancing all"
 
 # Killed while its second sweep runs, then run again.
@@ -25,9 +50,22 @@ for _ in $(seq 1 300); do
 done
 kill -KILL -- "-$pid" 2>/dev/null || true
 wait "$pid" 2>/dev/null || true
+# A SIGKILL is delivered, not done: the group's cbbg may hold its lock a moment longer.
+for _ in $(seq 1 250); do pgrep -g "$pid" >/dev/null || break; sleep 0.02; done
 [[ ! -f "$scratch/killed/robustness.md" ]] || fail "the kill came too late to test a resume"
 "$study" --seeds 2 --jobs 2 --out "$scratch/killed" >/dev/null 2>&1
-diff -r "$scratch/whole" "$scratch/killed" || fail "the resumed study differs from the whole one"
+diff -r "$whole" "$scratch/killed" || fail "the resumed study differs from the whole one"
+
+# Stopped after its first sweep was published and before cbbg had cleaned it up (cbbg's fault
+# hook), then run again: the merge must finish that sweep.
+status=0
+CBBG_FAULT_AT=commit:clean "$study" --seeds 2 --jobs 2 --out "$scratch/published" \
+  >/dev/null 2>&1 || status=$?
+[[ "$status" == 86 && -e "$scratch/published/body_mass_scale/.cbbg-sweep-run" ]] ||
+  fail "the fault hook did not stop the study after its first publish (exit $status)"
+"$study" --seeds 2 --jobs 2 --out "$scratch/published" >/dev/null 2>&1
+diff -r "$whole" "$scratch/published" ||
+  fail "the study stopped after a publish and run again differs from the whole one"
 
 # A folder it did not make, and another study's settings.
 mkdir "$scratch/mine"
@@ -36,12 +74,14 @@ status=0
 [[ "$status" == 2 ]] && grep -q "exists and was not made by this script" "$scratch/err" ||
   fail "a foreign folder was not refused with exit 2: $(cat "$scratch/err")"
 status=0
-"$study" --seeds 3 --out "$scratch/whole" 2>"$scratch/err" || status=$?
+"$study" --seeds 3 --out "$whole" 2>"$scratch/err" || status=$?
 [[ "$status" == 2 ]] && grep -q "holds a study with plant=analytic seeds=2" "$scratch/err" ||
   fail "a study of other settings was not refused with exit 2: $(cat "$scratch/err")"
 status=0
 "$study" --seeds 0 --out "$scratch/zero" 2>"$scratch/err" || status=$?
 [[ "$status" == 2 && ! -e "$scratch/zero" ]] &&
-  grep -q "^robustness_study.sh: --seeds must be a whole number >= 1; got '0'" "$scratch/err" ||
+  grep -q "^robustness_study.sh: --seeds must be a whole number from 1 to 10000; got '0'" \
+    "$scratch/err" ||
   fail "--seeds 0 was not refused with exit 2 before any folder was made: $(cat "$scratch/err")"
-echo "test_robustness_study: 21 rows; killed and resumed to the same bytes; foreign folders refused"
+echo "test_robustness_study: refusals leave nothing; 21 rows; killed, or stopped after a" \
+  "publish, and run again to the same bytes; foreign folders refused"

@@ -100,8 +100,9 @@ void remove_stale_staging(const fs::path& path) {
   std::string prefix = ".";
   prefix += path.filename().string();
   prefix += kTemporaryTag;
+  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
   std::error_code error;
-  for (const auto& entry : fs::directory_iterator(path.parent_path(), error)) {
+  for (const auto& entry : fs::directory_iterator(parent, error)) {
     const std::string name = entry.path().filename().string();
     if (name.rfind(prefix, 0) == 0 && is_stale_temporary(name)) remove_tree(entry.path());
   }

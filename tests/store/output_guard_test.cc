@@ -95,6 +95,13 @@ TEST(OutputGuard, RemovesOnlyStaleStagingBesideAPath) {
   EXPECT_FALSE(fs::exists(gone));
   EXPECT_TRUE(fs::exists(live));
   EXPECT_TRUE(fs::exists(other));
+  // A relative path looks beside itself in the working directory.
+  fs::create_directories(gone);
+  const fs::path here = fs::current_path();
+  fs::current_path(scratch.path());
+  remove_stale_staging("out.partial");
+  fs::current_path(here);
+  EXPECT_FALSE(fs::exists(gone));
 }
 
 TEST(OutputGuard, ReplacesOnlyAFileThatCarriesItsTag) {
