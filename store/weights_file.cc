@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "store/files.h"
+#include "store/output_guard.h"
 
 namespace cbbg::store {
 
@@ -350,6 +351,7 @@ std::string normaliser_text(const blocks::NormaliserParams& normaliser) {
 
 void save_weights(const std::filesystem::path& path, const LearntWeights& weights) {
   check_savable(weights);
+  check_replaceable_file(path, "weights file", kWeightsFormat);  // never a file of the user's
   const std::string text = format_weights(weights);
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   write_atomically(path, text);

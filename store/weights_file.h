@@ -22,7 +22,9 @@ using experiments::LearntWeights;
 // reads back to the same double. Writes a temporary file beside `path` and renames it, so
 // `path` is never half-written; creates missing parent directories. Throws
 // std::invalid_argument for weights the format cannot hold (a weight count that does not
-// match the layout, a provenance word with spaces) and std::runtime_error when writing fails.
+// match the layout, a provenance word with spaces), config::ConfigError when `path` holds
+// anything but a weights file (a file of the user's, a FIFO: never replaced), and
+// std::runtime_error when writing fails.
 void save_weights(const std::filesystem::path& path, const LearntWeights& weights);
 
 // Reads a weights file. Every problem (missing file, other format or version, a malformed

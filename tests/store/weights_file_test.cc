@@ -198,6 +198,19 @@ TEST_F(WeightsFile, SavingReplacesTheFileWholeAndLeavesNothingElse) {
   EXPECT_EQ(files, 1);  // no temporary file left beside it
 }
 
+TEST_F(WeightsFile, SavingNeverReplacesAFileThatIsNotAWeightsFile) {
+  const fs::path mine = directory_ / "mine.txt";
+  std::ofstream(mine) << "my notes\n";
+  EXPECT_THAT([&] { save_weights(mine, default_layout_weights()); },
+              ::testing::ThrowsMessage<config::ConfigError>(
+                  "weights file '" + mine.string() +
+                  "' exists and cbbg did not write it; cbbg never replaces a file of yours: "
+                  "give a new path"));
+  std::ifstream in(mine);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "my notes\n");
+}
+
 TEST_F(WeightsFile, SavingRefusesWhatTheFormatCannotHold) {
   auto save_error = [this](const LearntWeights& weights) -> std::string {
     try {
