@@ -1,6 +1,7 @@
 #include "framework/graphviz.h"
 
 #include "framework/number_text.h"
+#include "framework/owned_files.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -330,6 +331,34 @@ std::string trimmed(std::string text) {
 }
 
 // Runs `dot -T<format> -o <file>` with the DOT text on stdin; throws unless it succeeds.
+// A drawing replaces only a drawing of cbbg's: never a file of the user's, never a FIFO.
+void check_replaceable(const std::filesystem::path& output) {
+  if (const std::string kind = non_regular_kind(output); !kind.empty()) {
+    throw std::invalid_argument("cannot render '" + output.string() + "': it is " + kind +
+                                "; give a regular file's path");
+  }
+  std::error_code error;
+  if (std::filesystem::exists(std::filesystem::symlink_status(output, error)) &&
+      !carries_tag(output, kDiagramGeneratorTag)) {
+    throw std::invalid_argument("cannot render '" + output.string() +
+                                "': it exists and cbbg did not write it; cbbg never replaces "
+                                "a file of yours");
+  }
+}
+
+// `dot` with the generator tag as the graph's comment (dot copies it into an SVG), added
+// after the opening brace when a text written elsewhere lacks it.
+std::string tagged(const std::string& dot) {
+  const auto brace = dot.find('{');
+  if (dot.find(kDiagramGeneratorTag) != std::string::npos || brace == std::string::npos) {
+    return dot;
+  }
+  std::string text = dot;
+  // On the brace's line, so dot's messages keep the line numbers of the text as given.
+  text.insert(brace + 1, " comment=\"" + std::string(kDiagramGeneratorTag) + "\";");
+  return text;
+}
+
 std::uint32_t png_crc(std::string_view bytes) {
   std::uint32_t crc = 0xffffffffU;
   for (const char c : bytes) {
@@ -422,9 +451,11 @@ void render_dot(const std::string& dot, const std::filesystem::path& output) {
                                      : "unknown extension '" + output.extension().string() + "'") +
                                 "; the allowed extensions are .dot, .svg and .png");
   }
+  check_replaceable(output);
+  const std::string text = tagged(dot);
   if (extension == ".dot") {
     PendingFile file(output);
-    write_all(file.fd(), dot, output);
+    write_all(file.fd(), text, output);
     file.commit();
     return;
   }
@@ -435,7 +466,7 @@ void render_dot(const std::string& dot, const std::filesystem::path& output) {
                              "Debian package 'graphviz' or write a .dot file");
   }
   PendingFile file(output);
-  run_dot(*dot_program, extension.substr(1), dot, file.path(), output);
+  run_dot(*dot_program, extension.substr(1), text, file.path(), output);
   if (extension == ".png") tag_png(file.path(), output);
   file.commit();
 }

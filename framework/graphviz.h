@@ -45,7 +45,9 @@ std::string to_dot(const Diagram& diagram, const GraphvizOptions& options = {});
 
 // Writes `dot` to `output`, by its extension: ".dot" as is; ".svg" or ".png" rendered by the
 // Graphviz program `dot`, looked up on PATH. The file appears complete or not at all.
-// Throws std::invalid_argument for any other extension, and std::runtime_error when `dot` is
+// Replaces only a drawing it wrote (one carrying kDiagramGeneratorTag). Throws
+// std::invalid_argument for any other extension, for a file of the user's or a FIFO, socket
+// or device at `output` (never opened), and std::runtime_error when `dot` is
 // not on PATH, when it fails (with its exit status and what it printed), or when the file
 // cannot be written.
 void render_dot(const std::string& dot, const std::filesystem::path& output);

@@ -15,7 +15,12 @@
 #include <string_view>
 #include <vector>
 
+#include "framework/owned_files.h"
+
 namespace cbbg::store {
+
+using cbbg::carries_tag;  // framework/owned_files.h: what is at a path, and whether it is cbbg's
+using cbbg::non_regular_kind;
 
 // What every temporary name of cbbg holds: NAME.cbbg-tmp-PID-N files, staging folders.
 inline constexpr const char* kTemporaryTag = ".cbbg-tmp-";
@@ -44,13 +49,6 @@ std::optional<std::filesystem::path> find_temporary(const std::filesystem::path&
 // A commit's last check: throws std::runtime_error naming the temporary when `directory`
 // holds one, so a half-written file never reaches finished results.
 void refuse_temporaries(const std::filesystem::path& directory);
-
-// The kind of what is at `path` in words ("a FIFO", "a directory"), or "" for a regular file
-// or nothing.
-std::string non_regular_kind(const std::filesystem::path& path);
-
-// Whether the first 64 KiB of the regular file at `path` hold `tag`.
-bool carries_tag(const std::filesystem::path& path, std::string_view tag);
 
 // Before any work: `path` (named by `flag` in messages) may be written as a file. It must be
 // absent, or a regular file that carries `tag` (cbbg's own, replaced). Throws

@@ -2,6 +2,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -31,6 +32,7 @@ using ::testing::Contains;
 using ::testing::HasSubstr;
 using ::testing::Not;
 using ::testing::StartsWith;
+using ::testing::ThrowsMessage;
 
 // top: source [2] -> gain (x3) -> hold, hold.y exported as "held".
 std::unique_ptr<Diagram> flat_diagram() {
@@ -375,12 +377,41 @@ TEST(Graphviz, WritesDotFilesAsIsWithoutNeedingDot) {
   EXPECT_EQ(files_in(directory.path()), (std::vector<std::string>{"flat.dot"}));
 }
 
-TEST(Graphviz, ReplacesAnExistingFileWhole) {
+TEST(Graphviz, ReplacesItsOwnDrawingWhole) {
   ScratchDirectory directory;
   const fs::path output = directory.path() / "picture.dot";
-  std::ofstream(output) << std::string(10000, 'x');
+  render_dot(to_dot(*nested_diagram()), output);
   render_dot("digraph {}\n", output);
-  EXPECT_EQ(read_file(output), "digraph {}\n");
+  // A text written elsewhere gets the tag, so that this drawing too may be replaced later.
+  EXPECT_EQ(read_file(output), "digraph { comment=\"made by cbbg\";}\n");
+  render_dot("digraph {}\n", output);
+}
+
+TEST(Graphviz, EveryDrawingCarriesTheGeneratorTag) {
+  ScratchDirectory directory;
+  const std::string dot = to_dot(*flat_diagram());
+  for (const char* name : {"a.dot", "a.svg", "a.png"}) {
+    render_dot(dot, directory.path() / name);
+    EXPECT_THAT(read_file(directory.path() / name), HasSubstr(kDiagramGeneratorTag)) << name;
+  }
+  // The PNG's text chunk sits after IHDR, where image readers expect metadata.
+  EXPECT_EQ(read_file(directory.path() / "a.png").substr(37, 12), "tEXtSoftware");
+}
+
+TEST(Graphviz, NeverReplacesAUsersFileOrOpensAFifo) {
+  ScratchDirectory directory;
+  const fs::path mine = directory.path() / "mine.svg";
+  std::ofstream(mine) << "<svg>my drawing</svg>";
+  EXPECT_THAT([&] { render_dot(to_dot(*flat_diagram()), mine); },
+              ThrowsMessage<std::invalid_argument>(
+                  "cannot render '" + mine.string() +
+                  "': it exists and cbbg did not write it; cbbg never replaces a file of yours"));
+  EXPECT_EQ(read_file(mine), "<svg>my drawing</svg>");
+  const fs::path fifo = directory.path() / "pipe.dot";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  EXPECT_THAT([&] { render_dot("digraph {}", fifo); },
+              ThrowsMessage<std::invalid_argument>("cannot render '" + fifo.string() +
+                                                   "': it is a FIFO; give a regular file's path"));
 }
 
 TEST(Graphviz, MissingDotProgramIsAClearError) {
