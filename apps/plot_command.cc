@@ -95,7 +95,9 @@ int draw_figures(const std::filesystem::path& directory, const config::Config& c
                  arms.front());
   } else {
     try {
-      store::Manifest(directory / "figures").add({kDiagramFigure});
+      store::Manifest manifest(directory / "figures");
+      manifest.check_writable({kDiagramFigure}, "the diagram");
+      manifest.add({kDiagramFigure});
       draw_diagram(arms.front(), config, directory / "figures" / kDiagramFigure,
                    GraphvizOptions{.hidden_blocks = telemetry_blocks(arms.front())});
     } catch (const std::runtime_error& error) {
