@@ -212,6 +212,7 @@ RunDirectory RunDirectory::resume(const fs::path& target) {
     }
     directory.lock_.emplace(work / kLockFile, work.string());
     remove_temporaries(work);  // the killed run's half-written files: redone from its tasks
+    remove_stale_staging(work);
     check_own_tasks(work / "tasks");
     directory.read_marker();
     check_target(directory.target_, directory.shape_.replace);

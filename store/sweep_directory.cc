@@ -35,7 +35,6 @@ bool present(const fs::path& path) {
 // Builds TARGET.partial under a private name and renames it into place, so that it never
 // exists without its marker; false when another shard's got there first.
 bool try_create(const fs::path& work, const std::string& config_yaml, bool figures) {
-  remove_stale_staging(work);
   const fs::path staging = temporary_beside(work);
   std::error_code error;
   fs::create_directories(staging / "tasks", error);
@@ -96,6 +95,8 @@ SweepDirectory SweepDirectory::open_shard(const fs::path& target, const std::str
   }
   std::error_code error;
   fs::create_directories(directory.work_.parent_path(), error);
+  // A shard killed while it made TARGET.partial left its staging, whoever made it since.
+  remove_stale_staging(directory.work_);
   // false when another shard made it first: then this one joins it.
   if (!present(directory.work_)) try_create(directory.work_, config_yaml, figures);
   check_is_sweep(directory.work_, directory.target_);
@@ -163,6 +164,7 @@ SweepDirectory SweepDirectory::open_existing(const fs::path& target, bool lock) 
   }
   check_own_tasks(directory.work_ / "tasks");  // before the lock: a refusal writes nothing
   directory.lock_.emplace(directory.work_ / kLockFile, directory.work_.string());
+  remove_stale_staging(directory.work_);
   remove_temporaries(directory.work_);  // every shard has ended: none is writing
   return directory;
 }

@@ -3,6 +3,7 @@
 // its own temporaries on resume and merge, and writes config text that reads back.
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -222,6 +223,21 @@ TEST_F(OutputDiscipline, ResumeRemovesItsOwnTemporariesAndNeverPublishesOne) {
   const Outcome replaced = run(std::string(kQuick) + " --replace --out " + out);
   EXPECT_EQ(replaced.exit_code, 0) << replaced.output;
   EXPECT_EQ(tree_of(out), expected);
+}
+
+TEST_F(OutputDiscipline, AShardRemovesTheStagingAKilledShardLeftBesideTheSweep) {
+  const std::string sweep = path("s");
+  const std::string shard = std::string(kQuick) + " --grid critic.beta=0.1,0.2 --out " + sweep;
+  ASSERT_EQ(run(shard + " --shard 1/2").exit_code, 0);
+  // Shard 2 was killed while it made s.partial, which shard 1 had made meanwhile.
+  char host[256] = {};
+  ::gethostname(host, sizeof host - 1);
+  const std::string staging = path(".s.partial.cbbg-tmp-" + std::string(host) + "-999999999-0");
+  write(staging + "/.cbbg-sweep-run", "cbbg-sweep 1\n");
+  ASSERT_EQ(run(shard + " --shard 2/2").exit_code, 0);
+  EXPECT_FALSE(fs::exists(staging));
+  ASSERT_EQ(run("--log-level warn merge " + sweep).exit_code, 0);
+  EXPECT_EQ(temporaries_below(scratch_), "");
 }
 
 TEST_F(OutputDiscipline, ACorruptTaskRecordNamesTheTaskToRedoAndThatWorks) {
