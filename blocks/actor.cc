@@ -30,13 +30,7 @@ std::string_view to_string(ActorRule rule) {
   return rule == ActorRule::kWeighted ? "weighted" : "improved";
 }
 
-void ActorParams::validate() const {
-  check_positive("actor.alpha", alpha);
-  if (rule != ActorRule::kImproved && rule != ActorRule::kWeighted) {
-    throw std::invalid_argument("actor.rule must be improved or weighted; got the value " +
-                                std::to_string(static_cast<int>(rule)));
-  }
-}
+void ActorParams::validate() const { check_declared(*this, kSection); }
 
 Actor::Actor(std::string name, int num_features, const ActorParams& params, double period)
     : Block(std::move(name)), num_features_(num_features), params_(params) {

@@ -3,6 +3,7 @@
 #include <string>
 #include <string_view>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/context.h"
 
@@ -26,6 +27,14 @@ struct ActorParams {
   // evaluation, ControllerOptions::learning).
   bool frozen = false;
 
+  static constexpr const char* kSection = "actor";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("alpha", alpha, "actor learning rate", kPositive);
+    a.choice("rule", rule, "improved (paper eq. 11) | weighted (eq. 7)",
+             Choices<ActorRule>{{"improved", ActorRule::kImproved},
+                                {"weighted", ActorRule::kWeighted}});
+  }
   // Throws naming the key unless alpha is finite and > 0 and rule is one of the two.
   void validate() const;
 };

@@ -8,7 +8,7 @@
 
 namespace cbbg::blocks {
 
-void SamplerParams::validate() const { check_positive("sampler.k_b", k_b); }
+void SamplerParams::validate() const { check_declared(*this, kSection); }
 
 BoltzmannSampler::BoltzmannSampler(std::string name, const SamplerParams& params, double period)
     : Block(std::move(name)), params_(params) {

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 
 namespace cbbg::blocks {
@@ -13,6 +14,12 @@ struct SamplerParams {
   // §2.6).
   double k_b = 1.0;
 
+  static constexpr const char* kSection = "sampler";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("k_b", k_b, "K_B: a_E ~ N(a_A, K_B T / 2); the paper's 1.38e-23 works too",
+             kPositive);
+  }
   // Throws naming sampler.k_b unless it is finite and > 0.
   void validate() const;
 };

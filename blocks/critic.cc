@@ -6,11 +6,7 @@
 
 namespace cbbg::blocks {
 
-void CriticParams::validate() const {
-  check_positive("critic.beta", beta);
-  check_in("critic.gamma", gamma, {0.0, false, 1.0, true});
-  check_in("critic.lambda", lambda, {0.0, true, 1.0, false});
-}
+void CriticParams::validate() const { check_declared(*this, kSection); }
 
 Critic::Critic(std::string name, int num_features, const CriticParams& params, double period)
     : Block(std::move(name)), num_features_(num_features), params_(params) {

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/block_context.h"
 #include "framework/context.h"
@@ -17,6 +18,14 @@ struct CriticParams {
   // learnt-actor evaluation, ControllerOptions::learning).
   bool frozen = false;
 
+  static constexpr const char* kSection = "critic";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("beta", beta, "critic learning rate", kPositive);
+    a.number("gamma", gamma, "discount, in (0, 1]", interval(0.0, 1.0, kOpen, kClosed));
+    a.number("lambda", lambda, "eligibility trace decay, in [0, 1)",
+             interval(0.0, 1.0, kClosed, kOpen));
+  }
   // Throws naming the key unless every value is finite and in its range.
   void validate() const;
 };

@@ -10,12 +10,7 @@
 
 namespace cbbg::blocks {
 
-void LqrSupervisorParams::validate() const {
-  for (size_t i = 0; i < lqr_q.size(); ++i) {
-    check_non_negative("supervisor.lqr_q[" + std::to_string(i) + "]", lqr_q[i]);
-  }
-  check_positive("supervisor.lqr_r", lqr_r);
-}
+void LqrSupervisorParams::validate() const { check_declared(*this, kSection); }
 
 LqrSupervisor::LqrSupervisor(std::string name, const plant::RobotParams& robot,
                              const LqrSupervisorParams& params)

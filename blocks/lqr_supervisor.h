@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 #include "plant/robot_params.h"
 
@@ -15,6 +16,14 @@ struct LqrSupervisorParams {
   // supervisor.lqr_q: diagonal state weights on (theta_b, phi, theta_b', phi'), each >= 0.
   std::array<double, 4> lqr_q{100.0, 1.0, 1.0, 1.0};
   double lqr_r = 1.0;  // supervisor.lqr_r: torque weight, > 0
+
+  static constexpr const char* kSection = "supervisor";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.numbers("lqr_q", lqr_q, "LQR state weights on (theta_b, phi, theta_b', phi')",
+              kNonNegative);
+    a.number("lqr_r", lqr_r, "LQR weight on the torque", kPositive);
+  }
 
   // Throws naming the key unless every value is finite and in its range.
   void validate() const;

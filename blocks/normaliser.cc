@@ -8,11 +8,7 @@
 
 namespace cbbg::blocks {
 
-void NormaliserParams::validate() const {
-  check_positive("normaliser.scale_theta", scale_theta);
-  check_positive("normaliser.scale_dtheta", scale_dtheta);
-  check_positive("normaliser.saturation", saturation);
-}
+void NormaliserParams::validate() const { check_declared(*this, kSection); }
 
 Normaliser::Normaliser(std::string name, const NormaliserParams& params)
     : Block(std::move(name)), params_(params) {

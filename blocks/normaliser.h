@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 
 namespace cbbg::blocks {
@@ -12,7 +13,14 @@ struct NormaliserParams {
   double scale_dtheta = 0.05817764;  // normaliser.scale_dtheta: n_dtheta, rad/s (pi/54)
   double saturation = 3.0;           // normaliser.saturation: the RBF grid's half-width
 
-  // Throws naming the key unless every value is finite and > 0.
+  static constexpr const char* kSection = "normaliser";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("scale_theta", scale_theta, "n_theta: pitch per grid unit, rad", kPositive);
+    a.number("scale_dtheta", scale_dtheta, "n_dtheta: pitch rate per grid unit, rad/s", kPositive);
+    a.number("saturation", saturation, "inputs saturate to +-this (the RBF grid)", kPositive);
+  }
+  // Throws naming the key unless every value is as declared.
   void validate() const;
 };
 

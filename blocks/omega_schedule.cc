@@ -30,8 +30,7 @@ std::string_view to_string(OmegaMode mode) {
 }
 
 void OmegaParams::validate() const {
-  check_non_negative("omega.n2", n2);
-  check_positive("omega.n3", n3);
+  check_declared(*this, kSection);
   if (mode != OmegaMode::kSchedule && mode != OmegaMode::kZero && mode != OmegaMode::kOne) {
     throw std::invalid_argument("omega.mode must be schedule, zero or one; got the value " +
                                 std::to_string(static_cast<int>(mode)));

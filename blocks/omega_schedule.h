@@ -3,6 +3,7 @@
 #include <string>
 #include <string_view>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/context.h"
 
@@ -23,7 +24,14 @@ std::string_view to_string(OmegaMode mode);
 struct OmegaParams {
   double n2 = 500.0;  // omega.n2: ticks of pure supervision before omega rises, >= 0
   double n3 = 200.0;  // omega.n3: the rise's time constant in ticks, > 0
-  OmegaMode mode = OmegaMode::kSchedule;  // omega.mode
+  OmegaMode mode = OmegaMode::kSchedule;  // not a config key: the controller's option
+
+  static constexpr const char* kSection = "omega";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("n2", n2, "ticks of supervision before omega rises", kNonNegative);
+    a.number("n3", n3, "time constant of omega's rise, ticks", kPositive);
+  }
 
   // Throws naming the key unless n2 is finite and >= 0, n3 finite and > 0, mode valid.
   void validate() const;

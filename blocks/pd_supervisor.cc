@@ -6,12 +6,7 @@
 
 namespace cbbg::blocks {
 
-void PdSupervisorParams::validate() const {
-  check_finite("supervisor.k_theta", k_theta);
-  check_finite("supervisor.k_dtheta", k_dtheta);
-  check_finite("supervisor.k_phi", k_phi);
-  check_finite("supervisor.k_dphi", k_dphi);
-}
+void PdSupervisorParams::validate() const { check_declared(*this, kSection); }
 
 PdSupervisor::PdSupervisor(std::string name, const PdSupervisorParams& params)
     : Block(std::move(name)), params_(params) {

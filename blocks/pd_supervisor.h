@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 
 namespace cbbg::blocks {
@@ -13,6 +14,14 @@ struct PdSupervisorParams {
   double k_phi = 1.0;      // supervisor.k_phi: N m / rad
   double k_dphi = 1.0;     // supervisor.k_dphi: N m s / rad
 
+  static constexpr const char* kSection = "supervisor";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("k_theta", k_theta, "PD gain on theta_b, N m/rad", kFinite);
+    a.number("k_dtheta", k_dtheta, "PD gain on theta_b', N m s/rad", kFinite);
+    a.number("k_phi", k_phi, "PD gain on (phi_l + phi_r)/2, N m/rad", kFinite);
+    a.number("k_dphi", k_dphi, "PD gain on (phi_l' + phi_r')/2, N m s/rad", kFinite);
+  }
   // Throws naming the key unless every gain is finite.
   void validate() const;
 };

@@ -9,19 +9,18 @@
 namespace cbbg::blocks {
 
 void RbfParams::validate() const {
+  check_declared(*this, kSection);
   if (centres.empty()) {
     throw std::invalid_argument("rbf.centres must list at least one centre; got none");
   }
   for (size_t i = 0; i < centres.size(); ++i) {
     const std::string key = "rbf.centres[" + std::to_string(i) + "]";
-    check_finite(key, centres[i]);
     if (i > 0 && centres[i] <= centres[i - 1]) {
       throw_invalid_parameter(
           key, "must be greater than the centre before it (" + format_number(centres[i - 1]) + ")",
           centres[i]);
     }
   }
-  check_positive("rbf.width", width);
 }
 
 RbfFeatures::RbfFeatures(std::string name, const RbfParams& params)

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 
 namespace cbbg::blocks {
@@ -12,6 +13,13 @@ struct RbfParams {
   // rbf.centres: the grid's coordinates along each axis; the units sit on centres x centres.
   std::vector<double> centres{-3.0, -2.0, -1.0, 0.0, 1.0, 2.0, 3.0};
   double width = 0.5;  // rbf.width: b, the Gaussian width of every unit, in grid units
+
+  static constexpr const char* kSection = "rbf";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.numbers("centres", centres, "grid coordinates per axis (n x n units)", kFinite);
+    a.number("width", width, "b: Gaussian width of every unit, grid units", kPositive);
+  }
 
   // Throws naming the key unless centres is non-empty, finite and strictly increasing and
   // width is finite and > 0.

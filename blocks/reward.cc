@@ -5,10 +5,7 @@
 #include "framework/block_context.h"
 
 namespace cbbg::blocks {
-void RewardParams::validate() const {
-  check_finite("reward.a1", a1);
-  check_finite("reward.a2", a2);
-}
+void RewardParams::validate() const { check_declared(*this, kSection); }
 
 Reward::Reward(std::string name, const RewardParams& params, double period)
     : Block(std::move(name)), params_(params) {

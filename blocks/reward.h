@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/context.h"
 
@@ -11,6 +12,13 @@ namespace cbbg::blocks {
 struct RewardParams {
   double a1 = 10.0;  // reward.a1: weight of theta_b in the sliding surface, 1/rad
   double a2 = 1.0;   // reward.a2: weight of theta_b', s/rad
+
+  static constexpr const char* kSection = "reward";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("a1", a1, "sliding surface weight on theta_b, 1/rad", kFinite);
+    a.number("a2", a2, "sliding surface weight on theta_b', s/rad", kFinite);
+  }
 
   // Throws naming the key unless both are finite.
   void validate() const;

@@ -17,13 +17,7 @@ constexpr std::array<int, kMeasuredSize> kPlantIndex = {plant::kThetaB,     plan
 
 }  // namespace
 
-void SensorsParams::validate() const {
-  for (int i = 0; i < kMeasuredSize; ++i) {
-    const auto index = static_cast<size_t>(i);
-    check_non_negative("sensors.noise_std[" + std::to_string(i) + "]", noise_std[index]);
-    check_non_negative("sensors.quantisation[" + std::to_string(i) + "]", quantisation[index]);
-  }
-}
+void SensorsParams::validate() const { check_declared(*this, kSection); }
 
 Sensors::Sensors(std::string name, const SensorsParams& params, double period)
     : Block(std::move(name)), params_(params) {

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "blocks/measured_signals.h"
+#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/context.h"
 
@@ -14,6 +15,17 @@ namespace cbbg::blocks {
 struct SensorsParams {
   std::array<double, kMeasuredSize> noise_std{};     // sensors.noise_std: Gaussian std
   std::array<double, kMeasuredSize> quantisation{};  // sensors.quantisation: step
+
+  static constexpr const char* kSection = "sensors";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.numbers("noise_std", noise_std,
+              "Gaussian noise std per measured signal (theta_b, theta_b', phi_l, phi_r, phi_l', "
+              "phi_r'); 0 = off",
+              kNonNegative);
+    a.numbers("quantisation", quantisation, "quantisation step per measured signal; 0 = off",
+              kNonNegative);
+  }
 
   // Throws naming the key (e.g. "sensors.noise_std[1]") unless every value is finite, >= 0.
   void validate() const;

@@ -8,11 +8,7 @@
 
 namespace cbbg::blocks {
 
-void PushParams::validate() const {
-  blocks::check_non_negative("push.start", start);
-  blocks::check_finite("push.torque", torque);
-  blocks::check_positive("push.duration", duration);
-}
+void PushParams::validate() const { check_declared(*this, kSection); }
 
 TorquePush::TorquePush(std::string name, const PushParams& params, double period)
     : Block(std::move(name)), params_(params) {

@@ -2,15 +2,26 @@
 
 #include <string>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 
 namespace cbbg::blocks {
 
 // A push on the robot (cbbg eval --push-time, --push-torque, --push-duration).
 struct PushParams {
-  double start = 0.0;     // push.start: when it begins, s from the trial's start, >= 0
+  double start = 5.0;     // push.start: when it begins, s from the trial's start, >= 0
   double torque = 0.0;    // push.torque: added to each wheel's torque, N m, finite
-  double duration = 0.0;  // push.duration: how long it lasts, s, > 0
+  double duration = 0.2;  // push.duration: how long it lasts, s, > 0
+
+  static constexpr const char* kSection = "push";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("torque", torque,
+             "a torque pulse added to each wheel in every trial, N m; 0 = none (disturbance)",
+             kFinite);
+    a.number("start", start, "when the push begins, s from the trial's start", kNonNegative);
+    a.number("duration", duration, "how long the push lasts, s", kPositive);
+  }
 
   // Throws std::invalid_argument naming push.start, push.torque or push.duration unless
   // each is finite and in its range.

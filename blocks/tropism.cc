@@ -7,10 +7,7 @@
 
 namespace cbbg::blocks {
 
-void TropismParams::validate() const {
-  check_positive("tropism.k1", k1);
-  check_finite("tropism.k2", k2);
-}
+void TropismParams::validate() const { check_declared(*this, kSection); }
 
 Tropism::Tropism(std::string name, const TropismParams& params)
     : Block(std::move(name)), params_(params) {

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/context.h"
 
@@ -11,6 +12,13 @@ namespace cbbg::blocks {
 struct TropismParams {
   double k1 = 10.0;  // tropism.k1: the annealing factor, > 0 (the context parameter's default)
   double k2 = 0.1;   // tropism.k2: how strongly a high value cools the temperature
+
+  static constexpr const char* kSection = "tropism";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("k1", k1, "annealing factor: T = k1 / (1 + exp(k2 V))", kPositive);
+    a.number("k2", k2, "how strongly a high value cools the temperature", kFinite);
+  }
 
   // Throws naming the key unless k1 is finite and > 0 and k2 is finite.
   void validate() const;

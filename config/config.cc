@@ -385,10 +385,10 @@ void Config::set(std::string_view assignment, std::string source) {
 
 const Value& Config::value(std::string_view key) const {
   const auto found = values_.find(key);
-  if (found == values_.end()) {
-    throw std::logic_error("config has no key '" + std::string(key) + "'");
-  }
-  return found->second;
+  if (found != values_.end()) return found->second;
+  // A key registered after this config was made still has its default.
+  if (const KeySpec* spec = find_spec(key)) return spec->default_value;
+  throw std::logic_error("config has no key '" + std::string(key) + "'");
 }
 
 double Config::number(std::string_view key) const { return std::get<double>(value(key)); }

@@ -1,9 +1,9 @@
 #pragma once
-// The configuration tree of a cbbg run: every key of docs/model.md §4 (and the keys added
-// since) with its type, default and meaning, merged from the built-in defaults, a YAML file
-// and `--set key.path=value` overrides, in that order. Types, choices and simple ranges are
-// checked here, as each value arrives; ranges a block owns are checked by its params'
-// validate() when the diagram is built.
+// The configuration tree of a cbbg run: every key, made from the declarations of the params
+// structs (config/parameters.h, and a user's registered sections: config/declared_keys.h),
+// merged from their defaults, a YAML file and `--set key.path=value` overrides, in that
+// order. Types, choices and ranges are checked here, as each value arrives; invariants a
+// block owns beyond its ranges, and rules across keys, by diagrams::validate_all.
 
 #include <cstdint>
 #include <filesystem>
@@ -58,7 +58,8 @@ struct KeySpec {
   int list_size = 0;  // kNumbers: exact length when > 0
 };
 
-// Every key, in the order `cbbg list` and config.yaml show them.
+// Every key, in the order `cbbg list` and config.yaml show them: the built-in tree's, then
+// the registered sections'.
 const std::vector<KeySpec>& schema();
 // The diagram names an arm or `experiment` may take.
 const std::vector<std::string>& diagram_names();

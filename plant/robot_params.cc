@@ -8,43 +8,8 @@
 #include "framework/number_text.h"
 
 namespace cbbg::plant {
-namespace {
 
-void require_positive(const char* key, double value) {
-  if (!(std::isfinite(value) && value > 0.0)) {
-    throw std::invalid_argument(std::string("plant.") + key + " must be positive and finite; got " +
-                                format_number(value));
-  }
-}
-
-void require_non_negative(const char* key, double value) {
-  if (!(std::isfinite(value) && value >= 0.0)) {
-    throw std::invalid_argument(std::string("plant.") + key +
-                                " must be non-negative and finite; got " + format_number(value));
-  }
-}
-
-}  // namespace
-
-void RobotParams::validate() const {
-  require_positive("wheel_mass", wheel_mass);
-  require_positive("body_mass", body_mass);
-  require_positive("wheel_radius", wheel_radius);
-  require_positive("track_width", track_width);
-  require_positive("com_height", com_height);
-  require_positive("wheel_inertia", wheel_inertia);
-  require_positive("body_pitch_inertia", body_pitch_inertia);
-  require_positive("body_yaw_inertia", body_yaw_inertia);
-  require_positive("body_roll_inertia", body_roll_inertia);
-  require_non_negative("wheel_diametral_inertia", wheel_diametral_inertia);
-  require_non_negative("gravity", gravity);
-  require_non_negative("wheel_ground_friction", wheel_ground_friction);
-  require_non_negative("axle_friction", axle_friction);
-  require_positive("torque_limit", torque_limit);
-  if (!(std::isfinite(accuracy) && accuracy > 0.0 && accuracy < 1.0)) {
-    throw std::invalid_argument("plant.accuracy must be in (0, 1); got " + format_number(accuracy));
-  }
-}
+void RobotParams::validate() const { check_declared(*this, kSection); }
 
 void RobotParams::validate_rigid_bodies() const {
   validate();

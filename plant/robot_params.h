@@ -3,6 +3,8 @@
 // under `plant.` (docs/model.md §4), with the defaults of docs/model.md §1; body_roll_inertia and
 // wheel_diametral_inertia are two keys this project adds (see below).
 
+#include "framework/parameters.h"
+
 namespace cbbg::plant {
 
 // The pitch a trial starts from by default (trial.theta0), rad.
@@ -52,8 +54,43 @@ struct RobotParams {
   double wheel_diametral_inertia = 0.005625;  // I_d, wheel about a diameter, kg m^2; default
                                               // J_w / 2: a thin disc, as J_w = m R^2 / 2 is
 
+  static constexpr const char* kSection = "plant";
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("wheel_mass", wheel_mass, "m_l = m_r, kg", kPositive);
+    a.number("body_mass", body_mass, "M, kg", kPositive);
+    a.number("wheel_radius", wheel_radius, "R, m", kPositive);
+    a.number("track_width", track_width, "d, distance between the wheels, m", kPositive);
+    a.number("com_height", com_height, "L, axle midpoint to body centre of mass, m", kPositive);
+    a.number("wheel_inertia", wheel_inertia, "J_w, wheel about its axle, kg m^2", kPositive);
+    a.number("body_pitch_inertia", body_pitch_inertia,
+             "J_y, body pitch about its centre of mass, kg m^2", kPositive);
+    a.number("body_yaw_inertia", body_yaw_inertia, "J_z, body yaw inertia, kg m^2", kPositive);
+    a.number("body_roll_inertia", body_roll_inertia,
+             "J_x, body roll inertia, kg m^2 (matters only when turning)", kPositive);
+    a.number("wheel_diametral_inertia", wheel_diametral_inertia,
+             "wheel inertia about a diameter, kg m^2 (matters only when turning)", kNonNegative);
+    a.number("gravity", gravity, "g, m/s^2", kNonNegative);
+    a.number("wheel_ground_friction", wheel_ground_friction,
+             "mu_l = mu_r, viscous, N m/(rad/s)", kNonNegative);
+    a.number("axle_friction", axle_friction, "mu_w, wheel-axle viscous, N m/(rad/s)",
+             kNonNegative);
+    a.number("torque_limit", torque_limit, "motor torques saturate to +-this, N m", kPositive);
+    a.number("accuracy", accuracy, "integrator error tolerance (relative and absolute)",
+             interval(0.0, 1.0, kOpen, kOpen));
+    a.choice("simbody_integrator", simbody_integrator,
+             "merson (Runge-Kutta-Merson, the reference) | rk3 | verlet: the Simbody plant's",
+             Choices<SimbodyIntegrator>{{"merson", SimbodyIntegrator::kMerson},
+                                        {"rk3", SimbodyIntegrator::kRungeKutta3},
+                                        {"verlet", SimbodyIntegrator::kVerlet}});
+    a.choice("simbody_model", simbody_model,
+             "rolling (no-slip built into the base's mobilizer) | constrained (three no-slip "
+             "constraints, the reference): the Simbody plant's formulation",
+             Choices<SimbodyModel>{{"rolling", SimbodyModel::kRollingBase},
+                                   {"constrained", SimbodyModel::kNoSlipConstraints}});
+  }
   // Throws std::invalid_argument naming the first offending key, e.g.
-  // "plant.body_mass must be positive and finite; got -1".
+  // "plant.body_mass must be finite and > 0; got -1".
   void validate() const;
   // validate(), plus what a rigid-body (Simbody) model needs: each of the body's three
   // inertias at most the sum of the other two, and 2 I_d >= J_w for the wheel.

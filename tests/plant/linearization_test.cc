@@ -148,10 +148,10 @@ TEST(Linearization, RejectsInvalidParameters) {
   p.com_height = -0.4;
   EXPECT_THAT([&] { linearize_upright(p); },
               ::testing::ThrowsMessage<std::invalid_argument>(
-                  "plant.com_height must be positive and finite; got -0.4"));
+                  "plant.com_height must be finite and > 0; got -0.4"));
   EXPECT_THAT([&] { linearize_planar_upright(p); },
               ::testing::ThrowsMessage<std::invalid_argument>(
-                  "plant.com_height must be positive and finite; got -0.4"));
+                  "plant.com_height must be finite and > 0; got -0.4"));
 }
 
 }  // namespace

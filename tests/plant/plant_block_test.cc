@@ -237,7 +237,7 @@ TEST_P(PlantBlock, RejectsInvalidParametersAndPitches) {
     }
   };
   EXPECT_THAT([&] { make(bad, 0.1); }, ::testing::ThrowsMessage<std::invalid_argument>(
-                                           "plant.body_mass must be positive and finite; got -1"));
+                                           "plant.body_mass must be finite and > 0; got -1"));
   EXPECT_THAT([&] { make(RobotParams{}, nan); }, ::testing::ThrowsMessage<std::invalid_argument>(
                                                      "trial.theta0 must be finite; got nan"));
 

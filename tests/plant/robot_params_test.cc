@@ -74,16 +74,16 @@ TEST(RobotParams, RejectsANonPositiveOrNonFiniteValueNamingItsKey) {
     RobotParams p;
     p.*field.member = -1.0;
     EXPECT_EQ(validation_error(p),
-              std::string("plant.") + field.key + " must be positive and finite; got -1");
+              std::string("plant.") + field.key + " must be finite and > 0; got -1");
     p.*field.member = 0.0;
     EXPECT_EQ(validation_error(p),
-              std::string("plant.") + field.key + " must be positive and finite; got 0");
+              std::string("plant.") + field.key + " must be finite and > 0; got 0");
     p.*field.member = std::numeric_limits<double>::quiet_NaN();
     EXPECT_EQ(validation_error(p),
-              std::string("plant.") + field.key + " must be positive and finite; got nan");
+              std::string("plant.") + field.key + " must be finite and > 0; got nan");
     p.*field.member = std::numeric_limits<double>::infinity();
     EXPECT_EQ(validation_error(p),
-              std::string("plant.") + field.key + " must be positive and finite; got inf");
+              std::string("plant.") + field.key + " must be finite and > 0; got inf");
   }
 }
 
@@ -94,10 +94,10 @@ TEST(RobotParams, AllowsZeroFrictionAndGravityButNotNegativeOrNonFinite) {
     EXPECT_EQ(validation_error(p), "") << field.key;
     p.*field.member = -0.5;
     EXPECT_EQ(validation_error(p),
-              std::string("plant.") + field.key + " must be non-negative and finite; got -0.5");
+              std::string("plant.") + field.key + " must be finite and >= 0; got -0.5");
     p.*field.member = std::numeric_limits<double>::quiet_NaN();
     EXPECT_EQ(validation_error(p),
-              std::string("plant.") + field.key + " must be non-negative and finite; got nan");
+              std::string("plant.") + field.key + " must be finite and >= 0; got nan");
   }
 }
 
@@ -137,7 +137,7 @@ TEST(RobotParams, RigidBodiesNeedTheTriangleInequalityOfInertias) {
 TEST(RobotParams, RigidBodyValidationAlsoChecksEveryKey) {
   RobotParams p;
   p.body_mass = -1.0;
-  EXPECT_EQ(validation_error(p, true), "plant.body_mass must be positive and finite; got -1");
+  EXPECT_EQ(validation_error(p, true), "plant.body_mass must be finite and > 0; got -1");
 }
 
 }  // namespace

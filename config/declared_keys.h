@@ -1,0 +1,172 @@
+#pragma once
+// The config's keys made from params structs' declarations (framework/parameters.h), and the
+// structs read back from a config. The built-in tree (config/parameters.h) is made so; a
+// user's own section is too, once registered:
+//
+//   struct DlqrParams {
+//     double q_theta = 100.0;
+//     template <class Archive> void describe(Archive& a) {
+//       a.number("q_theta", q_theta, "state weight on the pitch", cbbg::kNonNegative);
+//     }
+//   };
+//   cbbg::config::register_section<DlqrParams>("dlqr");   // before any Config is made
+//   ... --set dlqr.q_theta=50, --grid dlqr.q_theta=10,100, config.yaml, `cbbg list` ...
+//   const DlqrParams dlqr = cbbg::config::read_section<DlqrParams>(config, "dlqr");
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "config/config.h"
+#include "framework/parameters.h"
+
+namespace cbbg::config {
+
+// The archive that turns declarations into the config's keys.
+class KeyCollector {
+ public:
+  KeyCollector(std::string prefix, std::vector<KeySpec>& keys)
+      : prefix_(std::move(prefix)), keys_(keys) {}
+
+  void number(std::string_view key, double& value, std::string_view meaning, const Bounds& b) {
+    add(key, Kind::kNumber, value, meaning, {}, b, 0);
+  }
+  void integer(std::string_view key, long long& value, std::string_view meaning, const Bounds& b) {
+    add(key, Kind::kInteger, value, meaning, {}, b, 0);
+  }
+  void numbers(std::string_view key, std::vector<double>& values, std::string_view meaning,
+               const Bounds& b) {
+    add(key, Kind::kNumbers, values, meaning, {}, b, 0);
+  }
+  template <std::size_t N>
+  void numbers(std::string_view key, std::array<double, N>& values, std::string_view meaning,
+               const Bounds& b) {
+    add(key, Kind::kNumbers, std::vector<double>(values.begin(), values.end()), meaning, {}, b,
+        static_cast<int>(N));
+  }
+  void text(std::string_view key, std::string& value, std::string_view meaning,
+            std::vector<std::string> words) {
+    add(key, Kind::kText, value, meaning, std::move(words), {}, 0);
+  }
+  template <typename T>
+  void choice(std::string_view key, T& value, std::string_view meaning, const Choices<T>& choices) {
+    std::string word;
+    std::vector<std::string> words;
+    for (const Choice<T>& choice : choices) {
+      words.emplace_back(choice.word);
+      if (choice.value == value) word = choice.word;
+    }
+    add(key, Kind::kText, word, meaning, std::move(words), {}, 0);
+  }
+  void names(std::string_view key, std::vector<std::string>& values, std::string_view meaning,
+             std::vector<std::string> words) {
+    add(key, Kind::kNames, values, meaning, std::move(words), {}, 0);
+  }
+  void annealing(std::string_view key, std::vector<AnnealingStep>& steps,
+                 std::string_view meaning) {
+    add(key, Kind::kAnnealing, steps, meaning, {}, {}, 0);
+  }
+  template <typename Params>
+  void section(std::string_view name, Params& params) {
+    KeyCollector inner(prefix_ + std::string(name) + ".", keys_);
+    params.describe(inner);
+  }
+
+ private:
+  void add(std::string_view key, Kind kind, Value value, std::string_view meaning,
+           std::vector<std::string> words, const Bounds& b, int size) {
+    keys_.push_back(KeySpec{prefix_ + std::string(key), kind, std::move(value),
+                            std::string(meaning), std::move(words), b.min, b.max, b.min_open,
+                            b.max_open, size});
+  }
+
+  std::string prefix_;
+  std::vector<KeySpec>& keys_;
+};
+
+// The archive that fills a params struct from a config, whose values were checked against
+// the same declarations as they arrived.
+class KeyReader {
+ public:
+  KeyReader(const Config& config, std::string prefix)
+      : config_(config), prefix_(std::move(prefix)) {}
+
+  void number(std::string_view key, double& value, std::string_view, const Bounds&) {
+    value = config_.number(path(key));
+  }
+  void integer(std::string_view key, long long& value, std::string_view, const Bounds&) {
+    value = config_.integer(path(key));
+  }
+  void numbers(std::string_view key, std::vector<double>& values, std::string_view,
+               const Bounds&) {
+    values = config_.numbers(path(key));
+  }
+  template <std::size_t N>
+  void numbers(std::string_view key, std::array<double, N>& values, std::string_view,
+               const Bounds&) {
+    const std::vector<double>& read = config_.numbers(path(key));
+    for (std::size_t i = 0; i < N && i < read.size(); ++i) values[i] = read[i];
+  }
+  void text(std::string_view key, std::string& value, std::string_view,
+            const std::vector<std::string>&) {
+    value = config_.text(path(key));
+  }
+  template <typename T>
+  void choice(std::string_view key, T& value, std::string_view, const Choices<T>& choices) {
+    const std::string& word = config_.text(path(key));
+    for (const Choice<T>& choice : choices) {
+      if (word == choice.word) value = choice.value;
+    }
+  }
+  void names(std::string_view key, std::vector<std::string>& values, std::string_view,
+             const std::vector<std::string>&) {
+    values = config_.names(path(key));
+  }
+  void annealing(std::string_view key, std::vector<AnnealingStep>& steps, std::string_view) {
+    steps = config_.annealing(path(key));
+  }
+  template <typename Params>
+  void section(std::string_view name, Params& params) {
+    KeyReader inner(config_, prefix_ + std::string(name) + ".");
+    params.describe(inner);
+  }
+
+ private:
+  std::string path(std::string_view key) const { return prefix_ + std::string(key); }
+
+  const Config& config_;
+  std::string prefix_;
+};
+
+// The keys `params` declares under `section` ("" for none), its values as their defaults.
+template <typename Params>
+std::vector<KeySpec> declared_keys(Params params, std::string_view section) {
+  std::vector<KeySpec> keys;
+  KeyCollector collector(section.empty() ? std::string() : std::string(section) + ".", keys);
+  params.describe(collector);
+  return keys;
+}
+
+// Adds keys to the schema after the built-in ones. Throws std::invalid_argument naming a key
+// that is there already. Register before making any Config: a Config holds the keys that
+// existed when it was made, and the defaults of the others.
+void register_keys(std::vector<KeySpec> keys);
+
+// A user's section: its struct's declared keys under `name`.
+template <typename Params>
+void register_section(std::string_view name) {
+  register_keys(declared_keys(Params{}, name));
+}
+
+// The section `name` of `config` as its struct.
+template <typename Params>
+Params read_section(const Config& config, std::string_view name) {
+  Params params;
+  KeyReader reader(config, std::string(name) + ".");
+  params.describe(reader);
+  return params;
+}
+
+}  // namespace cbbg::config

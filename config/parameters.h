@@ -1,0 +1,219 @@
+#pragma once
+// The parameter tree of a cbbg run: every section, in the order config.yaml and `cbbg list`
+// show them. Each section's struct declares its own keys once (framework/parameters.h); the
+// blocks' and the plant's are theirs, the run's and the protocols' are here. The config layer
+// makes its keys from these declarations (config/config.h) and reads them back into the
+// typed tree (read_parameters).
+
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "blocks/actor.h"
+#include "blocks/boltzmann_sampler.h"
+#include "blocks/critic.h"
+#include "blocks/lqr_supervisor.h"
+#include "blocks/normaliser.h"
+#include "blocks/omega_schedule.h"
+#include "blocks/pd_supervisor.h"
+#include "blocks/rbf_features.h"
+#include "blocks/reward.h"
+#include "blocks/sensors.h"
+#include "blocks/torque_push.h"
+#include "blocks/tropism.h"
+#include "config/config.h"
+#include "framework/parameters.h"
+#include "plant/robot_params.h"
+
+namespace cbbg::config {
+
+// exp1, exp2, exp3, then the diagram names: what `experiment` may be.
+std::vector<std::string> experiment_names();
+
+// What runs, how often: the keys without a section.
+struct RunParams {
+  std::string experiment = "exp1";
+  std::vector<std::string> arms{"cbbg", "bg_only"};
+  long long seeds = 20;
+  long long seed = 1;
+  long long max_trials = 100;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.text("experiment", experiment,
+           "exp1 | exp2 | exp3 (skill acquisition) | a diagram name (one arm, exp1's protocol)",
+           experiment_names());
+    a.names("arms", arms, "diagrams compared in one run (exp1, exp3)", diagram_names());
+    a.integer("seeds", seeds, "independent runs per arm; run k uses root seed + k",
+              interval(1, kMaxSeeds));
+    a.integer("seed", seed, "root seed", interval(0, kMaxSeed));
+    a.integer("max_trials", max_trials,
+              "exp1: give up after this many trials without a success", interval(1, kMaxTrials));
+  }
+};
+
+// plant.*: which plant, and the robot's physical parameters.
+struct PlantSection {
+  std::string kind = "simbody";
+  plant::RobotParams robot;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.text("kind", kind, "simbody (3-D multibody, reference) | analytic (fast)",
+           {"simbody", "analytic"});
+    robot.describe(a);
+  }
+};
+
+// trial.*: how every trial starts, is sampled, fails and succeeds.
+struct TrialParams {
+  double theta0 = plant::kDefaultInitialPitch;
+  double duration = 20.0;
+  double failure_angle = 0.5236;
+  double period = 0.01;
+  double settle_time = 5.0;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("theta0", theta0, "initial pitch of every trial, rad", kFinite);
+    a.number("duration", duration, "a trial that lasts this long succeeds, s", kPositive);
+    a.number("failure_angle", failure_angle, "|theta_b| beyond this fails the trial, rad",
+             interval(0.0, std::numbers::pi / 2.0, kOpen, kClosed));
+    a.number("period", period, "sampling period Ts of the controller, s", kPositive);
+    a.number("settle_time", settle_time,
+             "the oscillation figures of trials.csv (exp2) start here, s", kNonNegative);
+  }
+};
+
+// supervisor.*: which supervisor, and each one's parameters.
+struct SupervisorSection {
+  std::string kind = "pd";
+  blocks::PdSupervisorParams pd;
+  blocks::LqrSupervisorParams lqr;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.text("kind", kind, "pd (docs/model.md §2.4) | lqr (Riccati gains of the linearised robot)",
+           {"pd", "lqr"});
+    pd.describe(a);
+    lqr.describe(a);
+  }
+};
+
+struct Exp2Params {
+  long long trials = 30;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.integer("trials", trials, "exp2: trials in all, the CB-coordinated one included",
+              interval(2, kMaxTrials));
+  }
+};
+
+struct LogParams {
+  long long decimation = 1;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.integer("decimation", decimation, "steps.csv keeps every n-th tick; 0 writes no steps.csv",
+              kNonNegative);
+  }
+};
+
+// evaluation.*: the angles the learnt actor is evaluated from, and the changed robot it may
+// be evaluated on (experiments/evaluation_conditions.h).
+struct EvaluationParams {
+  std::vector<double> angles{0.05, 0.1, 0.15, 0.2, 0.25};
+  double body_mass_scale = 1.0;
+  double com_height_scale = 1.0;
+  double noise_std = 0.0;
+  double push_torque = 0.0;
+  double push_start = 5.0;
+  double push_duration = 0.2;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.numbers("angles", angles, "initial pitches the learnt actor is evaluated from, rad",
+              kFinite);
+    a.number("body_mass_scale", body_mass_scale,
+             "evaluation only: body mass and inertias times this (training stays nominal)",
+             kPositive);
+    a.number("com_height_scale", com_height_scale,
+             "evaluation only: centre-of-mass height times this (training stays nominal)",
+             kPositive);
+    a.number("noise_std", noise_std,
+             "evaluation only: Gaussian noise std added to the measured pitch (rad) and pitch "
+             "rate (rad/s), on top of sensors.noise_std",
+             kNonNegative);
+    a.number("push_torque", push_torque,
+             "evaluation only: a push of this many N m on each wheel; 0 = push.* as set",
+             kFinite);
+    a.number("push_start", push_start, "evaluation only: when that push begins, s",
+             kNonNegative);
+    a.number("push_duration", push_duration, "evaluation only: how long that push lasts, s",
+             kPositive);
+  }
+};
+
+struct Exp3Params {
+  std::vector<double> angles{0.05, 0.1744, 0.25};
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.numbers("angles", angles, "exp3: the learnt actor alone must balance from each of these, rad",
+              kFinite);
+  }
+};
+
+// The whole tree, in the order of config.yaml.
+struct Parameters {
+  RunParams run;
+  PlantSection plant;
+  TrialParams trial;
+  blocks::NormaliserParams normaliser;
+  blocks::RbfParams rbf;
+  SupervisorSection supervisor;
+  blocks::CriticParams critic;
+  blocks::ActorParams actor;
+  blocks::TropismParams tropism;
+  blocks::SamplerParams sampler;
+  blocks::OmegaParams omega;
+  blocks::RewardParams reward;
+  blocks::SensorsParams sensors;
+  blocks::PushParams push;
+  std::vector<AnnealingStep> annealing{{1, 10}, {11, 5}, {16, 1}, {21, 0.5}, {23, 0.1}};
+  Exp2Params exp2;
+  LogParams log;
+  EvaluationParams evaluation;
+  Exp3Params exp3;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    run.describe(a);
+    a.section("plant", plant);
+    a.section("trial", trial);
+    a.section(blocks::NormaliserParams::kSection, normaliser);
+    a.section(blocks::RbfParams::kSection, rbf);
+    a.section("supervisor", supervisor);
+    a.section(blocks::CriticParams::kSection, critic);
+    a.section(blocks::ActorParams::kSection, actor);
+    a.section(blocks::TropismParams::kSection, tropism);
+    a.section(blocks::SamplerParams::kSection, sampler);
+    a.section(blocks::OmegaParams::kSection, omega);
+    a.section(blocks::RewardParams::kSection, reward);
+    a.section(blocks::SensorsParams::kSection, sensors);
+    a.section(blocks::PushParams::kSection, push);
+    a.annealing("annealing", annealing,
+                "exp2: k1 from a trial on (trial 1 is the CB-coordinated one)");
+    a.section("exp2", exp2);
+    a.section("log", log);
+    a.section("evaluation", evaluation);
+    a.section("exp3", exp3);
+  }
+};
+
+// The typed tree of `config`, whose every value was checked against its declaration as it
+// arrived. Cross-key rules and a block's own invariants are diagrams::validate_all's.
+Parameters read_parameters(const Config& config);
+
+}  // namespace cbbg::config
