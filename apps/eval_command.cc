@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "config/config.h"
-#include "diagrams/params_from_config.h"
+#include "diagrams/validated_parameters.h"
 #include "diagrams/presets.h"
 #include "experiments/evaluation_conditions.h"
 #include "experiments/policy_evaluation.h"
@@ -98,7 +98,7 @@ config::Config resolve(const EvalOptions& options) {
   if (config.numbers("evaluation.angles").empty()) {
     throw config::ConfigError("evaluation.angles is empty: give --angles or set some");
   }
-  diagrams::validate_all(config);
+  diagrams::validated_parameters(config);
   experiments::check_evaluation_conditions(config);
   return experiments::evaluation_config(config);
 }

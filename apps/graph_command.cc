@@ -5,7 +5,7 @@
 #include "apps/commands.h"
 #include "apps/errors.h"
 #include "apps/figures.h"
-#include "diagrams/params_from_config.h"
+#include "diagrams/validated_parameters.h"
 #include "diagrams/presets.h"
 #include "experiments/experiments.h"
 #include "store/output_guard.h"
@@ -18,7 +18,7 @@ int graph_command(const GraphOptions& options) {
   try {
     if (!options.config_file.empty()) config.merge_file(options.config_file);
     for (const auto& assignment : options.sets) config.set(assignment);
-    diagrams::validate_all(config);
+    diagrams::validated_parameters(config);
     if (diagram.empty()) diagram = experiments::experiment_arms(config).front();
     try {
       diagrams::preset(diagram);

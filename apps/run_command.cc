@@ -12,7 +12,7 @@
 #include "apps/errors.h"
 #include "apps/figures.h"
 #include "apps/progress.h"
-#include "diagrams/params_from_config.h"
+#include "diagrams/validated_parameters.h"
 #include "diagrams/presets.h"
 #include "experiments/evaluation_conditions.h"
 #include "experiments/experiments.h"
@@ -38,7 +38,7 @@ config::Config resolve(const RunOptions& options) {
   }
   if (options.seeds) config.set("seeds=" + *options.seeds, "--seeds " + *options.seeds);
   if (options.seed) config.set("seed=" + *options.seed, "--seed " + *options.seed);
-  diagrams::validate_all(config);
+  diagrams::validated_parameters(config);
   experiments::check_evaluation_conditions(config);
   return config;
 }
@@ -146,7 +146,7 @@ PreparedRun prepare(const RunOptions& options) {
     run.directory = store::RunDirectory::resume(*options.resume);
     run.config = run.directory->config();
     if (run.directory->published()) return run;
-    diagrams::validate_all(run.config);
+    diagrams::validated_parameters(run.config);
     experiments::check_evaluation_conditions(run.config);
   } else {
     run.config = resolve(options);

@@ -13,7 +13,7 @@
 #include "apps/errors.h"
 #include "apps/figures.h"
 #include "config/sweep.h"
-#include "diagrams/params_from_config.h"
+#include "diagrams/validated_parameters.h"
 #include "experiments/evaluation_conditions.h"
 #include "experiments/experiments.h"
 #include "store/files.h"
@@ -48,7 +48,7 @@ SweepPlan plan(config::Config base, config::Sweep sweep) {
   for (std::size_t p = 0; p < result.sweep.points(); ++p) {
     result.points.push_back(result.sweep.config(result.base, p));
     try {
-      diagrams::validate_all(result.points.back());
+      diagrams::validated_parameters(result.points.back());
       experiments::check_evaluation_conditions(result.points.back());
     } catch (const config::ConfigError& error) {
       throw config::ConfigError("grid point " + store::point_name(p, result.sweep.points()) + ": " +

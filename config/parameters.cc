@@ -1,8 +1,11 @@
 #include "config/parameters.h"
 
+#include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "config/declared_keys.h"
+#include "framework/number_text.h"
 
 namespace cbbg::config {
 namespace {
@@ -38,6 +41,28 @@ void register_keys(std::vector<KeySpec> added) {
     }
   }
   for (KeySpec& key : added) keys().push_back(std::move(key));
+}
+
+void Parameters::check_across_sections() const {
+  if (trial.duration < trial.period) {
+    throw ConfigError("trial.duration (" + format_number(trial.duration) +
+                      " s) must be at least one trial.period (" + format_number(trial.period) +
+                      " s)");
+  }
+  auto inside = [this](const std::string& key, double angle) {
+    if (!(std::abs(angle) < trial.failure_angle)) {
+      throw ConfigError(key + " (" + format_number(angle) +
+                        " rad) must lie inside trial.failure_angle (" +
+                        format_number(trial.failure_angle) + " rad): a trial from there fails at once");
+    }
+  };
+  inside("trial.theta0", trial.theta0);
+  for (const auto& [key, angles] : {std::pair{"evaluation.angles", &evaluation.angles},
+                                    std::pair{"exp3.angles", &exp3.angles}}) {
+    for (std::size_t i = 0; i < angles->size(); ++i) {
+      inside(std::string(key) + "[" + std::to_string(i) + "]", (*angles)[i]);
+    }
+  }
 }
 
 Parameters read_parameters(const Config& config) {

@@ -187,6 +187,11 @@ struct Parameters {
   EvaluationParams evaluation;
   Exp3Params exp3;
 
+  // The rules across sections: trial.duration >= trial.period; trial.theta0 and every
+  // evaluation.angles and exp3.angles entry strictly inside trial.failure_angle. Throws
+  // ConfigError naming both keys and their values.
+  void check_across_sections() const;
+
   template <class Archive>
   void describe(Archive& a) {
     run.describe(a);

@@ -8,7 +8,7 @@
 #include "blocks/normaliser.h"
 #include "blocks/pd_supervisor.h"
 #include "blocks/rbf_features.h"
-#include "diagrams/params_from_config.h"
+#include "config/parameters.h"
 #include "framework/diagram_builder.h"
 #include "framework/primitives/constant_source.h"
 
@@ -17,20 +17,20 @@ namespace {
 
 std::unique_ptr<Block> configured_supervisor(const std::string& name,
                                              const config::Config& config) {
-  if (config.text("supervisor.kind") == "lqr") {
-    return std::make_unique<blocks::LqrSupervisor>(name, robot_params(config),
-                                                   lqr_supervisor_params(config));
+  const config::Parameters p = config::read_parameters(config);
+  if (p.supervisor.kind == "lqr") {
+    return std::make_unique<blocks::LqrSupervisor>(name, p.plant.robot, p.supervisor.lqr);
   }
-  return std::make_unique<blocks::PdSupervisor>(name, pd_supervisor_params(config));
+  return std::make_unique<blocks::PdSupervisor>(name, p.supervisor.pd);
 }
 
 std::unique_ptr<Block> configured_normaliser(const std::string& name,
                                              const config::Config& config) {
-  return std::make_unique<blocks::Normaliser>(name, normaliser_params(config));
+  return std::make_unique<blocks::Normaliser>(name, config::read_parameters(config).normaliser);
 }
 
 std::unique_ptr<Block> configured_features(const std::string& name, const config::Config& config) {
-  return std::make_unique<blocks::RbfFeatures>(name, rbf_params(config));
+  return std::make_unique<blocks::RbfFeatures>(name, config::read_parameters(config).rbf);
 }
 
 // The slot's block: the user's where a factory is given, else the config's.
@@ -47,15 +47,16 @@ const OutputPort& constant(DiagramBuilder& builder, const std::string& name, dou
 
 BasalGangliaParams basal_ganglia_params(const config::Config& config,
                                         const ControllerOptions& options) {
+  const config::Parameters p = config::read_parameters(config);
   BasalGangliaParams params;
-  params.critic = critic_params(config);
-  params.actor = actor_params(config);
+  params.critic = p.critic;
+  params.actor = p.actor;
   if (options.actor_rule) params.actor.rule = *options.actor_rule;
   params.critic.frozen = params.actor.frozen = !options.learning;
-  params.tropism = tropism_params(config);
-  params.sampler = sampler_params(config);
-  params.entropy = entropy_params(config);
-  params.period = config.number("trial.period");
+  params.tropism = p.tropism;
+  params.sampler = p.sampler;
+  params.entropy = blocks::EntropyParams{p.sampler.k_b};
+  params.period = p.trial.period;
   params.exploration = options.exploration;
   return params;
 }
@@ -97,14 +98,17 @@ CbbgController::CbbgController(std::string name, const config::Config& config,
 void CbbgController::add_basal_ganglia(DiagramBuilder& builder, const config::Config& config,
                                        const ControllerOptions& options,
                                        const OutputPort& supervisor_action) {
-  const double period = config.number("trial.period");
+  const config::Parameters p = config::read_parameters(config);
+  const double period = p.trial.period;
+  blocks::OmegaParams omega_params = p.omega;
+  omega_params.mode = options.omega;
   const Block& normaliser =
       builder.add(fill_slot(options.slots.normaliser, configured_normaliser, "normaliser", config));
   auto& basal_ganglia = builder.emplace<BasalGanglia>(
       "basal_ganglia", fill_slot(options.slots.features, configured_features, "features", config),
       basal_ganglia_params(config, options));
   auto& omega =
-      builder.emplace<blocks::OmegaSchedule>("omega", omega_params(config, options.omega), period);
+      builder.emplace<blocks::OmegaSchedule>("omega", omega_params, period);
   auto& mixer = builder.emplace<blocks::Mixer>("mixer");
   basal_ganglia_ = &basal_ganglia;
 

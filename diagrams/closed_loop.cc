@@ -5,7 +5,7 @@
 #include "blocks/failure_detector.h"
 #include "blocks/reward.h"
 #include "blocks/sensors.h"
-#include "diagrams/params_from_config.h"
+#include "config/parameters.h"
 #include "framework/diagram_builder.h"
 #include "framework/primitives/multiplexer.h"
 #include "framework/primitives/selector.h"
@@ -18,12 +18,11 @@ namespace {
 
 std::unique_ptr<plant::RobotPlant> configured_plant(const std::string& name,
                                                     const config::Config& config) {
-  const plant::RobotParams params = robot_params(config);
-  const double theta0 = config.number("trial.theta0");
-  if (config.text("plant.kind") == "analytic") {
-    return std::make_unique<plant::AnalyticPlant>(name, params, theta0);
+  const config::Parameters p = config::read_parameters(config);
+  if (p.plant.kind == "analytic") {
+    return std::make_unique<plant::AnalyticPlant>(name, p.plant.robot, p.trial.theta0);
   }
-  return std::make_unique<plant::SimbodyPlant>(name, params, theta0);
+  return std::make_unique<plant::SimbodyPlant>(name, p.plant.robot, p.trial.theta0);
 }
 
 void check_plant_ports(const plant::RobotPlant& robot) {
@@ -41,16 +40,14 @@ void check_plant_ports(const plant::RobotPlant& robot) {
 }
 
 // The push of push.*, when push.torque is not zero.
-std::optional<blocks::PushParams> configured_push(const config::Config& config) {
-  const double torque = config.number("push.torque");
-  if (torque == 0.0) return std::nullopt;
-  return blocks::PushParams{config.number("push.start"), torque, config.number("push.duration")};
+std::optional<blocks::PushParams> configured_push(const config::Parameters& parameters) {
+  if (parameters.push.torque == 0.0) return std::nullopt;
+  return parameters.push;
 }
 
 // The action sampled every tick and held (zero-order hold), optionally pushed, to both wheels.
-void wire_actuation(DiagramBuilder& builder, const config::Config& config, const OutputPort& action,
+void wire_actuation(DiagramBuilder& builder, double period, const OutputPort& action,
                     const plant::RobotPlant& robot, const std::optional<blocks::PushParams>& push) {
-  const double period = config.number("trial.period");
   auto& hold = builder.emplace<ZeroOrderHold>("hold", 1, period);
   auto& wheel_torques = builder.emplace<Multiplexer>(
       "wheel_torques", std::vector<Multiplexer::Input>{{"left", 1}, {"right", 1}});
@@ -108,20 +105,22 @@ void ClosedLoop::start_trial(Context& context, double theta0) const {
 ClosedLoop build_closed_loop(std::string name, const config::Config& config,
                              std::unique_ptr<CbbgController> controller,
                              const ClosedLoopOptions& options) {
+  const config::Parameters p = config::read_parameters(config);
   ClosedLoop loop;
-  loop.accuracy = config.number("plant.accuracy");
-  loop.wheel_radius = config.number("plant.wheel_radius");
-  const double period = config.number("trial.period");
+  loop.accuracy = p.plant.robot.accuracy;
+  loop.wheel_radius = p.plant.robot.wheel_radius;
+  const double period = p.trial.period;
   DiagramBuilder builder(std::move(name));
   std::unique_ptr<plant::RobotPlant> made =
       options.plant ? options.plant("plant", config) : configured_plant("plant", config);
   if (!made) throw std::invalid_argument("the plant factory returned null");
   check_plant_ports(*made);
   const plant::RobotPlant& robot = builder.add(std::move(made));
-  auto& sensors = builder.emplace<blocks::Sensors>("sensors", sensors_params(config), period);
+  auto& sensors = builder.emplace<blocks::Sensors>("sensors", p.sensors, period);
   auto& failure =
-      builder.emplace<blocks::FailureDetector>("failure", failure_params(config), period);
-  auto& reward = builder.emplace<blocks::Reward>("reward", reward_params(config), period);
+      builder.emplace<blocks::FailureDetector>(
+          "failure", blocks::FailureDetectorParams{p.trial.failure_angle}, period);
+  auto& reward = builder.emplace<blocks::Reward>("reward", p.reward, period);
   const CbbgController& brain = builder.add(std::move(controller));
   loop.plant = &robot;
   loop.learner = learner_of(brain);
@@ -134,8 +133,8 @@ ClosedLoop build_closed_loop(std::string name, const config::Config& config,
   builder.connect(measured, brain.measured());
   if (brain.reward() != nullptr) builder.connect(reward.output_port("reward"), *brain.reward());
   if (brain.failed() != nullptr) builder.connect(failure.output_port("failed"), *brain.failed());
-  wire_actuation(builder, config, brain.action(), robot,
-                 options.push ? options.push : configured_push(config));
+  wire_actuation(builder, period, brain.action(), robot,
+                 options.push ? options.push : configured_push(p));
   loop.telemetry = &wire_telemetry(builder, measured, brain, reward.output_port("reward"), robot);
   loop.diagram = builder.build();
   return loop;

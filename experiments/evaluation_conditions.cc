@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "blocks/measured_signals.h"
-#include "diagrams/params_from_config.h"
+#include "diagrams/validated_parameters.h"
 #include "framework/number_text.h"
 
 namespace cbbg::experiments {
@@ -65,7 +65,7 @@ config::Config evaluation_config(const config::Config& training) {
 void check_evaluation_conditions(const config::Config& training) {
   const config::Config evaluated = evaluation_config(training);
   try {
-    diagrams::validate_all(evaluated);
+    diagrams::validated_parameters(evaluated);
   } catch (const config::ConfigError& error) {
     throw config::ConfigError("the evaluated robot (" + describe_conditions(training) +
                               ") is invalid: " + error.what());

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "diagrams/params_from_config.h"
+#include "config/parameters.h"
 
 namespace cbbg::experiments {
 
@@ -29,10 +29,10 @@ LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& co
                                 "' has no critic and actor: it learns no weights");
   }
   LearntWeights weights;
-  const blocks::RbfParams rbf = diagrams::rbf_params(config);
-  weights.centres = rbf.centres;
-  weights.width = rbf.width;
-  weights.normaliser = diagrams::normaliser_params(config);
+  const config::Parameters parameters = config::read_parameters(config);
+  weights.centres = parameters.rbf.centres;
+  weights.width = parameters.rbf.width;
+  weights.normaliser = parameters.normaliser;
   weights.actor = loop.learner.actor->weights(context);
   weights.critic = loop.learner.critic->weights(context);
   weights.provenance = provenance;

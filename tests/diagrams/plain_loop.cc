@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 #include <boost/numeric/odeint.hpp>
 
-#include "diagrams/params_from_config.h"
+#include "diagrams/validated_parameters.h"
 #include "framework/random.h"
 #include "plant/robot_dynamics.h"
 #include "plant/robot_params.h"
@@ -142,11 +142,11 @@ PlainLoop::PlainLoop(const config::Config& config, std::uint64_t root_seed, std:
   if (config.number("push.torque") != 0.0) {
     throw std::invalid_argument("PlainLoop has no push: push.torque must be 0");
   }
-  diagrams::validate_all(config);
+  diagrams::validated_parameters(config);
 
   state_ = std::make_unique<State>(config, root_seed);
   State& s = *state_;
-  s.robot = diagrams::robot_params(config);
+  s.robot = config::read_parameters(config).plant.robot;
   s.period = config.number("trial.period");
   s.failure_angle = config.number("trial.failure_angle");
   s.reward_a1 = config.number("reward.a1");

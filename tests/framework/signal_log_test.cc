@@ -112,7 +112,7 @@ TEST(SignalLog, RejectsBadPeriodsAndPortsOfOtherDiagrams) {
     ADD_FAILURE();
   } catch (const std::invalid_argument& error) {
     EXPECT_STREQ(error.what(),
-                 "log of 'top/counter.y': the period must be finite and > 0; got 0.000000");
+                 "log of 'top/counter.y': the period must be positive and finite; got 0.000000");
   }
   try {
     simulator.add_log(other.output_port("y"), 0.1);

@@ -1,0 +1,48 @@
+#include "diagrams/validated_parameters.h"
+
+#include <stdexcept>
+
+#include "blocks/failure_detector.h"
+#include "blocks/lqr_supervisor.h"
+
+namespace cbbg::diagrams {
+namespace {
+
+// What the blocks check of their own params, beyond the ranges every value was read with.
+void check_blocks(const config::Parameters& p) {
+  if (p.plant.kind == "simbody") {
+    p.plant.robot.validate_rigid_bodies();  // a multibody model needs a rigid body's inertias
+  } else {
+    p.plant.robot.validate();
+  }
+  p.sensors.validate();
+  p.normaliser.validate();
+  p.rbf.validate();
+  p.supervisor.pd.validate();
+  p.supervisor.lqr.validate();
+  // Weights without a stabilising gain show only when the gain is computed.
+  if (p.supervisor.kind == "lqr") blocks::LqrSupervisor("supervisor", p.plant.robot, p.supervisor.lqr);
+  p.critic.validate();
+  p.actor.validate();
+  p.tropism.validate();
+  p.sampler.validate();
+  p.omega.validate();
+  p.reward.validate();
+  p.push.validate();
+  blocks::FailureDetectorParams{p.trial.failure_angle}.validate();
+}
+
+}  // namespace
+
+config::Parameters validated_parameters(const config::Config& config) {
+  const config::Parameters parameters = config::read_parameters(config);
+  try {
+    check_blocks(parameters);
+  } catch (const std::invalid_argument& error) {
+    throw config::ConfigError(error.what());
+  }
+  parameters.check_across_sections();
+  return parameters;
+}
+
+}  // namespace cbbg::diagrams
