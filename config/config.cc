@@ -383,6 +383,14 @@ void Config::set(std::string_view assignment, std::string source) {
   values_ = std::move(merged);
 }
 
+void Config::assign(std::string_view key, Value value) {
+  const KeySpec* spec = find_spec(key);
+  if (spec == nullptr || spec->default_value.index() != value.index()) {
+    throw std::logic_error("config key '" + std::string(key) + "' does not take this value");
+  }
+  values_[std::string(key)] = std::move(value);
+}
+
 const Value& Config::value(std::string_view key) const {
   const auto found = values_.find(key);
   if (found != values_.end()) return found->second;

@@ -75,6 +75,9 @@ class Config {
   // Applies one "key.path=value" override (value in YAML syntax: 3, [1, 2], {a: 1}).
   // Errors start with `source`, by default "--set key.path=value".
   void set(std::string_view assignment, std::string source = {});
+  // Sets a registered key to a value of its kind, with no text in between; the caller has
+  // checked it against its declaration (write_parameters does).
+  void assign(std::string_view key, Value value);
 
   double number(std::string_view key) const;
   long long integer(std::string_view key) const;

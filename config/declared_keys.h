@@ -140,6 +140,56 @@ class KeyReader {
   std::string prefix_;
 };
 
+// The archive that writes a params struct into a config, value by value.
+class KeyWriter {
+ public:
+  KeyWriter(Config& config, std::string prefix) : config_(config), prefix_(std::move(prefix)) {}
+
+  void number(std::string_view key, double& value, std::string_view, const Bounds&) {
+    config_.assign(path(key), value);
+  }
+  void integer(std::string_view key, long long& value, std::string_view, const Bounds&) {
+    config_.assign(path(key), value);
+  }
+  void numbers(std::string_view key, std::vector<double>& values, std::string_view,
+               const Bounds&) {
+    config_.assign(path(key), values);
+  }
+  template <std::size_t N>
+  void numbers(std::string_view key, std::array<double, N>& values, std::string_view,
+               const Bounds&) {
+    config_.assign(path(key), std::vector<double>(values.begin(), values.end()));
+  }
+  void text(std::string_view key, std::string& value, std::string_view,
+            const std::vector<std::string>&) {
+    config_.assign(path(key), value);
+  }
+  template <typename T>
+  void choice(std::string_view key, T& value, std::string_view, const Choices<T>& choices) {
+    for (const Choice<T>& choice : choices) {
+      if (choice.value == value) config_.assign(path(key), std::string(choice.word));
+    }
+  }
+  void names(std::string_view key, std::vector<std::string>& values, std::string_view,
+             const std::vector<std::string>&) {
+    config_.assign(path(key), values);
+  }
+  void annealing(std::string_view key, std::vector<AnnealingStep>& steps, std::string_view) {
+    config_.assign(path(key), steps);
+  }
+  template <typename Params>
+  void section(std::string_view name, Params& params) {
+    KeyWriter inner(config_, prefix_ + std::string(name) + ".");
+    params.describe(inner);
+  }
+
+ private:
+  std::string path(std::string_view key) const { return prefix_ + std::string(key); }
+
+  Config& config_;
+  std::string prefix_;
+};
+
 // The keys `params` declares under `section` ("" for none), its values as their defaults.
 template <typename Params>
 std::vector<KeySpec> declared_keys(Params params, std::string_view section) {

@@ -65,6 +65,17 @@ void Parameters::check_across_sections() const {
   }
 }
 
+void write_parameters(const Parameters& parameters, Config& config) {
+  try {
+    check_declared(parameters, "");
+  } catch (const std::invalid_argument& error) {
+    throw ConfigError(error.what());
+  }
+  Parameters copy = parameters;
+  KeyWriter writer(config, "");
+  copy.describe(writer);
+}
+
 Parameters read_parameters(const Config& config) {
   Parameters parameters;
   KeyReader reader(config, "");

@@ -220,5 +220,8 @@ struct Parameters {
 // The typed tree of `config`, whose every value was checked against its declaration as it
 // arrived. Cross-key rules and a block's own invariants are diagrams::validate_all's.
 Parameters read_parameters(const Config& config);
+// Writes `parameters` into `config` (its other sections, a user's, stay). Throws ConfigError
+// naming the first value outside its declaration.
+void write_parameters(const Parameters& parameters, Config& config);
 
 }  // namespace cbbg::config

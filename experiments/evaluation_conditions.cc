@@ -5,60 +5,56 @@
 #include <vector>
 
 #include "blocks/measured_signals.h"
+#include "config/parameters.h"
 #include "diagrams/validated_parameters.h"
 #include "framework/number_text.h"
 
 namespace cbbg::experiments {
 namespace {
 
-void scale(config::Config& config, const std::string& key, const char* scale_key) {
-  const double factor = config.number(scale_key);
-  const double scaled = config.number(key) * factor;
-  if (!std::isfinite(scaled) || scaled <= 0.0) {
+// `value` times the factor of `scale_key`, refused unless it is a finite number > 0.
+double scaled(double value, double factor, const char* key, const char* scale_key) {
+  const double result = value * factor;
+  if (!std::isfinite(result) || result <= 0.0) {
     throw config::ConfigError(std::string(scale_key) + " (" + format_number(factor) + ") makes " +
-                              key + " " + format_number(scaled) +
+                              key + " " + format_number(result) +
                               "; the scaled value must be a finite number > 0");
   }
-  config.set(key + "=" + format_number(scaled), scale_key);
+  return result;
 }
 
-void add_pitch_noise(config::Config& config, double std) {
-  std::vector<double> noise = config.numbers("sensors.noise_std");
-  for (const int signal : {blocks::kMeasuredThetaB, blocks::kMeasuredThetaBDot}) {
-    noise[signal] = std::hypot(noise[signal], std);
-  }
-  std::string list;
-  for (std::size_t i = 0; i < noise.size(); ++i) {
-    list += i == 0 ? "[" : ", ";
-    list += format_number(noise[i]);
-  }
-  list += "]";
-  config.set("sensors.noise_std=" + list, "evaluation");
+void scale_body(plant::RobotParams& robot, double factor) {
+  constexpr const char* kKey = "evaluation.body_mass_scale";
+  robot.body_mass = scaled(robot.body_mass, factor, "plant.body_mass", kKey);
+  robot.body_pitch_inertia =
+      scaled(robot.body_pitch_inertia, factor, "plant.body_pitch_inertia", kKey);
+  robot.body_yaw_inertia = scaled(robot.body_yaw_inertia, factor, "plant.body_yaw_inertia", kKey);
+  robot.body_roll_inertia =
+      scaled(robot.body_roll_inertia, factor, "plant.body_roll_inertia", kKey);
 }
 
 }  // namespace
 
 config::Config evaluation_config(const config::Config& training) {
-  config::Config config = training;
-  const double mass = training.number("evaluation.body_mass_scale");
-  if (mass != 1.0) {
-    for (const char* key : {"plant.body_mass", "plant.body_pitch_inertia", "plant.body_yaw_inertia",
-                            "plant.body_roll_inertia"}) {
-      scale(config, key, "evaluation.body_mass_scale");
+  config::Parameters p = config::read_parameters(training);
+  const config::EvaluationParams& evaluation = p.evaluation;
+  if (evaluation.body_mass_scale != 1.0) scale_body(p.plant.robot, evaluation.body_mass_scale);
+  if (evaluation.com_height_scale != 1.0) {
+    p.plant.robot.com_height = scaled(p.plant.robot.com_height, evaluation.com_height_scale,
+                                      "plant.com_height", "evaluation.com_height_scale");
+  }
+  if (evaluation.noise_std != 0.0) {
+    for (const int signal : {blocks::kMeasuredThetaB, blocks::kMeasuredThetaBDot}) {
+      double& noise = p.sensors.noise_std[static_cast<std::size_t>(signal)];
+      noise = std::hypot(noise, evaluation.noise_std);
     }
   }
-  const double height = training.number("evaluation.com_height_scale");
-  if (height != 1.0) scale(config, "plant.com_height", "evaluation.com_height_scale");
-  const double noise = training.number("evaluation.noise_std");
-  if (noise != 0.0) add_pitch_noise(config, noise);
-  const double push = training.number("evaluation.push_torque");
-  if (push != 0.0) {
-    config.set("push.torque=" + format_number(push), "evaluation");
-    config.set("push.start=" + format_number(training.number("evaluation.push_start")),
-               "evaluation");
-    config.set("push.duration=" + format_number(training.number("evaluation.push_duration")),
-               "evaluation");
+  if (evaluation.push_torque != 0.0) {
+    p.push = blocks::PushParams{evaluation.push_start, evaluation.push_torque,
+                                evaluation.push_duration};
   }
+  config::Config config = training;
+  config::write_parameters(p, config);
   return config;
 }
 
@@ -73,22 +69,23 @@ void check_evaluation_conditions(const config::Config& training) {
 }
 
 std::string describe_conditions(const config::Config& config) {
+  const config::EvaluationParams evaluation = config::read_parameters(config).evaluation;
   std::string words;
   auto add = [&words](const std::string& part) {
     if (!words.empty()) words += ", ";
     words += part;
   };
-  const double mass = config.number("evaluation.body_mass_scale");
-  if (mass != 1.0) add("body mass x" + format_number(mass));
-  const double height = config.number("evaluation.com_height_scale");
-  if (height != 1.0) add("CoM height x" + format_number(height));
-  const double noise = config.number("evaluation.noise_std");
-  if (noise != 0.0) add("pitch noise " + format_number(noise));
-  const double push = config.number("evaluation.push_torque");
-  if (push != 0.0) {
-    add("push " + format_number(push) + " N m from " +
-        format_number(config.number("evaluation.push_start")) + " s for " +
-        format_number(config.number("evaluation.push_duration")) + " s");
+  if (evaluation.body_mass_scale != 1.0) {
+    add("body mass x" + format_number(evaluation.body_mass_scale));
+  }
+  if (evaluation.com_height_scale != 1.0) {
+    add("CoM height x" + format_number(evaluation.com_height_scale));
+  }
+  if (evaluation.noise_std != 0.0) add("pitch noise " + format_number(evaluation.noise_std));
+  if (evaluation.push_torque != 0.0) {
+    add("push " + format_number(evaluation.push_torque) + " N m from " +
+        format_number(evaluation.push_start) + " s for " +
+        format_number(evaluation.push_duration) + " s");
   }
   return words;
 }

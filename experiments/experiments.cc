@@ -2,11 +2,20 @@
 
 #include <stdexcept>
 
+#include "config/parameters.h"
 #include "experiments/evaluation_conditions.h"
 #include "experiments/policy_evaluation.h"
 
 namespace cbbg::experiments {
 namespace {
+
+// `config` with the root seed `seed`: an evaluation after a seed's training uses its streams.
+config::Config with_seed(config::Config config, long long seed) {
+  config::Parameters parameters = config::read_parameters(config);
+  parameters.run.seed = seed;
+  config::write_parameters(parameters, config);
+  return config;
+}
 
 // k1 of `trial` under the annealing schedule (steps sorted by from_trial, the first at 1).
 double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial) {
@@ -23,10 +32,9 @@ double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial
 // that learns nothing (pd_only: the supervisor alone) as it is.
 void evaluate_run(const config::Config& training, const diagrams::Arm& arm, bool learns,
                   SeedRun& run) {
-  config::Config config = evaluation_config(training);
-  config.set("seed=" + std::to_string(run.seed));
+  const config::Config config = with_seed(evaluation_config(training), run.seed);
   EvaluationSettings settings;
-  settings.angles = config.numbers("evaluation.angles");
+  settings.angles = config::read_parameters(config).evaluation.angles;
   PolicyEvaluation evaluation;
   if (!learns) {
     evaluation = evaluate_controller(config, arm.learner, settings);
@@ -39,7 +47,8 @@ void evaluate_run(const config::Config& training, const diagrams::Arm& arm, bool
 }
 
 WeightsProvenance provenance(const config::Config& config, const SeedRun& run) {
-  return {run.arm, run.seed, static_cast<long long>(run.trials.size()), config.text("plant.kind")};
+  return {run.arm, run.seed, static_cast<long long>(run.trials.size()),
+          config::read_parameters(config).plant.kind};
 }
 
 // Keeps what was learnt, unless it stopped being finite (a diverged learner): then the run
@@ -67,7 +76,8 @@ struct SeedLoop {
   SeedLoop(const config::Config& config, const diagrams::Arm& arm,
            const TelemetryOptions& telemetry, const LearntWeights* initial_weights, long long seed)
       : loop(arm.learner(config)),
-        runner(loop, static_cast<std::uint64_t>(seed), config.number("trial.period"), telemetry) {
+        runner(loop, static_cast<std::uint64_t>(seed), config::read_parameters(config).trial.period,
+               telemetry) {
     if (initial_weights != nullptr && loop.learner.learns()) {
       load_learnt_weights(loop, runner.context(), *initial_weights);
     }
@@ -78,8 +88,8 @@ struct SeedLoop {
 
 // The next trial of exp1's protocol (exp3's too): from trial.theta0, k1 fixed.
 TrialRecord next_trial(const config::Config& config, TrialRunner& runner, int trial) {
-  return {trial, config.number("tropism.k1"),
-          runner.run_trial(config.number("trial.theta0"), config.number("trial.duration"), trial),
+  const config::Parameters p = config::read_parameters(config);
+  return {trial, p.tropism.k1, runner.run_trial(p.trial.theta0, p.trial.duration, trial),
           std::nullopt};
 }
 
@@ -87,7 +97,8 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
                        const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                        SeedRun& run) {
   SeedLoop seed(config, arm, telemetry, initial_weights, run.seed);
-  for (int trial = 1; trial <= config.integer("max_trials"); ++trial) {
+  const long long max_trials = config::read_parameters(config).run.max_trials;
+  for (int trial = 1; trial <= max_trials; ++trial) {
     const TrialRecord record = next_trial(config, seed.runner, trial);
     run.trials.push_back(record);
     if (record.outcome.status == TrialStatus::kSuccess) {
@@ -103,9 +114,8 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
 // each of exp3.angles in turn (stopping at the first that fails).
 bool actor_alone_balances(const config::Config& config, const diagrams::Arm& arm,
                           const LearntWeights& weights, long long seed) {
-  config::Config evaluation_config = config;
-  evaluation_config.set("seed=" + std::to_string(seed));
-  for (const double angle : config.numbers("exp3.angles")) {
+  const config::Config evaluation_config = with_seed(config, seed);
+  for (const double angle : config::read_parameters(config).exp3.angles) {
     EvaluationSettings settings;
     settings.angles = {angle};
     const PolicyEvaluation evaluation =
@@ -125,7 +135,8 @@ void run_until_skill(const config::Config& config, const diagrams::Arm& arm,
   const diagrams::ClosedLoop& loop = seed.loop;
   const bool has_actor = loop.learner.learns() && static_cast<bool>(arm.policy);
   int failures = 0;
-  for (int trial = 1; trial <= config.integer("max_trials"); ++trial) {
+  const long long max_trials = config::read_parameters(config).run.max_trials;
+  for (int trial = 1; trial <= max_trials; ++trial) {
     TrialRecord record = next_trial(config, runner, trial);
     const bool success = record.outcome.status == TrialStatus::kSuccess;
     if (!success) ++failures;
@@ -162,10 +173,10 @@ void set_k1(const diagrams::ClosedLoop& loop, Context& context, double k1) {
 void run_annealing(const config::Config& config, const diagrams::Arm& coordinated,
                    const diagrams::Arm& operant, const TelemetryOptions& telemetry,
                    const LearntWeights* initial_weights, SeedRun& run) {
-  const double period = config.number("trial.period");
-  const double theta0 = config.number("trial.theta0");
-  const double duration = config.number("trial.duration");
-  const auto& schedule = config.annealing("annealing");
+  const config::Parameters p = config::read_parameters(config);
+  const double theta0 = p.trial.theta0;
+  const double duration = p.trial.duration;
+  const std::vector<config::AnnealingStep>& schedule = p.annealing;
   SeedLoop first(config, coordinated, telemetry, initial_weights, run.seed);
   set_k1(first.loop, first.runner.context(), annealed_k1(schedule, 1));
   run.trials.push_back(
@@ -173,9 +184,9 @@ void run_annealing(const config::Config& config, const diagrams::Arm& coordinate
 
   // The operant loop carries on: weights, the omega counter and the random streams.
   const diagrams::ClosedLoop later_loop = operant.learner(config);
-  TrialRunner later(later_loop, static_cast<std::uint64_t>(run.seed), period, telemetry);
+  TrialRunner later(later_loop, static_cast<std::uint64_t>(run.seed), p.trial.period, telemetry);
   later.context().continue_from(first.runner.context());
-  for (int trial = 2; trial <= config.integer("exp2.trials"); ++trial) {
+  for (int trial = 2; trial <= p.exp2.trials; ++trial) {
     const double k1 = annealed_k1(schedule, trial);
     set_k1(later_loop, later.context(), k1);
     run.trials.push_back({trial, k1, later.run_trial(theta0, duration, trial), std::nullopt});
@@ -249,14 +260,15 @@ ExperimentResults run_exp2(const config::Config& config, const diagrams::Arm& co
 }
 
 std::vector<std::string> experiment_arms(const config::Config& config) {
-  const std::string& experiment = config.text("experiment");
-  if (experiment == "exp1" || experiment == "exp3") return config.names("arms");
+  const config::RunParams run = config::read_parameters(config).run;
+  const std::string& experiment = run.experiment;
+  if (experiment == "exp1" || experiment == "exp3") return run.arms;
   if (experiment == "exp2") return {"cbbg"};
   return {experiment};
 }
 
 ExperimentResults run_experiment(const config::Config& config, const ExperimentOptions& options) {
-  const std::string& experiment = config.text("experiment");
+  const std::string experiment = config::read_parameters(config).run.experiment;
   if (experiment == "exp2") {
     return run_exp2(config, diagrams::preset_arm("cbbg"), diagrams::preset_arm("bg_only"), options);
   }

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "config/parameters.h"
+
 namespace cbbg::experiments {
 namespace {
 
@@ -18,11 +20,12 @@ void run_task(const config::Config& config, std::size_t task, const TaskBody& bo
               const TaskStorage* store, SeedRun& run) {
   std::ofstream file;
   std::ostringstream memory;
+  const config::Parameters parameters = config::read_parameters(config);
   TelemetryOptions telemetry{.keep_in_memory = false,
                              .steps = nullptr,
-                             .decimation = config.integer("log.decimation"),
+                             .decimation = parameters.log.decimation,
                              .row_prefix = run.arm + "," + std::to_string(run.seed) + ",",
-                             .settle_time = config.number("trial.settle_time")};
+                             .settle_time = parameters.trial.settle_time};
   if (telemetry.decimation > 0) {
     if (store != nullptr) {
       file.open(store->pending_steps_path(task), std::ios::binary | std::ios::trunc);
@@ -48,12 +51,11 @@ void run_task(const config::Config& config, std::size_t task, const TaskBody& bo
 
 ExperimentResults empty_results(const config::Config& config,
                                 const std::vector<std::string>& arms) {
+  const config::RunParams what = config::read_parameters(config).run;
   ExperimentResults results;
-  results.experiment = config.text("experiment");
+  results.experiment = what.experiment;
   results.arms = arms;
-  for (long long k = 0; k < config.integer("seeds"); ++k) {
-    results.seeds.push_back(config.integer("seed") + k);
-  }
+  for (long long k = 0; k < what.seeds; ++k) results.seeds.push_back(what.seed + k);
   for (const auto& arm : results.arms) {
     for (const long long seed : results.seeds) {
       SeedRun run;

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "config/parameters.h"
+
 namespace cbbg::experiments {
 
 void EvaluationSettings::validate() const {
@@ -37,12 +39,13 @@ PolicyEvaluation evaluate(const config::Config& config, const diagrams::ClosedLo
     throw std::invalid_argument("the closed loop '" + loop.diagram->name() +
                                 "' learns: evaluate its learnt policy instead");
   }
+  const config::Parameters parameters = config::read_parameters(config);
   PolicyEvaluation result;
-  result.first_seed = config.integer("seed");
+  result.first_seed = parameters.run.seed;
   TelemetryOptions telemetry;
   telemetry.keep_in_memory = false;
   TrialRunner runner(loop, static_cast<std::uint64_t>(result.first_seed),
-                     config.number("trial.period"), telemetry);
+                     parameters.trial.period, telemetry);
   Context& context = runner.context();
   for (const double theta0 : settings.angles) {
     AngleEvaluation angle;
@@ -52,7 +55,7 @@ PolicyEvaluation evaluate(const config::Config& config, const diagrams::ClosedLo
       context.reset_all_state();
       context.reseed(static_cast<std::uint64_t>(result.first_seed + repeat));
       if (weights != nullptr) load_learnt_weights(loop, context, *weights);
-      angle.runs.push_back(runner.run_trial(theta0, config.number("trial.duration")));
+      angle.runs.push_back(runner.run_trial(theta0, parameters.trial.duration));
     }
     result.angles.push_back(std::move(angle));
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "config/parameters.h"
 #include "framework/number_text.h"
 
 namespace cbbg::replay {
@@ -87,9 +88,10 @@ std::string robot_json(const ReplayRobot& robot) {
 }  // namespace
 
 ReplayRobot replay_robot(const config::Config& config) {
-  return {config.number("plant.wheel_radius"), config.number("plant.track_width"),
-          config.number("plant.com_height"), config.number("trial.failure_angle"),
-          config.number("plant.torque_limit")};
+  const config::Parameters p = config::read_parameters(config);
+  const plant::RobotParams& robot = p.plant.robot;
+  return {robot.wheel_radius, robot.track_width, robot.com_height, p.trial.failure_angle,
+          robot.torque_limit};
 }
 
 std::string replay_page(const std::string& page_template, const std::string& title,
@@ -127,7 +129,8 @@ std::string replay_of_run(const std::filesystem::path& run, const TrialChoice& c
   const std::vector<TrialEntry> chosen =
       choose_trials(read_trial_entries(run / "trials.csv"), choice);
   const std::vector<TrialLog> logs = read_trial_logs(run / "steps.csv", chosen);
-  const std::string title = config.text("experiment") + ", " + config.text("plant.kind") +
+  const config::Parameters parameters = config::read_parameters(config);
+  const std::string title = parameters.run.experiment + ", " + parameters.plant.kind +
                             " plant: " + (name.empty() ? run.filename().string() : name);
   return replay_page(page_template, title, replay_robot(config), logs);
 }

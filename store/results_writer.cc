@@ -1,5 +1,6 @@
 #include "store/results_writer.h"
 
+#include "config/parameters.h"
 #include "experiments/paired_statistics.h"
 #include "store/fault_point.h"
 #include "store/files.h"
@@ -135,7 +136,7 @@ std::string paired_json(const ExperimentResults& results, const config::Config& 
   }
   std::vector<std::string> figures{"failures_before_success"};
   if (results.experiment == "exp3") figures.push_back("trials_to_skill");
-  const auto max_trials = config.integer("max_trials");
+  const auto max_trials = config::read_parameters(config).run.max_trials;
   std::ostringstream json;
   json << "  \"paired\": [";
   const char* separator = "\n";
@@ -210,10 +211,11 @@ std::string evaluation_csv(const ExperimentResults& results) {
 }
 
 std::string summary_json(const ExperimentResults& results, const config::Config& config) {
+  const config::Parameters parameters = config::read_parameters(config);
   std::ostringstream json;
   json << "{\n  \"experiment\": \"" << results.experiment << "\",\n";
-  json << "  \"plant\": \"" << config.text("plant.kind") << "\",\n";
-  json << "  \"max_trials\": " << config.integer("max_trials") << ",\n";
+  json << "  \"plant\": \"" << parameters.plant.kind << "\",\n";
+  json << "  \"max_trials\": " << parameters.run.max_trials << ",\n";
   json << "  \"seeds\": [";
   for (std::size_t s = 0; s < results.seeds.size(); ++s)
     json << (s ? ", " : "") << results.seeds[s];
@@ -264,7 +266,7 @@ void write_result_files(const ExperimentResults& results, const config::Config& 
                    *run.weights);
     }
   }
-  if (config.integer("log.decimation") <= 0) return;
+  if (config::read_parameters(config).log.decimation <= 0) return;
   const std::filesystem::path path = directory / "steps.csv";
   std::ofstream steps(path, std::ios::binary | std::ios::trunc);
   steps << steps_csv_header();

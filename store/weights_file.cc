@@ -9,6 +9,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "config/parameters.h"
 #include "store/files.h"
 #include "store/output_guard.h"
 
@@ -364,16 +365,15 @@ LearntWeights load_weights(const std::filesystem::path& path) {
 
 void check_layout(const LearntWeights& weights, const config::Config& config,
                   const std::filesystem::path& source) {
-  const std::vector<double>& centres = config.numbers("rbf.centres");
-  const double width = config.number("rbf.width");
+  const config::Parameters parameters = config::read_parameters(config);
+  const std::vector<double>& centres = parameters.rbf.centres;
+  const double width = parameters.rbf.width;
   const std::string file = "weights file '" + source.string() + "' was made for ";
   if (weights.centres != centres || weights.width != width) {
     throw config::ConfigError(file + layout_text(weights.centres, weights.width) +
                               "; this config has " + layout_text(centres, width));
   }
-  const blocks::NormaliserParams normaliser{config.number("normaliser.scale_theta"),
-                                            config.number("normaliser.scale_dtheta"),
-                                            config.number("normaliser.saturation")};
+  const blocks::NormaliserParams& normaliser = parameters.normaliser;
   if (weights.normaliser.scale_theta != normaliser.scale_theta ||
       weights.normaliser.scale_dtheta != normaliser.scale_dtheta ||
       weights.normaliser.saturation != normaliser.saturation) {
