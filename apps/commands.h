@@ -57,6 +57,7 @@ int replay_command(const ReplayOptions& options);
 // A sweep's work directory: merged into one results directory, or its tasks counted.
 int merge_command(const std::filesystem::path& target);
 int status_command(const std::filesystem::path& target);
-int list_command();
+// `keys_markdown`: only the config keys, as the Markdown table of docs/parameters.md.
+int list_command(bool keys_markdown = false);
 
 }  // namespace cbbg::app

@@ -11,8 +11,8 @@
 #include <stdexcept>
 
 #include "config/config.h"
-#include "diagrams/validated_parameters.h"
 #include "diagrams/presets.h"
+#include "diagrams/validated_parameters.h"
 #include "experiments/evaluation_conditions.h"
 #include "experiments/policy_evaluation.h"
 #include "store/files.h"

@@ -5,8 +5,8 @@
 #include "apps/commands.h"
 #include "apps/errors.h"
 #include "apps/figures.h"
-#include "diagrams/validated_parameters.h"
 #include "diagrams/presets.h"
+#include "diagrams/validated_parameters.h"
 #include "experiments/experiments.h"
 #include "store/output_guard.h"
 

@@ -133,6 +133,9 @@ int main(int argc, char** argv) {
 
   CLI::App* list_app =
       app.add_subcommand("list", "list the diagrams, the blocks and every config key");
+  bool keys_markdown = false;
+  list_app->add_flag("--keys-markdown", keys_markdown,
+                     "only the config keys, as a Markdown table (docs/parameters.md)");
 
   try {
     app.parse(argc, argv);
@@ -163,7 +166,7 @@ int main(int argc, char** argv) {
     if (graph_app->parsed()) return graph_command(graph);
     if (plot_app->parsed()) return plot_command(plot_directory);
     if (replay_app->parsed()) return replay_command(replay);
-    if (list_app->parsed()) return list_command();
+    if (list_app->parsed()) return list_command(keys_markdown);
     if (merge_app->parsed()) return merge_command(merge_directory);
     if (status_app->parsed()) return status_command(status_directory);
     return run_command(run);  // `cbbg` alone runs exp1 with the paper's defaults

@@ -3,9 +3,9 @@
 #include <string>
 #include <string_view>
 
-#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/context.h"
+#include "framework/parameters.h"
 
 namespace cbbg::blocks {
 
@@ -31,9 +31,9 @@ struct ActorParams {
   template <class Archive>
   void describe(Archive& a) {
     a.number("alpha", alpha, "actor learning rate", kPositive);
-    a.choice("rule", rule, "improved (paper eq. 11) | weighted (eq. 7)",
-             Choices<ActorRule>{{"improved", ActorRule::kImproved},
-                                {"weighted", ActorRule::kWeighted}});
+    a.choice(
+        "rule", rule, "improved (paper eq. 11) | weighted (eq. 7)",
+        Choices<ActorRule>{{"improved", ActorRule::kImproved}, {"weighted", ActorRule::kWeighted}});
   }
   // Throws naming the key unless alpha is finite and > 0 and rule is one of the two.
   void validate() const;

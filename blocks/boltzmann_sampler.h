@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "framework/parameters.h"
 #include "framework/block.h"
+#include "framework/parameters.h"
 
 namespace cbbg::blocks {
 
@@ -17,8 +17,7 @@ struct SamplerParams {
   static constexpr const char* kSection = "sampler";
   template <class Archive>
   void describe(Archive& a) {
-    a.number("k_b", k_b, "K_B: a_E ~ N(a_A, K_B T / 2); the paper's 1.38e-23 works too",
-             kPositive);
+    a.number("k_b", k_b, "K_B: a_E ~ N(a_A, K_B T / 2); the paper's 1.38e-23 works too", kPositive);
   }
   // Throws naming sampler.k_b unless it is finite and > 0.
   void validate() const;

@@ -2,10 +2,10 @@
 
 #include <string>
 
-#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/block_context.h"
 #include "framework/context.h"
+#include "framework/parameters.h"
 
 namespace cbbg::blocks {
 

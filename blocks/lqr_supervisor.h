@@ -5,8 +5,8 @@
 
 #include <Eigen/Core>
 
-#include "framework/parameters.h"
 #include "framework/block.h"
+#include "framework/parameters.h"
 #include "plant/robot_params.h"
 
 namespace cbbg::blocks {
@@ -20,8 +20,7 @@ struct LqrSupervisorParams {
   static constexpr const char* kSection = "supervisor";
   template <class Archive>
   void describe(Archive& a) {
-    a.numbers("lqr_q", lqr_q, "LQR state weights on (theta_b, phi, theta_b', phi')",
-              kNonNegative);
+    a.numbers("lqr_q", lqr_q, "LQR state weights on (theta_b, phi, theta_b', phi')", kNonNegative);
     a.number("lqr_r", lqr_r, "LQR weight on the torque", kPositive);
   }
 

@@ -3,9 +3,9 @@
 #include <string>
 #include <string_view>
 
-#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/context.h"
+#include "framework/parameters.h"
 
 namespace cbbg::blocks {
 

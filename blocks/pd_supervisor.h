@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "framework/parameters.h"
 #include "framework/block.h"
+#include "framework/parameters.h"
 
 namespace cbbg::blocks {
 

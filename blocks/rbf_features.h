@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "framework/parameters.h"
 #include "framework/block.h"
+#include "framework/parameters.h"
 
 namespace cbbg::blocks {
 

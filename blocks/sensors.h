@@ -4,9 +4,9 @@
 #include <string>
 
 #include "blocks/measured_signals.h"
-#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/context.h"
+#include "framework/parameters.h"
 
 namespace cbbg::blocks {
 

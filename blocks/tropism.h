@@ -2,9 +2,9 @@
 
 #include <string>
 
-#include "framework/parameters.h"
 #include "framework/block.h"
 #include "framework/context.h"
+#include "framework/parameters.h"
 
 namespace cbbg::blocks {
 

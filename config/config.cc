@@ -314,6 +314,28 @@ void write_value(std::ostringstream& out, const Value& value) {
 
 }  // namespace
 
+std::string allowed_values(const KeySpec& spec) {
+  switch (spec.kind) {
+    case Kind::kNumber:
+      return range_text(spec);
+    case Kind::kInteger:
+      return "an integer " + range_text(spec);
+    case Kind::kText:
+    case Kind::kNames:
+      return spec.choices.empty()
+                 ? "any text"
+                 : (spec.kind == Kind::kNames ? "a list of " : "one of ") + join(spec.choices);
+    case Kind::kNumbers: {
+      const std::string count =
+          spec.list_size > 0 ? std::to_string(spec.list_size) + " numbers" : "a list of numbers";
+      return std::isfinite(spec.min) ? count + ", each " + range_text(spec) : count;
+    }
+    case Kind::kAnnealing:
+      return "a list of {from_trial, k1}";
+  }
+  return "";
+}
+
 std::string closest_key(std::string_view unknown) {
   std::string best;
   std::size_t best_distance = 4;  // suggest only keys within three edits

@@ -61,6 +61,10 @@ struct KeySpec {
 // Every key, in the order `cbbg list` and config.yaml show them: the built-in tree's, then
 // the registered sections'.
 const std::vector<KeySpec>& schema();
+// What `spec` allows, as messages and the docs' table say it: "in (0, 1]", "> 0", "one of
+// pd, lqr", "6 numbers >= 0".
+std::string allowed_values(const KeySpec& spec);
+
 // The diagram names an arm or `experiment` may take.
 const std::vector<std::string>& diagram_names();
 

@@ -99,8 +99,7 @@ class KeyReader {
   void integer(std::string_view key, long long& value, std::string_view, const Bounds&) {
     value = config_.integer(path(key));
   }
-  void numbers(std::string_view key, std::vector<double>& values, std::string_view,
-               const Bounds&) {
+  void numbers(std::string_view key, std::vector<double>& values, std::string_view, const Bounds&) {
     values = config_.numbers(path(key));
   }
   template <std::size_t N>
@@ -151,8 +150,7 @@ class KeyWriter {
   void integer(std::string_view key, long long& value, std::string_view, const Bounds&) {
     config_.assign(path(key), value);
   }
-  void numbers(std::string_view key, std::vector<double>& values, std::string_view,
-               const Bounds&) {
+  void numbers(std::string_view key, std::vector<double>& values, std::string_view, const Bounds&) {
     config_.assign(path(key), values);
   }
   template <std::size_t N>

@@ -51,9 +51,9 @@ void Parameters::check_across_sections() const {
   }
   auto inside = [this](const std::string& key, double angle) {
     if (!(std::abs(angle) < trial.failure_angle)) {
-      throw ConfigError(key + " (" + format_number(angle) +
-                        " rad) must lie inside trial.failure_angle (" +
-                        format_number(trial.failure_angle) + " rad): a trial from there fails at once");
+      throw ConfigError(
+          key + " (" + format_number(angle) + " rad) must lie inside trial.failure_angle (" +
+          format_number(trial.failure_angle) + " rad): a trial from there fails at once");
     }
   };
   inside("trial.theta0", trial.theta0);

@@ -47,8 +47,8 @@ struct RunParams {
     a.integer("seeds", seeds, "independent runs per arm; run k uses root seed + k",
               interval(1, kMaxSeeds));
     a.integer("seed", seed, "root seed", interval(0, kMaxSeed));
-    a.integer("max_trials", max_trials,
-              "exp1: give up after this many trials without a success", interval(1, kMaxTrials));
+    a.integer("max_trials", max_trials, "exp1: give up after this many trials without a success",
+              interval(1, kMaxTrials));
   }
 };
 
@@ -133,8 +133,7 @@ struct EvaluationParams {
 
   template <class Archive>
   void describe(Archive& a) {
-    a.numbers("angles", angles, "initial pitches the learnt actor is evaluated from, rad",
-              kFinite);
+    a.numbers("angles", angles, "initial pitches the learnt actor is evaluated from, rad", kFinite);
     a.number("body_mass_scale", body_mass_scale,
              "evaluation only: body mass and inertias times this (training stays nominal)",
              kPositive);
@@ -146,10 +145,8 @@ struct EvaluationParams {
              "rate (rad/s), on top of sensors.noise_std",
              kNonNegative);
     a.number("push_torque", push_torque,
-             "evaluation only: a push of this many N m on each wheel; 0 = push.* as set",
-             kFinite);
-    a.number("push_start", push_start, "evaluation only: when that push begins, s",
-             kNonNegative);
+             "evaluation only: a push of this many N m on each wheel; 0 = push.* as set", kFinite);
+    a.number("push_start", push_start, "evaluation only: when that push begins, s", kNonNegative);
     a.number("push_duration", push_duration, "evaluation only: how long that push lasts, s",
              kPositive);
   }

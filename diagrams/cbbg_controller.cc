@@ -107,8 +107,7 @@ void CbbgController::add_basal_ganglia(DiagramBuilder& builder, const config::Co
   auto& basal_ganglia = builder.emplace<BasalGanglia>(
       "basal_ganglia", fill_slot(options.slots.features, configured_features, "features", config),
       basal_ganglia_params(config, options));
-  auto& omega =
-      builder.emplace<blocks::OmegaSchedule>("omega", omega_params, period);
+  auto& omega = builder.emplace<blocks::OmegaSchedule>("omega", omega_params, period);
   auto& mixer = builder.emplace<blocks::Mixer>("mixer");
   basal_ganglia_ = &basal_ganglia;
 

@@ -117,9 +117,8 @@ ClosedLoop build_closed_loop(std::string name, const config::Config& config,
   check_plant_ports(*made);
   const plant::RobotPlant& robot = builder.add(std::move(made));
   auto& sensors = builder.emplace<blocks::Sensors>("sensors", p.sensors, period);
-  auto& failure =
-      builder.emplace<blocks::FailureDetector>(
-          "failure", blocks::FailureDetectorParams{p.trial.failure_angle}, period);
+  auto& failure = builder.emplace<blocks::FailureDetector>(
+      "failure", blocks::FailureDetectorParams{p.trial.failure_angle}, period);
   auto& reward = builder.emplace<blocks::Reward>("reward", p.reward, period);
   const CbbgController& brain = builder.add(std::move(controller));
   loop.plant = &robot;

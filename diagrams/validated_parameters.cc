@@ -21,7 +21,8 @@ void check_blocks(const config::Parameters& p) {
   p.supervisor.pd.validate();
   p.supervisor.lqr.validate();
   // Weights without a stabilising gain show only when the gain is computed.
-  if (p.supervisor.kind == "lqr") blocks::LqrSupervisor("supervisor", p.plant.robot, p.supervisor.lqr);
+  if (p.supervisor.kind == "lqr")
+    blocks::LqrSupervisor("supervisor", p.plant.robot, p.supervisor.lqr);
   p.critic.validate();
   p.actor.validate();
   p.tropism.validate();

@@ -16,6 +16,8 @@
 #include <string>
 
 #include "blocks/measured_signals.h"
+#include "config/declared_keys.h"
+#include "config/parameters.h"
 #include "diagrams/presets.h"
 #include "experiments/experiments.h"
 #include "framework/block_context.h"
@@ -28,23 +30,39 @@ namespace {
 
 using namespace cbbg;
 
+// The supervisor's own parameters: config keys saturated_pd.*, declared once, here.
+struct SaturatedPdParams {
+  double k_theta = 60.0;
+  double k_dtheta = 12.0;
+  double k_v = 1.0;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("k_theta", k_theta, "gain on the pitch, N m/rad", kFinite);
+    a.number("k_dtheta", k_dtheta, "gain on the pitch rate, N m s/rad", kFinite);
+    a.number("k_v", k_v, "gain on the mean wheel speed, N m s/rad", kFinite);
+  }
+};
+
 /// SaturatedPd: a_S = clamp(k_theta theta_b + k_dtheta theta_b' + k_v (phi_l' + phi_r') / 2,
 /// -limit, limit). Input "measured" (6), output "action" (1): the cerebellum's slot.
 class SaturatedPd final : public Block {
  public:
-  SaturatedPd(std::string name, double limit) : Block(std::move(name)) {
+  SaturatedPd(std::string name, const SaturatedPdParams& gains, double limit)
+      : Block(std::move(name)) {
     const InputPort& measured = declare_input_port("measured", blocks::kMeasuredSize);
-    declare_output_port(
-        "action", 1,
-        [&measured, limit](const BlockContext& context, VectorRef action) {
-          const auto y = context.input(measured);
-          const double wheel_speed =
-              (y[blocks::kMeasuredPhiLeftDot] + y[blocks::kMeasuredPhiRightDot]) / 2.0;
-          const double law = 60.0 * y[blocks::kMeasuredThetaB] +
-                             12.0 * y[blocks::kMeasuredThetaBDot] + 1.0 * wheel_speed;
-          action[0] = std::clamp(law, -limit, limit);
-        },
-        {&measured});
+    declare_output_port("action", 1,
+                        [&measured, gains, limit](const BlockContext& context, VectorRef action) {
+                          const auto y = context.input(measured);
+                          const double wheel_speed =
+                              (y[blocks::kMeasuredPhiLeftDot] + y[blocks::kMeasuredPhiRightDot]) /
+                              2.0;
+                          const double law = gains.k_theta * y[blocks::kMeasuredThetaB] +
+                                             gains.k_dtheta * y[blocks::kMeasuredThetaBDot] +
+                                             gains.k_v * wheel_speed;
+                          action[0] = std::clamp(law, -limit, limit);
+                        },
+                        {&measured});
   }
 };
 
@@ -65,18 +83,27 @@ void render(const diagrams::Arm& arm, const config::Config& config,
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: own_supervisor OUTPUT_DIR [SEEDS]\n");
+    std::fprintf(stderr, "usage: own_supervisor OUTPUT_DIR [SEEDS [KEY=VALUE...]]\n");
     return 2;
   }
+  // Before any config is made: saturated_pd.* become keys like the built-in ones.
+  config::register_section<SaturatedPdParams>("saturated_pd");
+  config::Config config;
   try {
-    config::Config config;
     config.set("plant.kind=analytic");
     config.set("seeds=" + std::string(argc > 2 ? argv[2] : "3"));
     config.set("log.decimation=10");
-
+    for (int i = 3; i < argc; ++i) config.set(argv[i]);  // saturated_pd.k_theta=70, ...
+  } catch (const config::ConfigError& error) {
+    std::fprintf(stderr, "own_supervisor: %s\n", error.what());
+    return 2;
+  }
+  try {
     diagrams::ControllerOptions mine = diagrams::preset("cbbg").options;
     mine.slots.supervisor = [](const std::string& name, const config::Config& c) {
-      return std::make_unique<SaturatedPd>(name, c.number("plant.torque_limit"));
+      return std::make_unique<SaturatedPd>(
+          name, config::read_section<SaturatedPdParams>(c, "saturated_pd"),
+          config::read_parameters(c).plant.robot.torque_limit);
     };
     const std::vector<diagrams::Arm> arms{diagrams::preset_arm("cbbg"),
                                           diagrams::make_arm("cbbg_saturated_pd", mine)};

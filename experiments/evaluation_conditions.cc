@@ -50,8 +50,8 @@ config::Config evaluation_config(const config::Config& training) {
     }
   }
   if (evaluation.push_torque != 0.0) {
-    p.push = blocks::PushParams{evaluation.push_start, evaluation.push_torque,
-                                evaluation.push_duration};
+    p.push =
+        blocks::PushParams{evaluation.push_start, evaluation.push_torque, evaluation.push_duration};
   }
   config::Config config = training;
   config::write_parameters(p, config);
@@ -84,8 +84,8 @@ std::string describe_conditions(const config::Config& config) {
   if (evaluation.noise_std != 0.0) add("pitch noise " + format_number(evaluation.noise_std));
   if (evaluation.push_torque != 0.0) {
     add("push " + format_number(evaluation.push_torque) + " N m from " +
-        format_number(evaluation.push_start) + " s for " +
-        format_number(evaluation.push_duration) + " s");
+        format_number(evaluation.push_start) + " s for " + format_number(evaluation.push_duration) +
+        " s");
   }
   return words;
 }

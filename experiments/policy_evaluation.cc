@@ -44,8 +44,8 @@ PolicyEvaluation evaluate(const config::Config& config, const diagrams::ClosedLo
   result.first_seed = parameters.run.seed;
   TelemetryOptions telemetry;
   telemetry.keep_in_memory = false;
-  TrialRunner runner(loop, static_cast<std::uint64_t>(result.first_seed),
-                     parameters.trial.period, telemetry);
+  TrialRunner runner(loop, static_cast<std::uint64_t>(result.first_seed), parameters.trial.period,
+                     telemetry);
   Context& context = runner.context();
   for (const double theta0 : settings.angles) {
     AngleEvaluation angle;

@@ -58,8 +58,10 @@ struct Bounds {
       return std::string("must be in ") + (min_open ? "(" : "[") + format_number(min) + ", " +
              format_number(max) + (max_open ? ")" : "]");
     }
-    if (has_min) return std::string("must be finite and ") + (min_open ? "> " : ">= ") + format_number(min);
-    if (has_max) return std::string("must be finite and ") + (max_open ? "< " : "<= ") + format_number(max);
+    if (has_min)
+      return std::string("must be finite and ") + (min_open ? "> " : ">= ") + format_number(min);
+    if (has_max)
+      return std::string("must be finite and ") + (max_open ? "< " : "<= ") + format_number(max);
     return "must be finite";
   }
 };

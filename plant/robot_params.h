@@ -71,10 +71,9 @@ struct RobotParams {
     a.number("wheel_diametral_inertia", wheel_diametral_inertia,
              "wheel inertia about a diameter, kg m^2 (matters only when turning)", kNonNegative);
     a.number("gravity", gravity, "g, m/s^2", kNonNegative);
-    a.number("wheel_ground_friction", wheel_ground_friction,
-             "mu_l = mu_r, viscous, N m/(rad/s)", kNonNegative);
-    a.number("axle_friction", axle_friction, "mu_w, wheel-axle viscous, N m/(rad/s)",
+    a.number("wheel_ground_friction", wheel_ground_friction, "mu_l = mu_r, viscous, N m/(rad/s)",
              kNonNegative);
+    a.number("axle_friction", axle_friction, "mu_w, wheel-axle viscous, N m/(rad/s)", kNonNegative);
     a.number("torque_limit", torque_limit, "motor torques saturate to +-this, N m", kPositive);
     a.number("accuracy", accuracy, "integrator error tolerance (relative and absolute)",
              interval(0.0, 1.0, kOpen, kOpen));

@@ -18,7 +18,17 @@ cmake --build "$scratch/example" >/dev/null
 test -s "$scratch/out/position.csv"
 grep -q "digraph" "$scratch/out/spring_mass.dot"
 
-"$scratch/example/own_supervisor" "$scratch/ablation" 2
+"$scratch/example/own_supervisor" "$scratch/ablation" 2 saturated_pd.k_theta=70
+# The supervisor's own section is recorded with the run, and refused when out of its range.
+grep -q "^saturated_pd:$" "$scratch/ablation/config.yaml"
+grep -q "^  k_theta: 70$" "$scratch/ablation/config.yaml"
+set +e
+refused="$("$scratch/example/own_supervisor" "$scratch/refused" 1 saturated_pd.k_v=.nan 2>&1)"
+status=$?
+set -e
+[[ $status == 2 && "$refused" == *"saturated_pd.k_v must be a finite number"* ]] ||
+  { echo "the example took saturated_pd.k_v=.nan (exit $status): $refused" >&2; exit 1; }
+[[ ! -e "$scratch/refused" ]] || { echo "a refused run left $scratch/refused" >&2; exit 1; }
 for file in config.yaml summary.json trials.csv evaluation.csv steps.csv; do
   test -s "$scratch/ablation/$file" || { echo "missing $file" >&2; exit 1; }
 done

@@ -13,8 +13,8 @@
 #include "diagrams/basal_ganglia.h"
 #include "diagrams/cerebellum.h"
 #include "diagrams/closed_loop.h"
-#include "diagrams/validated_parameters.h"
 #include "diagrams/presets.h"
+#include "diagrams/validated_parameters.h"
 #include "experiments/trial_runner.h"
 #include "framework/graphviz.h"
 #include "framework/primitives/gain.h"
@@ -185,19 +185,24 @@ TEST(ClosedLoop, RefusesAPlantWithoutTheRobotPorts) {
 
 TEST(ParamsFromConfig, PlantSimbodyIntegratorChoosesTheIntegrator) {
   config::Config config = analytic_config();
-  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_integrator, plant::SimbodyIntegrator::kMerson);
+  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_integrator,
+            plant::SimbodyIntegrator::kMerson);
   config.set("plant.simbody_integrator=rk3");
-  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_integrator, plant::SimbodyIntegrator::kRungeKutta3);
+  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_integrator,
+            plant::SimbodyIntegrator::kRungeKutta3);
   config.set("plant.simbody_integrator=verlet");
-  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_integrator, plant::SimbodyIntegrator::kVerlet);
+  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_integrator,
+            plant::SimbodyIntegrator::kVerlet);
   EXPECT_THROW(config.set("plant.simbody_integrator=euler"), config::ConfigError);
 }
 
 TEST(ParamsFromConfig, PlantSimbodyModelChoosesTheFormulation) {
   config::Config config = analytic_config();
-  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_model, plant::SimbodyModel::kRollingBase);
+  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_model,
+            plant::SimbodyModel::kRollingBase);
   config.set("plant.simbody_model=constrained");
-  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_model, plant::SimbodyModel::kNoSlipConstraints);
+  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_model,
+            plant::SimbodyModel::kNoSlipConstraints);
   EXPECT_THAT([&] { config.set("plant.simbody_model=lagrange"); },
               ::testing::ThrowsMessage<config::ConfigError>(
                   "--set plant.simbody_model=lagrange: plant.simbody_model must be one of "
