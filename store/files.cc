@@ -1,16 +1,13 @@
 #include "store/files.h"
 
-#include "store/output_guard.h"
-
-#include <unistd.h>
-
-#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "store/output_guard.h"
 
 namespace cbbg::store {
 

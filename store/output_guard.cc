@@ -7,7 +7,6 @@
 #include <atomic>
 #include <cerrno>
 #include <fstream>
-#include <sstream>
 
 #include "config/config.h"
 #include "store/files.h"
@@ -172,11 +171,6 @@ void Manifest::add(const std::vector<std::string>& names) {
   for (const std::string& name : names) {
     if (!lists(name)) names_.push_back(name);
   }
-  save();
-}
-
-void Manifest::reset(std::vector<std::string> names) {
-  names_ = std::move(names);
   save();
 }
 

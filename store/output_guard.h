@@ -22,7 +22,7 @@ namespace cbbg::store {
 using cbbg::carries_tag;  // framework/owned_files.h: what is at a path, and whether it is cbbg's
 using cbbg::non_regular_kind;
 
-// What every temporary name of cbbg holds: NAME.cbbg-tmp-PID-N files, staging folders.
+// What every temporary name of cbbg holds: .NAME.cbbg-tmp-HOST-PID-N files and staging folders.
 inline constexpr const char* kTemporaryTag = ".cbbg-tmp-";
 // The manifest of a directory that cbbg shares with its user (figures/, cbbg eval --out).
 inline constexpr const char* kManifestFile = ".cbbg-written";
@@ -69,8 +69,6 @@ class Manifest {
   // Records `names` as cbbg's (written atomically, before the files themselves, so a kill
   // never leaves a file of cbbg's unlisted).
   void add(const std::vector<std::string>& names);
-  // Replaces the record with exactly `names`.
-  void reset(std::vector<std::string> names);
 
  private:
   void save() const;
