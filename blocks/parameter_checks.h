@@ -1,12 +1,12 @@
 #pragma once
-// Checks of block parameters against their allowed ranges. Each failure throws
-// std::invalid_argument naming the config key (docs/model.md §4), the allowed range and the
-// value given, e.g. "critic.gamma must be in (0, 1]; got 1.5".
+// Checks of block parameters beyond their declarations (framework/parameters.h, whose
+// check_declared checks those). Each failure throws std::invalid_argument naming the config
+// key, the requirement and the value given, e.g. "trial.period must be finite and > 0; got 0".
 
 #include <string>
 #include <string_view>
 
-#include "framework/number_text.h"
+#include "framework/parameters.h"
 
 namespace cbbg::blocks {
 
@@ -14,27 +14,9 @@ namespace cbbg::blocks {
 [[noreturn]] void throw_invalid_parameter(std::string_view key, std::string_view requirement,
                                           double value);
 
-// Throws unless `value` is finite.
-void check_finite(std::string_view key, double value);
-// Throws unless `value` is finite and > 0.
+// Throws unless `value` is finite and > 0 (the check of a parameter that is not a config key
+// of its own block: trial.period, trial.failure_angle, sampler.k_b for the entropy).
 void check_positive(std::string_view key, double value);
-// Throws unless `value` is finite and >= 0.
-void check_non_negative(std::string_view key, double value);
-
-// An interval of the real line, open or closed at each end, as messages print it.
-struct Interval {
-  double lower;
-  bool lower_closed;
-  double upper;
-  bool upper_closed;
-
-  bool contains(double value) const;
-  // "(0, 1]", "[0, 1)".
-  std::string text() const;
-};
-
-// Throws unless `value` is finite and inside `interval`.
-void check_in(std::string_view key, double value, const Interval& interval);
 
 // The period of a block's periodic update (config key trial.period): finite and > 0.
 void check_period(double period);

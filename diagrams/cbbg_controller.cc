@@ -45,9 +45,8 @@ const OutputPort& constant(DiagramBuilder& builder, const std::string& name, dou
   return builder.emplace<ConstantSource>(name, Vector::Constant(1, value)).output_port("y");
 }
 
-BasalGangliaParams basal_ganglia_params(const config::Config& config,
+BasalGangliaParams basal_ganglia_params(const config::Parameters& p,
                                         const ControllerOptions& options) {
-  const config::Parameters p = config::read_parameters(config);
   BasalGangliaParams params;
   params.critic = p.critic;
   params.actor = p.actor;
@@ -106,7 +105,7 @@ void CbbgController::add_basal_ganglia(DiagramBuilder& builder, const config::Co
       builder.add(fill_slot(options.slots.normaliser, configured_normaliser, "normaliser", config));
   auto& basal_ganglia = builder.emplace<BasalGanglia>(
       "basal_ganglia", fill_slot(options.slots.features, configured_features, "features", config),
-      basal_ganglia_params(config, options));
+      basal_ganglia_params(p, options));
   auto& omega = builder.emplace<blocks::OmegaSchedule>("omega", omega_params, period);
   auto& mixer = builder.emplace<blocks::Mixer>("mixer");
   basal_ganglia_ = &basal_ganglia;

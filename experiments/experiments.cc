@@ -87,8 +87,7 @@ struct SeedLoop {
 };
 
 // The next trial of exp1's protocol (exp3's too): from trial.theta0, k1 fixed.
-TrialRecord next_trial(const config::Config& config, TrialRunner& runner, int trial) {
-  const config::Parameters p = config::read_parameters(config);
+TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial) {
   return {trial, p.tropism.k1, runner.run_trial(p.trial.theta0, p.trial.duration, trial),
           std::nullopt};
 }
@@ -97,9 +96,9 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
                        const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                        SeedRun& run) {
   SeedLoop seed(config, arm, telemetry, initial_weights, run.seed);
-  const long long max_trials = config::read_parameters(config).run.max_trials;
-  for (int trial = 1; trial <= max_trials; ++trial) {
-    const TrialRecord record = next_trial(config, seed.runner, trial);
+  const config::Parameters p = config::read_parameters(config);
+  for (int trial = 1; trial <= p.run.max_trials; ++trial) {
+    const TrialRecord record = next_trial(p, seed.runner, trial);
     run.trials.push_back(record);
     if (record.outcome.status == TrialStatus::kSuccess) {
       run.succeeded = true;
@@ -135,9 +134,9 @@ void run_until_skill(const config::Config& config, const diagrams::Arm& arm,
   const diagrams::ClosedLoop& loop = seed.loop;
   const bool has_actor = loop.learner.learns() && static_cast<bool>(arm.policy);
   int failures = 0;
-  const long long max_trials = config::read_parameters(config).run.max_trials;
-  for (int trial = 1; trial <= max_trials; ++trial) {
-    TrialRecord record = next_trial(config, runner, trial);
+  const config::Parameters p = config::read_parameters(config);
+  for (int trial = 1; trial <= p.run.max_trials; ++trial) {
+    TrialRecord record = next_trial(p, runner, trial);
     const bool success = record.outcome.status == TrialStatus::kSuccess;
     if (!success) ++failures;
     if (success && !run.succeeded) {

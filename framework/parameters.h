@@ -90,6 +90,15 @@ struct Choice {
 template <typename T>
 using Choices = std::vector<Choice<T>>;
 
+// Throws std::invalid_argument "<key> <requirement>; got <value>" unless `value` is inside
+// `bounds`: every check of a declared number says it in these words.
+inline void check_bounds(std::string_view key, double value, const Bounds& bounds) {
+  if (!bounds.contains(value)) {
+    throw std::invalid_argument(std::string(key) + " " + bounds.requirement() + "; got " +
+                                format_number(value));
+  }
+}
+
 // The archive of check_declared: throws std::invalid_argument at the first value outside its
 // declaration, naming its key ("critic.gamma must be in (0, 1]; got 1.5").
 class DeclarationCheck {
@@ -142,10 +151,7 @@ class DeclarationCheck {
 
  private:
   void check(const std::string& key, double value, const Bounds& bounds) const {
-    if (!bounds.contains(value)) {
-      throw std::invalid_argument(prefix_ + key + " " + bounds.requirement() + "; got " +
-                                  format_number(value));
-    }
+    check_bounds(prefix_ + key, value, bounds);
   }
 
   std::string prefix_;

@@ -42,6 +42,18 @@ constexpr std::pair<const char*, const char*> kResultFolders[] = {{"weights", ".
                                                                   {"figures", ".dot"},
                                                                   {"figures", ".html"}};
 
+// Whether `inner`, in the results folder `folder`, is a file cbbg writes there: one of the
+// folder's endings, its manifest, or a killed write's leftover.
+bool is_own_file(const std::string& folder, const fs::directory_entry& inner) {
+  if (is_temporary(inner.path()) || inner.path().filename() == kManifestFile) return true;
+  for (const auto& [own_folder, ending] : kResultFolders) {
+    if (folder == own_folder && inner.is_regular_file() && inner.path().extension() == ending) {
+      return true;
+    }
+  }
+  return false;
+}
+
 bool is_own_entry(const fs::path& directory, const fs::directory_entry& entry) {
   if (is_temporary(entry.path())) return true;  // a killed write's leftover, cbbg's own
   const std::string name = entry.path().filename().string();
@@ -51,12 +63,7 @@ bool is_own_entry(const fs::path& directory, const fs::directory_entry& entry) {
   if (!entry.is_directory()) return false;
   std::error_code error;
   for (const auto& inner : fs::directory_iterator(directory / name, error)) {
-    bool known = false;
-    for (const auto& [folder, ending] : kResultFolders) {
-      known = known || is_temporary(inner.path()) || inner.path().filename() == kManifestFile ||
-              (name == folder && inner.is_regular_file() && inner.path().extension() == ending);
-    }
-    if (!known) return false;
+    if (!is_own_file(name, inner)) return false;
   }
   return name == "weights" || name == "figures";
 }
