@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "config/config.h"
+#include "config/parameters.h"
 #include "config/sweep.h"
 
 namespace cbbg::app {
@@ -30,6 +31,10 @@ struct RunOptions {
   std::optional<std::string> shard;  // "K/N" as typed: run only that shard of the sweep
 };
 int run_command(const RunOptions& options);
+// The typed parameters of a run's (or a grid point's) config, with everything a run checks
+// before any work: the edge below which nothing reads the config again. Throws
+// config::ConfigError.
+config::Parameters checked_parameters(const config::Config& config);
 // cbbg run as a sweep (apps/sweep_command.cc): `base` and `sweep` resolved from `options`.
 int sweep_command(const RunOptions& options, const config::Config& base,
                   const config::Sweep& sweep);

@@ -83,8 +83,9 @@ std::vector<double> parse_angles(const std::string& text) {
   }
 }
 
-// The config of the file, the overrides and --angles, validated.
-config::Config resolve(const EvalOptions& options) {
+// The evaluation's parameters: the file, the overrides and --angles, validated, with the
+// evaluation.* conditions applied.
+config::Parameters resolve(const EvalOptions& options) {
   config::Config config;
   if (!options.config_file.empty()) config.merge_file(options.config_file);
   for (const auto& assignment : options.sets) config.set(assignment);
@@ -95,12 +96,12 @@ config::Config resolve(const EvalOptions& options) {
     }
     config.set("evaluation.angles=" + list + "]", "--angles");
   }
-  if (config.numbers("evaluation.angles").empty()) {
+  const config::Parameters training = diagrams::validated_parameters(config);
+  if (training.evaluation.angles.empty()) {
     throw config::ConfigError("evaluation.angles is empty: give --angles or set some");
   }
-  diagrams::validated_parameters(config);
-  experiments::check_evaluation_conditions(config);
-  return experiments::evaluation_config(config);
+  experiments::check_evaluation_conditions(training);
+  return experiments::evaluation_parameters(training);
 }
 
 std::string evaluation_csv(const experiments::PolicyEvaluation& evaluation) {
@@ -118,20 +119,19 @@ std::string evaluation_csv(const experiments::PolicyEvaluation& evaluation) {
   return csv;
 }
 
-void print_table(const experiments::PolicyEvaluation& evaluation, const config::Config& config,
+void print_table(const experiments::PolicyEvaluation& evaluation, const config::Parameters& p,
                  const experiments::LearntWeights& weights, const EvalOptions& options) {
   const experiments::WeightsProvenance& from = weights.provenance;
   std::printf("weights %s: %s, seed %lld, %lld trial(s) on the %s plant\n",
               options.weights_file.string().c_str(), from.arm.c_str(), from.seed, from.trials,
               from.plant.c_str());
-  std::printf("policy alone on the %s plant for %g s, seeds %lld..%lld",
-              config.text("plant.kind").c_str(), config.number("trial.duration"),
-              evaluation.first_seed, evaluation.first_seed + options.repeats - 1);
+  std::printf("policy alone on the %s plant for %g s, seeds %lld..%lld", p.plant.kind.c_str(),
+              p.trial.duration, evaluation.first_seed, evaluation.first_seed + options.repeats - 1);
   if (options.push_time) {
     std::printf("; push %g N m on each wheel from %g s for %g s", *options.push_torque,
                 *options.push_time, *options.push_duration);
   }
-  if (const std::string conditions = experiments::describe_conditions(config);
+  if (const std::string conditions = experiments::describe_conditions(p.evaluation);
       !conditions.empty()) {
     std::printf("; evaluated on a changed robot: %s", conditions.c_str());
   }
@@ -146,7 +146,7 @@ void print_table(const experiments::PolicyEvaluation& evaluation, const config::
 }  // namespace
 
 int eval_command(const EvalOptions& options) {
-  config::Config config;
+  config::Parameters parameters;
   experiments::LearntWeights weights;
   experiments::EvaluationSettings settings;
   diagrams::ClosedLoopOptions loop;
@@ -161,10 +161,10 @@ int eval_command(const EvalOptions& options) {
       store::Manifest(options.out).check_writable({kEvaluationFile}, "--out");
     }
     loop.push = push_from(options);
-    config = resolve(options);
+    parameters = resolve(options);
     weights = store::load_weights(options.weights_file);
-    store::check_layout(weights, config, options.weights_file);
-    settings.angles = config.numbers("evaluation.angles");
+    store::check_layout(weights, parameters, options.weights_file);
+    settings.angles = parameters.evaluation.angles;
     settings.repeats = options.repeats;
   } catch (const config::ConfigError& error) {
     return report_error(kUserError, error.what());
@@ -173,7 +173,7 @@ int eval_command(const EvalOptions& options) {
   }
   try {
     const experiments::PolicyEvaluation evaluation = experiments::evaluate_policy(
-        config,
+        parameters,
         diagrams::closed_loop_factory(diagrams::kLearntActor,
                                       diagrams::preset(diagrams::kLearntActor).options, loop),
         weights, settings);
@@ -183,7 +183,7 @@ int eval_command(const EvalOptions& options) {
       manifest.add({kEvaluationFile});
       store::write_atomically(options.out / kEvaluationFile, evaluation_csv(evaluation));
     }
-    print_table(evaluation, config, weights, options);
+    print_table(evaluation, parameters, weights, options);
   } catch (const std::exception& error) {
     return report_error(kMachineError, describe(error));
   }

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "config/config.h"
+#include "config/parameters.h"
 #include "framework/graphviz.h"
 
 namespace cbbg::app {
@@ -25,19 +25,19 @@ inline std::string replay_figure(const std::string& arm) { return "replay_" + ar
 // file of the user's. A missing Python/matplotlib, Graphviz or replay page is reported as a
 // warning: the data files stand on their own. Returns 0 when every figure was made, 1 when
 // one could not be, 2 when the plotting script refused a name a user's file holds.
-int draw_figures(const std::filesystem::path& directory, const config::Config& config,
+int draw_figures(const std::filesystem::path& directory, const config::Parameters& parameters,
                  const FigureOptions& options);
 
-// The arms whose trials DIR holds (its trials.csv; else the config's).
+// The arms whose trials DIR holds (its trials.csv; else the parameters' run's).
 std::vector<std::string> run_arms(const std::filesystem::path& directory,
-                                  const config::Config& config);
+                                  const config::RunParams& run);
 // What draw_figures writes itself for those arms.
 std::vector<std::string> own_figure_names(const std::vector<std::string>& arms,
                                           const FigureOptions& options);
 
 // DIR/figures/replay_<arm>.html per arm of the run: its first seed's first trial, first
 // successful trial and last trial. Warns and returns false when they cannot be written.
-bool write_run_replays(const std::filesystem::path& directory, const config::Config& config,
+bool write_run_replays(const std::filesystem::path& directory, const config::Parameters& parameters,
                        const std::string& run_name);
 
 // A file cbbg installs in share/cbbg/ beside the directory of this executable (bin/ when
@@ -47,8 +47,8 @@ std::filesystem::path shared_file(const char* override, const char* name);
 // Runs the plotting script on DIR; returns its exit code.
 int run_plot_script(const std::filesystem::path& directory, bool quiet);
 
-// Renders the closed loop of preset `name` for `config` to `output` (.dot, .svg or .png).
-void draw_diagram(const std::string& name, const config::Config& config,
+// Renders the closed loop of preset `name` for `parameters` to `output` (.dot, .svg or .png).
+void draw_diagram(const std::string& name, const config::Parameters& parameters,
                   const std::filesystem::path& output, const GraphvizOptions& options);
 
 // The telemetry multiplexer of the closed loop named `name`, and the pose it records: left

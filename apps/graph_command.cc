@@ -14,12 +14,13 @@ namespace cbbg::app {
 
 int graph_command(const GraphOptions& options) {
   config::Config config;
+  config::Parameters parameters;
   std::string diagram = options.diagram;
   try {
     if (!options.config_file.empty()) config.merge_file(options.config_file);
     for (const auto& assignment : options.sets) config.set(assignment);
-    diagrams::validated_parameters(config);
-    if (diagram.empty()) diagram = experiments::experiment_arms(config).front();
+    parameters = diagrams::validated_parameters(config);
+    if (diagram.empty()) diagram = experiments::experiment_arms(parameters.run).front();
     try {
       diagrams::preset(diagram);
     } catch (const std::invalid_argument& error) {
@@ -38,7 +39,7 @@ int graph_command(const GraphOptions& options) {
   }
   try {
     draw_diagram(
-        diagram, config, options.output,
+        diagram, parameters, options.output,
         GraphvizOptions{.max_depth = options.max_depth.value_or(-1),
                         .hidden_blocks = options.show_telemetry ? std::vector<std::string>{}
                                                                 : telemetry_blocks(diagram)});

@@ -7,6 +7,7 @@
 #include "apps/commands.h"
 #include "config/config.h"
 #include "diagrams/presets.h"
+#include "experiments/experiments.h"
 
 namespace cbbg::app {
 namespace {
@@ -14,11 +15,6 @@ namespace {
 struct Entry {
   const char* name;
   const char* meaning;
-};
-
-constexpr Entry kExperiments[] = {
-    {"exp1", "per arm and seed: trials until the first success (paper Fig. 11)"},
-    {"exp2", "one cbbg trial, then omega = 1 with the annealing schedule (paper Figs. 12-14)"},
 };
 
 constexpr Entry kBlocks[] = {
@@ -91,7 +87,9 @@ int list_command(bool keys_markdown) {
     return 0;
   }
   std::printf("Experiments (--experiment):\n");
-  for (const auto& entry : kExperiments) std::printf("  %-15s %s\n", entry.name, entry.meaning);
+  for (const auto& protocol : experiments::protocol_names()) {
+    std::printf("  %-15s %s\n", protocol.name.c_str(), protocol.meaning.c_str());
+  }
   std::printf(
       "\nDiagrams (presets; --experiment NAME runs an arm, arms: [...] compares several, "
       "cbbg graph draws any):\n");

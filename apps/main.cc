@@ -3,6 +3,7 @@
 #include <charconv>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
@@ -10,6 +11,8 @@
 #include "apps/commands.h"
 #include "apps/errors.h"
 #include "apps/eval_command.h"
+#include "diagrams/presets.h"
+#include "experiments/experiments.h"
 
 namespace {
 
@@ -22,6 +25,25 @@ bool parse_jobs(const std::string& text, int& jobs) {
   }
   jobs = value;
   return true;
+}
+
+// "a | b | c": names for a flag's help, from their tables.
+std::string alternatives(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : " | ") + name;
+  return text;
+}
+
+std::string experiment_help() {
+  std::vector<std::string> names;
+  for (const auto& protocol : cbbg::experiments::protocol_names()) names.push_back(protocol.name);
+  return alternatives(names) + " | a diagram name (default: the config's, exp1)";
+}
+
+std::string diagram_help() {
+  std::vector<std::string> names;
+  for (const auto& preset : cbbg::diagrams::presets()) names.push_back(preset.name);
+  return alternatives(names);
 }
 
 }  // namespace
@@ -41,9 +63,7 @@ int main(int argc, char** argv) {
   std::string seeds;
   std::string seed;
   std::filesystem::path resume;
-  auto* experiment_option =
-      run_app->add_option("--experiment", experiment,
-                          "exp1 | exp2 | exp3 | a diagram name (default: the config's, exp1)");
+  auto* experiment_option = run_app->add_option("--experiment", experiment, experiment_help());
   run_app->add_option("--config", run.config_file, "a YAML config (keys: `cbbg list`)");
   run_app->add_option("--set", run.sets, "override one key: --set critic.gamma=0.9 (repeatable)");
   // Numbers are checked by the config's schema, with the project's messages and limits.
@@ -88,9 +108,7 @@ int main(int argc, char** argv) {
 
   GraphOptions graph;
   CLI::App* graph_app = app.add_subcommand("graph", "draw a diagram (.dot, .svg or .png)");
-  auto* diagram_option =
-      graph_app->add_option("--diagram", graph.diagram,
-                            "cbbg | cbbg_weighted | bg_only | cb_only | pd_only | learnt_actor");
+  auto* diagram_option = graph_app->add_option("--diagram", graph.diagram, diagram_help());
   graph_app->add_option("--config", graph.config_file, "a YAML config")->excludes(diagram_option);
   graph_app->add_option("--set", graph.sets, "override one key (repeatable)");
   graph_app->add_option("--depth", graph.max_depth, "nesting levels to expand (default: all)");

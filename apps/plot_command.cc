@@ -58,7 +58,7 @@ int run_plot_script(const std::filesystem::path& directory, bool quiet) {
 }
 
 std::vector<std::string> run_arms(const std::filesystem::path& directory,
-                                  const config::Config& config) {
+                                  const config::RunParams& run) {
   // trials.csv names the arms that ran, a user's own too; config.yaml may not know them.
   std::vector<std::string> arms;
   try {
@@ -68,7 +68,7 @@ std::vector<std::string> run_arms(const std::filesystem::path& directory,
   } catch (const replay::InputError&) {
     arms.clear();
   }
-  return arms.empty() ? experiments::experiment_arms(config) : arms;
+  return arms.empty() ? experiments::experiment_arms(run) : arms;
 }
 
 std::vector<std::string> own_figure_names(const std::vector<std::string>& arms,
@@ -80,7 +80,7 @@ std::vector<std::string> own_figure_names(const std::vector<std::string>& arms,
   return names;
 }
 
-int draw_figures(const std::filesystem::path& directory, const config::Config& config,
+int draw_figures(const std::filesystem::path& directory, const config::Parameters& parameters,
                  const FigureOptions& options) {
   const int plotted = run_plot_script(directory, options.quiet);
   if (plotted == kUserError) return kUserError;  // a figure's name is taken by a user's file
@@ -88,8 +88,8 @@ int draw_figures(const std::filesystem::path& directory, const config::Config& c
   if (!complete) spdlog::warn("the plots could not be drawn (see the message above)");
   if (is_sweep(directory)) return complete ? 0 : kMachineError;  // the script's figures alone
   std::filesystem::create_directories(directory / "figures");
-  const std::vector<std::string> arms = run_arms(directory, config);
-  const std::vector<std::string>& presets = config::diagram_names();
+  const std::vector<std::string> arms = run_arms(directory, parameters.run);
+  const std::vector<std::string> presets = diagrams::arm_names();
   if (std::find(presets.begin(), presets.end(), arms.front()) == presets.end()) {
     spdlog::info("no diagram.svg: arm '{}' is not a preset (draw it with cbbg::to_dot)",
                  arms.front());
@@ -98,7 +98,7 @@ int draw_figures(const std::filesystem::path& directory, const config::Config& c
       store::Manifest manifest(directory / "figures");
       manifest.check_writable({kDiagramFigure}, "the diagram");
       manifest.add({kDiagramFigure});
-      draw_diagram(arms.front(), config, directory / "figures" / kDiagramFigure,
+      draw_diagram(arms.front(), parameters, directory / "figures" / kDiagramFigure,
                    GraphvizOptions{.hidden_blocks = telemetry_blocks(arms.front())});
     } catch (const std::runtime_error& error) {
       spdlog::warn("{}: {}", kDiagramFigure, error.what());
@@ -106,14 +106,14 @@ int draw_figures(const std::filesystem::path& directory, const config::Config& c
     }
   }
   if (options.replays) {
-    complete = write_run_replays(directory, config, options.run_name) && complete;
+    complete = write_run_replays(directory, parameters, options.run_name) && complete;
   }
   return complete ? 0 : kMachineError;
 }
 
-void draw_diagram(const std::string& name, const config::Config& config,
+void draw_diagram(const std::string& name, const config::Parameters& parameters,
                   const std::filesystem::path& output, const GraphvizOptions& options) {
-  const diagrams::ClosedLoop loop = diagrams::build_preset(name, config);
+  const diagrams::ClosedLoop loop = diagrams::build_preset(name, parameters);
   render_dot(to_dot(*loop.diagram, options), output);
 }
 
@@ -123,6 +123,7 @@ std::vector<std::string> telemetry_blocks(const std::string& name) {
 
 int plot_command(const std::filesystem::path& directory) {
   config::Config config;
+  config::Parameters parameters;
   try {
     std::error_code error;
     if (!std::filesystem::is_regular_file(directory / "config.yaml", error)) {
@@ -130,10 +131,11 @@ int plot_command(const std::filesystem::path& directory) {
                                 "' is not a results directory (it has no config.yaml)");
     }
     config.merge_file(directory / "config.yaml");
+    parameters = config::read_parameters(config);
     check_output_directory(directory / "figures", "cbbg plot");
     if (!is_sweep(directory)) {
       store::Manifest(directory / "figures")
-          .check_writable(own_figure_names(run_arms(directory, config), {}), "cbbg plot");
+          .check_writable(own_figure_names(run_arms(directory, parameters.run), {}), "cbbg plot");
     }
     store::remove_temporaries(directory, store::Leftovers::kStale);  // a killed plot's staging
   } catch (const config::ConfigError& error) {
@@ -141,7 +143,7 @@ int plot_command(const std::filesystem::path& directory) {
   } catch (const std::exception& error) {
     return report_error(kMachineError, describe(error));
   }
-  return draw_figures(directory, config, {});
+  return draw_figures(directory, parameters, {});
 }
 
 }  // namespace cbbg::app

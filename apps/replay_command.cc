@@ -62,16 +62,16 @@ int replay_command(const ReplayOptions& options) {
   return 0;
 }
 
-bool write_run_replays(const std::filesystem::path& directory, const config::Config& config,
+bool write_run_replays(const std::filesystem::path& directory, const config::Parameters& parameters,
                        const std::string& run_name) {
-  if (config.integer("log.decimation") == 0) {
+  if (parameters.log.decimation == 0) {
     spdlog::info("no replays: the run logged no ticks (log.decimation: 0)");
     return true;
   }
   try {
     const std::string page = page_template();
     store::Manifest manifest(directory / "figures");
-    for (const std::string& arm : run_arms(directory, config)) {
+    for (const std::string& arm : run_arms(directory, parameters.run)) {
       manifest.check_writable({replay_figure(arm)}, "the replay");
       manifest.add({replay_figure(arm)});
       store::write_atomically(

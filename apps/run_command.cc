@@ -25,21 +25,25 @@
 namespace cbbg::app {
 namespace {
 
-// Applies the file, the overrides and the run flags, in that order; validates everything.
+// Applies the file, the overrides and the run flags, in that order.
 config::Config resolve(const RunOptions& options) {
   config::Config config;
   if (!options.config_file.empty()) config.merge_file(options.config_file);
   for (const auto& assignment : options.sets) config.set(assignment);
   if (options.experiment) {
+    const std::string flag = "--experiment " + *options.experiment;
     if (options.experiment->empty()) {
-      throw config::ConfigError("--experiment needs a name: exp1, exp2 or a diagram (cbbg list)");
+      throw config::ConfigError("--experiment needs a name: a protocol or a diagram (cbbg list)");
     }
-    config.set("experiment=" + *options.experiment, "--experiment " + *options.experiment);
+    config.set("experiment=" + *options.experiment, flag);
+    try {
+      experiments::check_experiment_name(*options.experiment);
+    } catch (const config::ConfigError& error) {
+      throw config::ConfigError(flag + ": " + error.what());
+    }
   }
   if (options.seeds) config.set("seeds=" + *options.seeds, "--seeds " + *options.seeds);
   if (options.seed) config.set("seed=" + *options.seed, "--seed " + *options.seed);
-  diagrams::validated_parameters(config);
-  experiments::check_evaluation_conditions(config);
   return config;
 }
 
@@ -112,17 +116,18 @@ void print_summary(const experiments::ExperimentResults& results) {
 }
 
 // Learning runs of the experiment: every (arm, seed) of an arm with basal ganglia.
-long long learning_runs(const config::Config& config) {
-  const std::vector<std::string> arms = experiments::experiment_arms(config);
+long long learning_runs(const config::RunParams& run) {
+  const std::vector<std::string> arms = experiments::experiment_arms(run);
   const auto learning = std::count_if(arms.begin(), arms.end(), [](const std::string& arm) {
     return diagrams::preset(arm).options.basal_ganglia;
   });
-  return learning * config.integer("seeds");
+  return learning * run.seeds;
 }
 
 // What a run needs before it starts: everything checked, the work directory made.
 struct PreparedRun {
-  config::Config config;
+  config::Config config;  // what the results directory records
+  config::Parameters parameters;
   std::optional<store::RunDirectory> directory;
   std::optional<experiments::LearntWeights> initial_weights;
 };
@@ -146,16 +151,15 @@ PreparedRun prepare(const RunOptions& options) {
     run.directory = store::RunDirectory::resume(*options.resume);
     run.config = run.directory->config();
     if (run.directory->published()) return run;
-    diagrams::validated_parameters(run.config);
-    experiments::check_evaluation_conditions(run.config);
   } else {
     run.config = resolve(options);
   }
+  run.parameters = checked_parameters(run.config);
   if (!options.save_weights.empty()) {
-    if (learning_runs(run.config) != 1) {
+    if (learning_runs(run.parameters.run) != 1) {
       throw config::ConfigError(
           "--save-weights keeps the weights of one learning run; this run has " +
-          std::to_string(learning_runs(run.config)) +
+          std::to_string(learning_runs(run.parameters.run)) +
           " (use --experiment ARM --seeds 1; every run's weights are in DIR/weights/)");
     }
     check_output_file(options.save_weights, "--save-weights");
@@ -163,7 +167,7 @@ PreparedRun prepare(const RunOptions& options) {
   }
   if (!options.load_weights.empty()) {
     run.initial_weights = store::load_weights(options.load_weights);
-    store::check_layout(*run.initial_weights, run.config, options.load_weights);
+    store::check_layout(*run.initial_weights, run.parameters, options.load_weights);
   }
   if (!run.directory) {
     run.directory = store::RunDirectory::create(
@@ -180,12 +184,13 @@ PreparedRun prepare(const RunOptions& options) {
 
 void execute(const RunOptions& options, PreparedRun& run) {
   const config::Config& config = run.config;
+  const config::RunParams& what = run.parameters.run;
   store::RunDirectory& directory = *run.directory;
-  const std::size_t arms = experiments::experiment_arms(config).size();
-  const std::size_t tasks = arms * static_cast<std::size_t>(config.integer("seeds"));
-  spdlog::info("{}: {} seed(s) x {} arm(s) on the {} plant, {} thread(s){}",
-               config.text("experiment"), config.integer("seeds"), arms, config.text("plant.kind"),
-               options.jobs, options.resume ? ", resumed" : "");
+  const std::size_t arms = experiments::experiment_arms(what).size();
+  const std::size_t tasks = arms * static_cast<std::size_t>(what.seeds);
+  spdlog::info("{}: {} seed(s) x {} arm(s) on the {} plant, {} thread(s){}", what.experiment,
+               what.seeds, arms, run.parameters.plant.kind, options.jobs,
+               options.resume ? ", resumed" : "");
   const store::TaskStore store(directory.tasks());
   Progress progress(tasks, ::isatty(STDERR_FILENO) == 1);
   experiments::ExperimentOptions experiment;
@@ -193,11 +198,12 @@ void execute(const RunOptions& options, PreparedRun& run) {
   experiment.progress = [&progress](const experiments::SeedRun& seed) { progress.finished(seed); };
   experiment.store = &store;
   if (run.initial_weights) experiment.initial_weights = &*run.initial_weights;
-  const experiments::ExperimentResults results = experiments::run_experiment(config, experiment);
+  const experiments::ExperimentResults results =
+      experiments::run_experiment(run.parameters, experiment);
   progress.close();
   store::write_result_files(results, config, directory.work(), &store);
   if (directory.shape().figures) {
-    draw_figures(directory.work(), config,
+    draw_figures(directory.work(), run.parameters,
                  {.quiet = true,
                   .replays = directory.shape().replays,
                   .run_name = directory.target().filename().string()});
@@ -215,6 +221,13 @@ void execute(const RunOptions& options, PreparedRun& run) {
 
 }  // namespace
 
+config::Parameters checked_parameters(const config::Config& config) {
+  config::Parameters parameters = diagrams::validated_parameters(config);
+  experiments::check_run_names(parameters.run);
+  experiments::check_evaluation_conditions(parameters);
+  return parameters;
+}
+
 int run_command(const RunOptions& options) {
   if (!options.resume) {
     config::Sweep sweep;
@@ -222,6 +235,7 @@ int run_command(const RunOptions& options) {
     try {
       if (!options.config_file.empty()) {
         base = resolve(options);  // checks the file before its sweep: section is read
+        checked_parameters(base);
         sweep.add_file(options.config_file);
       }
       for (const std::string& axis : options.grid) sweep.add_flag(axis);

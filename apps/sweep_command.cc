@@ -13,8 +13,6 @@
 #include "apps/errors.h"
 #include "apps/figures.h"
 #include "config/sweep.h"
-#include "diagrams/validated_parameters.h"
-#include "experiments/evaluation_conditions.h"
 #include "experiments/experiments.h"
 #include "store/files.h"
 #include "store/results_writer.h"
@@ -32,30 +30,29 @@ struct SweepPlan {
   config::Config base;
   config::Sweep sweep;
   std::vector<config::Config> points;
+  std::vector<config::Parameters> parameters;  // each point's, checked
   std::vector<std::size_t> first_task;
   std::size_t tasks = 0;
 };
 
-std::size_t point_tasks(const config::Config& point) {
-  return experiments::experiment_arms(point).size() *
-         static_cast<std::size_t>(point.integer("seeds"));
+std::size_t point_tasks(const config::RunParams& point) {
+  return experiments::experiment_arms(point).size() * static_cast<std::size_t>(point.seeds);
 }
 
 // Checks every grid point's config before anything runs.
 SweepPlan plan(config::Config base, config::Sweep sweep) {
-  SweepPlan result{std::move(base), std::move(sweep), {}, {}, 0};
+  SweepPlan result{std::move(base), std::move(sweep), {}, {}, {}, 0};
   result.sweep.check(result.base);
   for (std::size_t p = 0; p < result.sweep.points(); ++p) {
     result.points.push_back(result.sweep.config(result.base, p));
     try {
-      diagrams::validated_parameters(result.points.back());
-      experiments::check_evaluation_conditions(result.points.back());
+      result.parameters.push_back(checked_parameters(result.points.back()));
     } catch (const config::ConfigError& error) {
       throw config::ConfigError("grid point " + store::point_name(p, result.sweep.points()) + ": " +
                                 error.what());
     }
     result.first_task.push_back(result.tasks);
-    result.tasks += point_tasks(result.points.back());
+    result.tasks += point_tasks(result.parameters.back().run);
   }
   return result;
 }
@@ -106,7 +103,7 @@ void run_shard(const SweepPlan& plan, const store::SweepDirectory& directory, in
     options.runs_task = [first, k, n](std::size_t task) {
       return (first + task) % static_cast<std::size_t>(n) == static_cast<std::size_t>(k - 1);
     };
-    experiments::run_experiment(plan.points[p], options);
+    experiments::run_experiment(plan.parameters[p], options);
   }
 }
 
@@ -116,9 +113,9 @@ std::vector<std::string> missing_tasks(const SweepPlan& plan,
   std::vector<std::string> missing;
   for (std::size_t p = 0; p < plan.points.size(); ++p) {
     const store::TaskStore store(directory.tasks(p, plan.points.size()));
-    const config::Config& point = plan.points[p];
+    const config::RunParams& point = plan.parameters[p].run;
     const auto arms = experiments::experiment_arms(point);
-    const auto seeds = static_cast<std::size_t>(point.integer("seeds"));
+    const auto seeds = static_cast<std::size_t>(point.seeds);
     for (std::size_t t = 0; t < arms.size() * seeds; ++t) {
       if (store.has(t)) continue;
       std::string name = "point " + store::point_name(p, plan.points.size()) + " (";
@@ -127,7 +124,7 @@ std::vector<std::string> missing_tasks(const SweepPlan& plan,
         name += (a == 0 ? "" : ", ") + plan.sweep.axes()[a].key + "=" + values[a];
       }
       name += ") " + arms[t / seeds] + " seed " +
-              std::to_string(point.integer("seed") + static_cast<long long>(t % seeds));
+              std::to_string(point.seed + static_cast<long long>(t % seeds));
       missing.push_back(name);
     }
   }
@@ -153,7 +150,7 @@ void merge(const SweepPlan& plan, store::SweepDirectory& directory) {
       const store::TaskStore store(directory.tasks(p, plan.points.size()));
       experiments::ExperimentOptions options;
       options.store = &store;  // every task is there: loaded, none run
-      results.push_back(experiments::run_experiment(plan.points[p], options));
+      results.push_back(experiments::run_experiment(plan.parameters[p], options));
       const std::filesystem::path out = directory.point_results(p, plan.points.size());
       std::filesystem::create_directories(out);
       store::write_result_files(results.back(), plan.points[p], out, &store);

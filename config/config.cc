@@ -1,6 +1,7 @@
 #include "config/config.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -74,6 +75,12 @@ std::string join(const std::vector<std::string>& items) {
   return text;
 }
 
+// What a text of `spec` may be: one of its words, or any name.
+std::string words_text(const KeySpec& spec) {
+  return spec.choices.empty() ? "a name (" + std::string(kNameRule) + ")"
+                              : "one of " + join(spec.choices);
+}
+
 class Parser {
  public:
   explicit Parser(std::string source) : source_(std::move(source)) {}
@@ -116,9 +123,11 @@ class Parser {
 
   std::string parse_choice(const KeySpec& spec, const std::string& label,
                            const YAML::Node& node) const {
-    if (!node.IsScalar())
-      fail(label + " must be one of " + join(spec.choices) + "; got " + shown(node));
+    if (!node.IsScalar()) fail(label + " must be " + words_text(spec) + "; got " + shown(node));
     const std::string& value = node.Scalar();
+    if (spec.choices.empty() && !is_name(value)) {
+      fail(label + " must be " + words_text(spec) + "; got " + shown(node));
+    }
     if (!spec.choices.empty() &&
         std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {
       fail(label + " must be one of " + join(spec.choices) + "; got '" + value + "'");
@@ -151,7 +160,8 @@ class Parser {
       }
       case Kind::kNames: {
         if (!node.IsSequence() || node.size() == 0) {
-          fail(key + " must be a non-empty list of " + join(spec.choices) + "; got " + shown(node));
+          fail(key + " must be a non-empty list of " +
+               (spec.choices.empty() ? "names" : join(spec.choices)) + "; got " + shown(node));
         }
         std::vector<std::string> values;
         for (std::size_t i = 0; i < node.size(); ++i) {
@@ -322,9 +332,9 @@ std::string allowed_values(const KeySpec& spec) {
       return "an integer " + range_text(spec);
     case Kind::kText:
     case Kind::kNames:
-      return spec.choices.empty()
-                 ? "any text"
-                 : (spec.kind == Kind::kNames ? "a list of " : "one of ") + join(spec.choices);
+      if (spec.kind == Kind::kText) return words_text(spec);
+      return spec.choices.empty() ? "a list of names (" + std::string(kNameRule) + ")"
+                                  : "a list of " + join(spec.choices);
     case Kind::kNumbers: {
       const std::string count =
           spec.list_size > 0 ? std::to_string(spec.list_size) + " numbers" : "a list of numbers";
@@ -334,6 +344,15 @@ std::string allowed_values(const KeySpec& spec) {
       return "a list of {from_trial, k1}";
   }
   return "";
+}
+
+bool is_name(std::string_view text) {
+  if (text.empty() || text.size() > 100 || text.front() == '-' || text.front() == '.') {
+    return false;
+  }
+  return std::all_of(text.begin(), text.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-' || c == '.';
+  });
 }
 
 std::string closest_key(std::string_view unknown) {

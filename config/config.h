@@ -3,7 +3,7 @@
 // structs (config/parameters.h, and a user's registered sections: config/declared_keys.h),
 // merged from their defaults, a YAML file and `--set key.path=value` overrides, in that
 // order. Types, choices and ranges are checked here, as each value arrives; invariants a
-// block owns beyond its ranges, and rules across keys, by diagrams::validate_all.
+// block owns beyond its ranges, and rules across keys, by diagrams::validated_parameters.
 
 #include <cstdint>
 #include <filesystem>
@@ -65,9 +65,6 @@ const std::vector<KeySpec>& schema();
 // pd, lqr", "6 numbers >= 0".
 std::string allowed_values(const KeySpec& spec);
 
-// The diagram names an arm or `experiment` may take.
-const std::vector<std::string>& diagram_names();
-
 class Config {
  public:
   // The built-in defaults.
@@ -89,18 +86,25 @@ class Config {
   const std::vector<double>& numbers(std::string_view key) const;
   const std::vector<std::string>& names(std::string_view key) const;
   const std::vector<AnnealingStep>& annealing(std::string_view key) const;
+  // The value of `key` whatever its kind; std::logic_error for a key no declaration made.
+  const Value& value(std::string_view key) const;
 
   // The fully resolved tree as YAML, in schema order; it loads back to the same Config.
   std::string to_yaml() const;
   bool operator==(const Config&) const = default;
 
  private:
-  const Value& value(std::string_view key) const;
-
   std::map<std::string, Value, std::less<>> values_;
 };
 
 // The key closest to `unknown` by edit distance, or "" when none is close.
 std::string closest_key(std::string_view unknown);
+
+// What a name is, where a key takes any name (`arms`, `experiment`, a user's word): 1 to 100
+// letters, digits, '_', '-' and '.', not starting with '-' or '.'. Names become file names
+// (weights/<arm>_seed<k>.txt) and columns, so nothing else is one.
+inline constexpr const char* kNameRule =
+    "1 to 100 letters, digits, '_', '-' and '.', not starting with '-' or '.'";
+bool is_name(std::string_view text);
 
 }  // namespace cbbg::config

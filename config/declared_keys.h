@@ -11,7 +11,8 @@
 //   };
 //   cbbg::config::register_section<DlqrParams>("dlqr");   // before any Config is made
 //   ... --set dlqr.q_theta=50, --grid dlqr.q_theta=10,100, config.yaml, `cbbg list` ...
-//   const DlqrParams dlqr = cbbg::config::read_section<DlqrParams>(config, "dlqr");
+//   // below the edge, from the typed tree (config/parameters.h) a factory is given:
+//   const DlqrParams dlqr = cbbg::config::read_section<DlqrParams>(parameters.own, "dlqr");
 
 #include <array>
 #include <string>
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "config/config.h"
+#include "config/own_sections.h"
 #include "framework/parameters.h"
 
 namespace cbbg::config {
@@ -86,11 +88,12 @@ class KeyCollector {
   std::vector<KeySpec>& keys_;
 };
 
-// The archive that fills a params struct from a config, whose values were checked against
-// the same declarations as they arrived.
+// The archive that fills a params struct from a Config or OwnSections (`Source`), whose
+// values were checked against the same declarations as they arrived.
+template <class Source>
 class KeyReader {
  public:
-  KeyReader(const Config& config, std::string prefix)
+  KeyReader(const Source& config, std::string prefix)
       : config_(config), prefix_(std::move(prefix)) {}
 
   void number(std::string_view key, double& value, std::string_view, const Bounds&) {
@@ -135,7 +138,7 @@ class KeyReader {
  private:
   std::string path(std::string_view key) const { return prefix_ + std::string(key); }
 
-  const Config& config_;
+  const Source& config_;
   std::string prefix_;
 };
 
@@ -208,9 +211,10 @@ void register_section(std::string_view name) {
   register_keys(declared_keys(Params{}, name));
 }
 
-// The section `name` of `config` as its struct.
-template <typename Params>
-Params read_section(const Config& config, std::string_view name) {
+// The section `name` of `config` (a Config, or the OwnSections of the typed tree) as its
+// struct.
+template <typename Params, class Source>
+Params read_section(const Source& config, std::string_view name) {
   Params params;
   KeyReader reader(config, std::string(name) + ".");
   params.describe(reader);

@@ -10,25 +10,21 @@
 namespace cbbg::config {
 namespace {
 
+std::vector<KeySpec> built_in_keys() { return declared_keys(Parameters{}, ""); }
+
 // Every key: the built-in tree's, then the sections users registered.
 std::vector<KeySpec>& keys() {
-  static std::vector<KeySpec> all = declared_keys(Parameters{}, "");
+  static std::vector<KeySpec> all = built_in_keys();
   return all;
 }
 
+// How many of keys() the built-in tree declares; the registered sections' follow.
+std::size_t built_in_count() {
+  static const std::size_t count = built_in_keys().size();
+  return count;
+}
+
 }  // namespace
-
-const std::vector<std::string>& diagram_names() {
-  static const std::vector<std::string> names{"cbbg", "cbbg_weighted", "bg_only", "cb_only",
-                                              "pd_only"};
-  return names;
-}
-
-std::vector<std::string> experiment_names() {
-  std::vector<std::string> names{"exp1", "exp2", "exp3"};
-  for (const auto& name : diagram_names()) names.push_back(name);
-  return names;
-}
 
 const std::vector<KeySpec>& schema() { return keys(); }
 
@@ -74,13 +70,26 @@ void write_parameters(const Parameters& parameters, Config& config) {
   Parameters copy = parameters;
   KeyWriter writer(config, "");
   copy.describe(writer);
+  for (const auto& [key, value] : parameters.own.values) config.assign(key, value);
 }
 
 Parameters read_parameters(const Config& config) {
   Parameters parameters;
   KeyReader reader(config, "");
   parameters.describe(reader);
+  for (std::size_t k = built_in_count(); k < keys().size(); ++k) {
+    parameters.own.values.emplace(keys()[k].path, config.value(keys()[k].path));
+  }
   return parameters;
+}
+
+const Value& OwnSections::at(std::string_view key) const {
+  const auto found = values.find(key);
+  if (found == values.end()) {
+    throw std::logic_error("no registered section declares the key '" + std::string(key) +
+                           "'; register_section before making the config");
+  }
+  return found->second;
 }
 
 }  // namespace cbbg::config

@@ -22,13 +22,11 @@
 #include "blocks/torque_push.h"
 #include "blocks/tropism.h"
 #include "config/config.h"
+#include "config/own_sections.h"
 #include "framework/parameters.h"
 #include "plant/robot_params.h"
 
 namespace cbbg::config {
-
-// exp1, exp2, exp3, then the diagram names: what `experiment` may be.
-std::vector<std::string> experiment_names();
 
 // What runs, how often: the keys without a section.
 struct RunParams {
@@ -40,10 +38,16 @@ struct RunParams {
 
   template <class Archive>
   void describe(Archive& a) {
+    // Protocols and presets are named by their own tables (experiments/, diagrams/presets.h),
+    // which `cbbg run` checks these against; a library run records its own arms here.
     a.text("experiment", experiment,
-           "exp1 | exp2 | exp3 (skill acquisition) | a diagram name (one arm, exp1's protocol)",
-           experiment_names());
-    a.names("arms", arms, "diagrams compared in one run (exp1, exp3)", diagram_names());
+           "a protocol (exp1, exp2, exp3) or a diagram, run alone under exp1's protocol "
+           "(`cbbg list`)",
+           {});
+    a.names("arms", arms,
+            "diagrams compared in one run (exp1, exp3): presets for `cbbg run` (`cbbg list`); "
+            "a library run records its own arms here",
+            {});
     a.integer("seeds", seeds, "independent runs per arm; run k uses root seed + k",
               interval(1, kMaxSeeds));
     a.integer("seed", seed, "root seed", interval(0, kMaxSeed));
@@ -183,6 +187,8 @@ struct Parameters {
   LogParams log;
   EvaluationParams evaluation;
   Exp3Params exp3;
+  // The sections users registered (config/declared_keys.h), by full key; not declared here.
+  OwnSections own;
 
   // The rules across sections: trial.duration >= trial.period; trial.theta0 and every
   // evaluation.angles and exp3.angles entry strictly inside trial.failure_angle. Throws
@@ -215,10 +221,11 @@ struct Parameters {
 };
 
 // The typed tree of `config`, whose every value was checked against its declaration as it
-// arrived. Cross-key rules and a block's own invariants are diagrams::validate_all's.
+// arrived, the registered sections' values in `own`. Cross-key rules and a block's own
+// invariants are checked by diagrams::validated_parameters, the edge of a run.
 Parameters read_parameters(const Config& config);
-// Writes `parameters` into `config` (its other sections, a user's, stay). Throws ConfigError
-// naming the first value outside its declaration.
+// Writes `parameters` into `config`, the registered sections too. Throws ConfigError naming
+// the first value outside its declaration.
 void write_parameters(const Parameters& parameters, Config& config);
 
 }  // namespace cbbg::config

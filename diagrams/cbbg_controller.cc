@@ -15,28 +15,25 @@
 namespace cbbg::diagrams {
 namespace {
 
-std::unique_ptr<Block> configured_supervisor(const std::string& name,
-                                             const config::Config& config) {
-  const config::Parameters p = config::read_parameters(config);
+std::unique_ptr<Block> configured_supervisor(const std::string& name, const config::Parameters& p) {
   if (p.supervisor.kind == "lqr") {
     return std::make_unique<blocks::LqrSupervisor>(name, p.plant.robot, p.supervisor.lqr);
   }
   return std::make_unique<blocks::PdSupervisor>(name, p.supervisor.pd);
 }
 
-std::unique_ptr<Block> configured_normaliser(const std::string& name,
-                                             const config::Config& config) {
-  return std::make_unique<blocks::Normaliser>(name, config::read_parameters(config).normaliser);
+std::unique_ptr<Block> configured_normaliser(const std::string& name, const config::Parameters& p) {
+  return std::make_unique<blocks::Normaliser>(name, p.normaliser);
 }
 
-std::unique_ptr<Block> configured_features(const std::string& name, const config::Config& config) {
-  return std::make_unique<blocks::RbfFeatures>(name, config::read_parameters(config).rbf);
+std::unique_ptr<Block> configured_features(const std::string& name, const config::Parameters& p) {
+  return std::make_unique<blocks::RbfFeatures>(name, p.rbf);
 }
 
-// The slot's block: the user's where a factory is given, else the config's.
+// The slot's block: the user's where a factory is given, else the parameters'.
 std::unique_ptr<Block> fill_slot(const BlockFactory& user, const BlockFactory& configured,
-                                 const std::string& name, const config::Config& config) {
-  std::unique_ptr<Block> block = user ? user(name, config) : configured(name, config);
+                                 const std::string& name, const config::Parameters& p) {
+  std::unique_ptr<Block> block = user ? user(name, p) : configured(name, p);
   if (!block) throw std::invalid_argument("the factory of slot '" + name + "' returned null");
   return block;
 }
@@ -70,7 +67,7 @@ void ControllerOptions::validate() const {
   }
 }
 
-CbbgController::CbbgController(std::string name, const config::Config& config,
+CbbgController::CbbgController(std::string name, const config::Parameters& parameters,
                                const ControllerOptions& options)
     : Diagram(std::move(name)) {
   options.validate();
@@ -79,7 +76,7 @@ CbbgController::CbbgController(std::string name, const config::Config& config,
   if (options.supervisor) {
     auto& cerebellum = builder.emplace<Cerebellum>(
         "cerebellum",
-        fill_slot(options.slots.supervisor, configured_supervisor, "supervisor", config));
+        fill_slot(options.slots.supervisor, configured_supervisor, "supervisor", parameters));
     cerebellum_ = &cerebellum;
     measured_ = &builder.export_input(cerebellum.measured(), "measured");
     supervisor_action = &cerebellum.action();
@@ -87,24 +84,23 @@ CbbgController::CbbgController(std::string name, const config::Config& config,
     supervisor_action = &constant(builder, "no_supervisor", 0.0);
   }
   if (options.basal_ganglia) {
-    add_basal_ganglia(builder, config, options, *supervisor_action);
+    add_basal_ganglia(builder, parameters, options, *supervisor_action);
   } else {
     add_supervisor_alone(builder, *supervisor_action);
   }
   builder.build_into();
 }
 
-void CbbgController::add_basal_ganglia(DiagramBuilder& builder, const config::Config& config,
+void CbbgController::add_basal_ganglia(DiagramBuilder& builder, const config::Parameters& p,
                                        const ControllerOptions& options,
                                        const OutputPort& supervisor_action) {
-  const config::Parameters p = config::read_parameters(config);
   const double period = p.trial.period;
   blocks::OmegaParams omega_params = p.omega;
   omega_params.mode = options.omega;
   const Block& normaliser =
-      builder.add(fill_slot(options.slots.normaliser, configured_normaliser, "normaliser", config));
+      builder.add(fill_slot(options.slots.normaliser, configured_normaliser, "normaliser", p));
   auto& basal_ganglia = builder.emplace<BasalGanglia>(
-      "basal_ganglia", fill_slot(options.slots.features, configured_features, "features", config),
+      "basal_ganglia", fill_slot(options.slots.features, configured_features, "features", p),
       basal_ganglia_params(p, options));
   auto& omega = builder.emplace<blocks::OmegaSchedule>("omega", omega_params, period);
   auto& mixer = builder.emplace<blocks::Mixer>("mixer");

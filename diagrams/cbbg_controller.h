@@ -11,7 +11,7 @@
 
 #include "blocks/actor.h"
 #include "blocks/omega_schedule.h"
-#include "config/config.h"
+#include "config/parameters.h"
 #include "diagrams/basal_ganglia.h"
 #include "diagrams/cerebellum.h"
 #include "framework/diagram.h"
@@ -22,12 +22,13 @@ class DiagramBuilder;
 
 namespace cbbg::diagrams {
 
-// Makes the block of one slot, named `name`, from the config. Called once per controller
-// built (so once per task, maybe in several threads at once).
-using BlockFactory =
-    std::function<std::unique_ptr<Block>(const std::string& name, const config::Config& config)>;
+// Makes the block of one slot, named `name`, from the run's typed parameters (a user's own
+// section is in parameters.own: config/own_sections.h). Called once per controller built (so
+// once per task, maybe in several threads at once).
+using BlockFactory = std::function<std::unique_ptr<Block>(const std::string& name,
+                                                          const config::Parameters& parameters)>;
 
-// The blocks that fill the controller's slots; an empty factory takes the config's.
+// The blocks that fill the controller's slots; an empty factory takes the parameters' own.
 struct ControllerSlots {
   // Input "measured" (6, blocks/measured_signals.h), output "action" (1): a_S. Default:
   // supervisor.kind's (blocks::PdSupervisor or blocks::LqrSupervisor).
@@ -84,7 +85,8 @@ struct ControllerOptions {
 /// "basal_ganglia" (BasalGanglia), "omega" (blocks::OmegaSchedule), "mixer".
 class CbbgController final : public Diagram {
  public:
-  CbbgController(std::string name, const config::Config& config, const ControllerOptions& options);
+  CbbgController(std::string name, const config::Parameters& parameters,
+                 const ControllerOptions& options);
 
   const InputPort& measured() const { return *measured_; }
   // Null without basal ganglia: a supervisor alone needs neither.
@@ -98,7 +100,7 @@ class CbbgController final : public Diagram {
 
  private:
   // Adds normaliser, basal ganglia, omega and mixer, and exports their outputs.
-  void add_basal_ganglia(DiagramBuilder& builder, const config::Config& config,
+  void add_basal_ganglia(DiagramBuilder& builder, const config::Parameters& parameters,
                          const ControllerOptions& options, const OutputPort& supervisor_action);
   // Exports the supervisor's action as the action; the learning outputs are NaN.
   void add_supervisor_alone(DiagramBuilder& builder, const OutputPort& supervisor_action);

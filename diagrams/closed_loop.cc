@@ -17,8 +17,7 @@ namespace cbbg::diagrams {
 namespace {
 
 std::unique_ptr<plant::RobotPlant> configured_plant(const std::string& name,
-                                                    const config::Config& config) {
-  const config::Parameters p = config::read_parameters(config);
+                                                    const config::Parameters& p) {
   if (p.plant.kind == "analytic") {
     return std::make_unique<plant::AnalyticPlant>(name, p.plant.robot, p.trial.theta0);
   }
@@ -102,17 +101,16 @@ void ClosedLoop::start_trial(Context& context, double theta0) const {
   plant->reset(context, theta0);
 }
 
-ClosedLoop build_closed_loop(std::string name, const config::Config& config,
+ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
                              std::unique_ptr<CbbgController> controller,
                              const ClosedLoopOptions& options) {
-  const config::Parameters p = config::read_parameters(config);
   ClosedLoop loop;
   loop.accuracy = p.plant.robot.accuracy;
   loop.wheel_radius = p.plant.robot.wheel_radius;
   const double period = p.trial.period;
   DiagramBuilder builder(std::move(name));
   std::unique_ptr<plant::RobotPlant> made =
-      options.plant ? options.plant("plant", config) : configured_plant("plant", config);
+      options.plant ? options.plant("plant", p) : configured_plant("plant", p);
   if (!made) throw std::invalid_argument("the plant factory returned null");
   check_plant_ports(*made);
   const plant::RobotPlant& robot = builder.add(std::move(made));
@@ -143,9 +141,10 @@ ClosedLoopFactory closed_loop_factory(std::string name, ControllerOptions contro
                                       ClosedLoopOptions options) {
   controller.validate();
   return [name = std::move(name), controller = std::move(controller),
-          options = std::move(options)](const config::Config& config) {
-    return build_closed_loop(
-        name, config, std::make_unique<CbbgController>("controller", config, controller), options);
+          options = std::move(options)](const config::Parameters& parameters) {
+    return build_closed_loop(name, parameters,
+                             std::make_unique<CbbgController>("controller", parameters, controller),
+                             options);
   };
 }
 

@@ -5,8 +5,8 @@
 //
 //   plant -> sensors -> failure, reward -> controller -> hold [-> push] -> both wheels -> plant
 //
-// The protocols (experiments/) take a ClosedLoopFactory: any callable that builds one for a
-// config. The presets (presets.h) are such factories; a user writes another.
+// The protocols (experiments/) take a ClosedLoopFactory: any callable that builds one from
+// the run's typed parameters. The presets (presets.h) are such factories; a user writes another.
 
 #include <functional>
 #include <memory>
@@ -16,7 +16,6 @@
 #include "blocks/critic.h"
 #include "blocks/torque_push.h"
 #include "blocks/tropism.h"
-#include "config/config.h"
 #include "diagrams/cbbg_controller.h"
 #include "diagrams/telemetry.h"
 #include "framework/diagram.h"
@@ -47,9 +46,9 @@ struct ClosedLoop {
   void start_trial(Context& context, double theta0) const;
 };
 
-// Makes the plant block named `name` for a config.
+// Makes the plant block named `name` from the run's typed parameters.
 using PlantFactory = std::function<std::unique_ptr<plant::RobotPlant>(
-    const std::string& name, const config::Config& config)>;
+    const std::string& name, const config::Parameters& parameters)>;
 
 struct ClosedLoopOptions {
   // Empty: plant.kind's (plant::SimbodyPlant or plant::AnalyticPlant).
@@ -62,13 +61,13 @@ struct ClosedLoopOptions {
 // Wires `controller` (named anything; its ports as CbbgController's) into the closed loop
 // named `name`. Throws std::invalid_argument when the plant's ports are not the
 // RobotPlant's, config::ConfigError for a value a block rejects.
-ClosedLoop build_closed_loop(std::string name, const config::Config& config,
+ClosedLoop build_closed_loop(std::string name, const config::Parameters& parameters,
                              std::unique_ptr<CbbgController> controller,
                              const ClosedLoopOptions& options = {});
 
-// Builds the closed loop of one arm for a config; called once per task (maybe in several
-// threads at once, each with its own result).
-using ClosedLoopFactory = std::function<ClosedLoop(const config::Config& config)>;
+// Builds the closed loop of one arm from the run's typed parameters; called once per task
+// (maybe in several threads at once, each with its own result).
+using ClosedLoopFactory = std::function<ClosedLoop(const config::Parameters& parameters)>;
 
 // The factory of a CB-BG controller with `controller` options, in a closed loop named `name`.
 ClosedLoopFactory closed_loop_factory(std::string name, ControllerOptions controller,

@@ -57,6 +57,14 @@ const std::vector<Preset>& presets() {
   return table;
 }
 
+std::vector<std::string> arm_names() {
+  std::vector<std::string> names;
+  for (const auto& row : presets()) {
+    if (row.name != kLearntActor) names.push_back(row.name);
+  }
+  return names;
+}
+
 const Preset& preset(std::string_view name) {
   std::string known;
   for (const auto& row : presets()) {
@@ -76,9 +84,9 @@ ControllerOptions learnt_actor(ControllerOptions options) {
   return options;
 }
 
-ClosedLoop build_preset(std::string_view name, const config::Config& config,
+ClosedLoop build_preset(std::string_view name, const config::Parameters& parameters,
                         const ClosedLoopOptions& loop) {
-  return closed_loop_factory(std::string(name), preset(name).options, loop)(config);
+  return closed_loop_factory(std::string(name), preset(name).options, loop)(parameters);
 }
 
 Arm make_arm(std::string name, const ControllerOptions& options, const ClosedLoopOptions& loop) {

@@ -14,7 +14,7 @@
 // An ablation in user code is one more set of options:
 //
 //   diagrams::ControllerOptions mine = diagrams::preset("cbbg").options;
-//   mine.slots.supervisor = [](const std::string& name, const config::Config&) {
+//   mine.slots.supervisor = [](const std::string& name, const config::Parameters&) {
 //     return std::make_unique<MySupervisor>(name);
 //   };
 //   const diagrams::Arm arm = diagrams::make_arm("cbbg_mine", mine);
@@ -36,8 +36,11 @@ struct Preset {
 
 inline constexpr const char* kLearntActor = "learnt_actor";
 
-// Every preset, in the order above.
+// Every preset, in the order above: the one list of the diagrams' names, from which `cbbg
+// list`, the help and the checks of `arms` and `experiment` are made.
 const std::vector<Preset>& presets();
+// The presets' names that are arms (every one but learnt_actor), in the table's order.
+std::vector<std::string> arm_names();
 // The preset named `name`; std::invalid_argument listing the presets for another name.
 const Preset& preset(std::string_view name);
 
@@ -54,7 +57,7 @@ struct Arm {
 };
 
 // The closed loop of preset `name` (learnt_actor included), named after it.
-ClosedLoop build_preset(std::string_view name, const config::Config& config,
+ClosedLoop build_preset(std::string_view name, const config::Parameters& parameters,
                         const ClosedLoopOptions& loop = {});
 
 Arm make_arm(std::string name, const ControllerOptions& options,

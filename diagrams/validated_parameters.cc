@@ -37,13 +37,18 @@ void check_blocks(const config::Parameters& p) {
 
 config::Parameters validated_parameters(const config::Config& config) {
   const config::Parameters parameters = config::read_parameters(config);
+  validate_parameters(parameters);
+  return parameters;
+}
+
+void validate_parameters(const config::Parameters& parameters) {
   try {
+    check_declared(parameters, "");
     check_blocks(parameters);
   } catch (const std::invalid_argument& error) {
     throw config::ConfigError(error.what());
   }
   parameters.check_across_sections();
-  return parameters;
 }
 
 }  // namespace cbbg::diagrams

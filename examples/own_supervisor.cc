@@ -3,10 +3,13 @@
 // through experiment 1 against the built-in cbbg preset. Seed k gives both arms the same
 // random streams (common random numbers), so the comparison is paired seed by seed.
 //
-//   own_supervisor OUTPUT_DIR [SEEDS]
+//   own_supervisor OUTPUT_DIR [SEEDS [KEY=VALUE | --grid=KEY=V1,V2 ...]]
 //
 // Writes a results directory (config.yaml, summary.json, trials.csv, evaluation.csv,
-// steps.csv, weights/) and figures/diagram.svg (diagram.dot without Graphviz) there.
+// steps.csv, weights/) and figures/diagram.svg (diagram.dot without Graphviz) there; with
+// --grid axes (the supervisor's own keys too), one such directory per grid point,
+// OUTPUT_DIR/point_NNN. The config is read once, here: below, everything takes the typed
+// parameters, the supervisor its own section of them.
 
 #include <algorithm>
 #include <cstdio>
@@ -14,16 +17,20 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "blocks/measured_signals.h"
 #include "config/declared_keys.h"
 #include "config/parameters.h"
+#include "config/sweep.h"
 #include "diagrams/presets.h"
+#include "diagrams/validated_parameters.h"
 #include "experiments/experiments.h"
 #include "framework/block_context.h"
 #include "framework/graphviz.h"
 #include "store/results_writer.h"
 #include "store/run_directory.h"
+#include "store/sweep_directory.h"
 #include "store/task_store.h"
 
 namespace {
@@ -66,11 +73,11 @@ class SaturatedPd final : public Block {
   }
 };
 
-void render(const diagrams::Arm& arm, const config::Config& config,
+void render(const diagrams::Arm& arm, const config::Parameters& parameters,
             const std::filesystem::path& figures) {
   std::filesystem::create_directories(figures);
   const std::string dot =
-      to_dot(*arm.learner(config).diagram, {.hidden_blocks = {arm.name + "/telemetry"}});
+      to_dot(*arm.learner(parameters).diagram, {.hidden_blocks = {arm.name + "/telemetry"}});
   try {
     render_dot(dot, figures / "diagram.svg");
   } catch (const std::runtime_error& error) {  // no Graphviz: the DOT text still tells
@@ -79,49 +86,92 @@ void render(const diagrams::Arm& arm, const config::Config& config,
   }
 }
 
+// One grid point: the run's config (what its directory records) and its typed parameters.
+struct Point {
+  config::Config config;
+  config::Parameters parameters;
+};
+
+// The edge of the program: the config made from the arguments, and every grid point's
+// parameters checked, before anything runs. Throws config::ConfigError.
+std::vector<Point> read_points(int argc, char** argv) {
+  config::Config config;
+  config::Sweep sweep;
+  config.set("plant.kind=analytic");
+  config.set("seeds=" + std::string(argc > 2 ? argv[2] : "3"));
+  config.set("log.decimation=10");
+  for (int i = 3; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (argument.starts_with("--grid=")) {
+      sweep.add_flag(argument.substr(7));  // --grid=saturated_pd.k_theta=50,70
+    } else {
+      config.set(argument);  // saturated_pd.k_theta=70
+    }
+  }
+  sweep.check(config);
+  std::vector<Point> points;
+  for (std::size_t p = 0; p < sweep.points(); ++p) {
+    config::Config point = sweep.config(config, p);
+    points.push_back({point, diagrams::validated_parameters(point)});
+  }
+  return points;
+}
+
+// Experiment 1 of both arms at one point, into the results directory `out`.
+void run_point(const Point& point, const std::filesystem::path& out) {
+  diagrams::ControllerOptions mine = diagrams::preset("cbbg").options;
+  mine.slots.supervisor = [](const std::string& name, const config::Parameters& p) {
+    return std::make_unique<SaturatedPd>(
+        name, config::read_section<SaturatedPdParams>(p.own, "saturated_pd"),
+        p.plant.robot.torque_limit);
+  };
+  const std::vector<diagrams::Arm> arms{diagrams::preset_arm("cbbg"),
+                                        diagrams::make_arm("cbbg_saturated_pd", mine)};
+
+  store::RunDirectory directory = store::RunDirectory::create(out, point.config, {});
+  const store::TaskStore tasks(directory.tasks());
+  const experiments::ExperimentResults results =
+      experiments::run_exp1(point.parameters, arms, {.jobs = 2, .store = &tasks});
+  // config.yaml records the arms that ran and saturated_pd.*, with every other key.
+  store::write_result_files(results, point.config, directory.work(), &tasks);
+  render(arms[1], point.parameters, directory.work() / "figures");
+  directory.commit();
+
+  std::printf("%s\n%-6s %22s %22s\n", out.string().c_str(), "seed", "cbbg failures",
+              "cbbg_saturated_pd failures");
+  for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+    std::printf("%-6lld %22d %22d\n", results.seeds[s], results.run(0, s).failures_before_success,
+                results.run(1, s).failures_before_success);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: own_supervisor OUTPUT_DIR [SEEDS [KEY=VALUE...]]\n");
+    std::fprintf(stderr,
+                 "usage: own_supervisor OUTPUT_DIR [SEEDS [KEY=VALUE | --grid=KEY=V1,V2 ...]]\n");
     return 2;
   }
   // Before any config is made: saturated_pd.* become keys like the built-in ones.
   config::register_section<SaturatedPdParams>("saturated_pd");
-  config::Config config;
+  std::vector<Point> points;
   try {
-    config.set("plant.kind=analytic");
-    config.set("seeds=" + std::string(argc > 2 ? argv[2] : "3"));
-    config.set("log.decimation=10");
-    for (int i = 3; i < argc; ++i) config.set(argv[i]);  // saturated_pd.k_theta=70, ...
+    points = read_points(argc, argv);
   } catch (const config::ConfigError& error) {
     std::fprintf(stderr, "own_supervisor: %s\n", error.what());
     return 2;
   }
   try {
-    diagrams::ControllerOptions mine = diagrams::preset("cbbg").options;
-    mine.slots.supervisor = [](const std::string& name, const config::Config& c) {
-      return std::make_unique<SaturatedPd>(
-          name, config::read_section<SaturatedPdParams>(c, "saturated_pd"),
-          config::read_parameters(c).plant.robot.torque_limit);
-    };
-    const std::vector<diagrams::Arm> arms{diagrams::preset_arm("cbbg"),
-                                          diagrams::make_arm("cbbg_saturated_pd", mine)};
-
-    store::RunDirectory directory = store::RunDirectory::create(argv[1], config, {});
-    const store::TaskStore tasks(directory.tasks());
-    const experiments::ExperimentResults results =
-        experiments::run_exp1(config, arms, {.jobs = 2, .store = &tasks});
-    store::write_result_files(results, config, directory.work(), &tasks);
-    render(arms[1], config, directory.work() / "figures");
-    directory.commit();
-
-    std::printf("%-6s %22s %22s\n", "seed", "cbbg failures", "cbbg_saturated_pd failures");
-    for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-      std::printf("%-6lld %22d %22d\n", results.seeds[s], results.run(0, s).failures_before_success,
-                  results.run(1, s).failures_before_success);
+    const std::filesystem::path out = argv[1];
+    if (points.size() == 1) {
+      run_point(points.front(), out);
+      return 0;
     }
-    std::printf("results in %s\n", argv[1]);
+    std::filesystem::create_directories(out);  // a grid: one results directory per point
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      run_point(points[p], out / ("point_" + store::point_name(p, points.size())));
+    }
   } catch (const std::exception& error) {
     std::fprintf(stderr, "own_supervisor: %s\n", error.what());
     return 1;

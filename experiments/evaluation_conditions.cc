@@ -35,8 +35,8 @@ void scale_body(plant::RobotParams& robot, double factor) {
 
 }  // namespace
 
-config::Config evaluation_config(const config::Config& training) {
-  config::Parameters p = config::read_parameters(training);
+config::Parameters evaluation_parameters(const config::Parameters& training) {
+  config::Parameters p = training;
   const config::EvaluationParams& evaluation = p.evaluation;
   if (evaluation.body_mass_scale != 1.0) scale_body(p.plant.robot, evaluation.body_mass_scale);
   if (evaluation.com_height_scale != 1.0) {
@@ -53,23 +53,20 @@ config::Config evaluation_config(const config::Config& training) {
     p.push =
         blocks::PushParams{evaluation.push_start, evaluation.push_torque, evaluation.push_duration};
   }
-  config::Config config = training;
-  config::write_parameters(p, config);
-  return config;
+  return p;
 }
 
-void check_evaluation_conditions(const config::Config& training) {
-  const config::Config evaluated = evaluation_config(training);
+void check_evaluation_conditions(const config::Parameters& training) {
+  const config::Parameters evaluated = evaluation_parameters(training);
   try {
-    diagrams::validated_parameters(evaluated);
+    diagrams::validate_parameters(evaluated);
   } catch (const config::ConfigError& error) {
-    throw config::ConfigError("the evaluated robot (" + describe_conditions(training) +
+    throw config::ConfigError("the evaluated robot (" + describe_conditions(training.evaluation) +
                               ") is invalid: " + error.what());
   }
 }
 
-std::string describe_conditions(const config::Config& config) {
-  const config::EvaluationParams evaluation = config::read_parameters(config).evaluation;
+std::string describe_conditions(const config::EvaluationParams& evaluation) {
   std::string words;
   auto add = [&words](const std::string& part) {
     if (!words.empty()) words += ", ";

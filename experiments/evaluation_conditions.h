@@ -1,6 +1,6 @@
 #pragma once
 // The conditions a learnt policy (or a controller that learns nothing) is evaluated under:
-// the training config with the evaluation.* perturbations applied, so an evaluation can ask
+// the training parameters with the evaluation.* perturbations applied, so an evaluation can ask
 // how what was learnt copes with a robot it was not trained on.
 //
 //   evaluation.body_mass_scale   plant.body_mass and the body's three inertias times it (a
@@ -12,25 +12,27 @@
 //   evaluation.push_torque       when non-zero, push.* becomes this torque from
 //                                evaluation.push_start for evaluation.push_duration
 //
-// At their defaults (1, 1, 0, 0) the evaluation config equals the training config. A plant
+// At their defaults (1, 1, 0, 0) the evaluation parameters equal the training ones. A plant
 // parameter read by a controller at build time (supervisor.kind = lqr designs its gains
 // from plant.*) sees the perturbed value: the PD supervisor has fixed gains.
 
 #include <string>
 
-#include "config/config.h"
+#include "config/parameters.h"
 
 namespace cbbg::experiments {
 
-config::Config evaluation_config(const config::Config& training);
+// `training` with its evaluation.* perturbations applied. Throws config::ConfigError naming
+// the evaluation key when a scaled value is not a finite number > 0.
+config::Parameters evaluation_parameters(const config::Parameters& training);
 
 // Before any work: the robot and the push the evaluation.* keys make of `training` are valid
 // (a scale of 1e308 makes an infinite mass). Throws config::ConfigError naming the evaluation
 // key and the value it makes.
-void check_evaluation_conditions(const config::Config& training);
+void check_evaluation_conditions(const config::Parameters& training);
 
-// The perturbations of `config`'s evaluation.* keys in words ("body mass x1.3, pitch noise
-// 0.02"), or "" at their defaults.
-std::string describe_conditions(const config::Config& config);
+// The perturbations of `evaluation` in words ("body mass x1.3, pitch noise 0.02"), or "" at
+// their defaults.
+std::string describe_conditions(const config::EvaluationParams& evaluation);
 
 }  // namespace cbbg::experiments

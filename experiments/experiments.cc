@@ -1,5 +1,6 @@
 #include "experiments/experiments.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "config/parameters.h"
@@ -9,12 +10,11 @@
 namespace cbbg::experiments {
 namespace {
 
-// `config` with the root seed `seed`: an evaluation after a seed's training uses its streams.
-config::Config with_seed(config::Config config, long long seed) {
-  config::Parameters parameters = config::read_parameters(config);
+// `parameters` with the root seed `seed`: an evaluation after a seed's training uses its
+// streams.
+config::Parameters with_seed(config::Parameters parameters, long long seed) {
   parameters.run.seed = seed;
-  config::write_parameters(parameters, config);
-  return config;
+  return parameters;
 }
 
 // k1 of `trial` under the annealing schedule (steps sorted by from_trial, the first at 1).
@@ -30,25 +30,24 @@ double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial
 // conditions (evaluation_conditions.h), with the run's seed: the learnt actor alone (no
 // exploration, no supervisor, frozen), as `cbbg eval` runs it, or the closed loop of an arm
 // that learns nothing (pd_only: the supervisor alone) as it is.
-void evaluate_run(const config::Config& training, const diagrams::Arm& arm, bool learns,
+void evaluate_run(const config::Parameters& training, const diagrams::Arm& arm, bool learns,
                   SeedRun& run) {
-  const config::Config config = with_seed(evaluation_config(training), run.seed);
+  const config::Parameters p = with_seed(evaluation_parameters(training), run.seed);
   EvaluationSettings settings;
-  settings.angles = config::read_parameters(config).evaluation.angles;
+  settings.angles = p.evaluation.angles;
   PolicyEvaluation evaluation;
   if (!learns) {
-    evaluation = evaluate_controller(config, arm.learner, settings);
+    evaluation = evaluate_controller(p, arm.learner, settings);
   } else if (arm.policy && run.weights) {
-    evaluation = evaluate_policy(config, arm.policy, *run.weights, settings);
+    evaluation = evaluate_policy(p, arm.policy, *run.weights, settings);
   }
   for (const AngleEvaluation& angle : evaluation.angles) {
     run.evaluation.push_back({angle.theta0, angle.runs.front()});
   }
 }
 
-WeightsProvenance provenance(const config::Config& config, const SeedRun& run) {
-  return {run.arm, run.seed, static_cast<long long>(run.trials.size()),
-          config::read_parameters(config).plant.kind};
+WeightsProvenance provenance(const config::Parameters& p, const SeedRun& run) {
+  return {run.arm, run.seed, static_cast<long long>(run.trials.size()), p.plant.kind};
 }
 
 // Keeps what was learnt, unless it stopped being finite (a diverged learner): then the run
@@ -62,22 +61,21 @@ void keep_weights(LearntWeights weights, SeedRun& run) {
 }
 
 // The end of an exp1 or exp3 run: what was learnt is kept and the run evaluated.
-void finish_run(const config::Config& config, const diagrams::Arm& arm,
+void finish_run(const config::Parameters& p, const diagrams::Arm& arm,
                 const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run) {
   if (loop.learner.learns()) {
-    keep_weights(learnt_weights(loop, context, config, provenance(config, run)), run);
+    keep_weights(learnt_weights(loop, context, p, provenance(p, run)), run);
   }
-  evaluate_run(config, arm, loop.learner.learns(), run);
+  evaluate_run(p, arm, loop.learner.learns(), run);
 }
 
 // One seed of an arm: its learning closed loop and the runner of its trials, started from
 // the initial weights when there are some.
 struct SeedLoop {
-  SeedLoop(const config::Config& config, const diagrams::Arm& arm,
-           const TelemetryOptions& telemetry, const LearntWeights* initial_weights, long long seed)
-      : loop(arm.learner(config)),
-        runner(loop, static_cast<std::uint64_t>(seed), config::read_parameters(config).trial.period,
-               telemetry) {
+  SeedLoop(const config::Parameters& p, const diagrams::Arm& arm, const TelemetryOptions& telemetry,
+           const LearntWeights* initial_weights, long long seed)
+      : loop(arm.learner(p)),
+        runner(loop, static_cast<std::uint64_t>(seed), p.trial.period, telemetry) {
     if (initial_weights != nullptr && loop.learner.learns()) {
       load_learnt_weights(loop, runner.context(), *initial_weights);
     }
@@ -92,11 +90,10 @@ TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int tri
           std::nullopt};
 }
 
-void run_until_success(const config::Config& config, const diagrams::Arm& arm,
+void run_until_success(const config::Parameters& p, const diagrams::Arm& arm,
                        const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                        SeedRun& run) {
-  SeedLoop seed(config, arm, telemetry, initial_weights, run.seed);
-  const config::Parameters p = config::read_parameters(config);
+  SeedLoop seed(p, arm, telemetry, initial_weights, run.seed);
   for (int trial = 1; trial <= p.run.max_trials; ++trial) {
     const TrialRecord record = next_trial(p, seed.runner, trial);
     run.trials.push_back(record);
@@ -106,19 +103,18 @@ void run_until_success(const config::Config& config, const diagrams::Arm& arm,
     }
     ++run.failures_before_success;
   }
-  finish_run(config, arm, seed.loop, seed.runner.context(), run);
+  finish_run(p, arm, seed.loop, seed.runner.context(), run);
 }
 
 // exp3's test after a trial: the weights learnt so far, frozen, with the actor alone, from
 // each of exp3.angles in turn (stopping at the first that fails).
-bool actor_alone_balances(const config::Config& config, const diagrams::Arm& arm,
+bool actor_alone_balances(const config::Parameters& p, const diagrams::Arm& arm,
                           const LearntWeights& weights, long long seed) {
-  const config::Config evaluation_config = with_seed(config, seed);
-  for (const double angle : config::read_parameters(config).exp3.angles) {
+  const config::Parameters tested = with_seed(p, seed);
+  for (const double angle : p.exp3.angles) {
     EvaluationSettings settings;
     settings.angles = {angle};
-    const PolicyEvaluation evaluation =
-        evaluate_policy(evaluation_config, arm.policy, weights, settings);
+    const PolicyEvaluation evaluation = evaluate_policy(tested, arm.policy, weights, settings);
     if (evaluation.angles.front().balanced() == 0) return false;
   }
   return true;
@@ -126,15 +122,14 @@ bool actor_alone_balances(const config::Config& config, const diagrams::Arm& arm
 
 // exp3: trials go on past the first success until the learnt actor alone passes the test
 // (or max_trials). An arm that learns nothing has no actor: it stops at its first success.
-void run_until_skill(const config::Config& config, const diagrams::Arm& arm,
+void run_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
                      const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                      SeedRun& run) {
-  SeedLoop seed(config, arm, telemetry, initial_weights, run.seed);
+  SeedLoop seed(p, arm, telemetry, initial_weights, run.seed);
   TrialRunner& runner = seed.runner;
   const diagrams::ClosedLoop& loop = seed.loop;
   const bool has_actor = loop.learner.learns() && static_cast<bool>(arm.policy);
   int failures = 0;
-  const config::Parameters p = config::read_parameters(config);
   for (int trial = 1; trial <= p.run.max_trials; ++trial) {
     TrialRecord record = next_trial(p, runner, trial);
     const bool success = record.outcome.status == TrialStatus::kSuccess;
@@ -144,10 +139,9 @@ void run_until_skill(const config::Config& config, const diagrams::Arm& arm,
       run.failures_before_success = failures;
     }
     if (has_actor) {
-      const LearntWeights weights =
-          learnt_weights(loop, runner.context(), config, provenance(config, run));
+      const LearntWeights weights = learnt_weights(loop, runner.context(), p, provenance(p, run));
       record.actor_alone_passed =
-          weights.actor.allFinite() && actor_alone_balances(config, arm, weights, run.seed);
+          weights.actor.allFinite() && actor_alone_balances(p, arm, weights, run.seed);
     }
     run.trials.push_back(record);
     if (record.actor_alone_passed.value_or(false)) {
@@ -158,7 +152,7 @@ void run_until_skill(const config::Config& config, const diagrams::Arm& arm,
     if (!has_actor && run.succeeded) break;
   }
   if (!run.succeeded) run.failures_before_success = failures;
-  finish_run(config, arm, loop, runner.context(), run);
+  finish_run(p, arm, loop, runner.context(), run);
 }
 
 void set_k1(const diagrams::ClosedLoop& loop, Context& context, double k1) {
@@ -169,20 +163,19 @@ void set_k1(const diagrams::ClosedLoop& loop, Context& context, double k1) {
   loop.learner.tropism->set_k1(context, k1);
 }
 
-void run_annealing(const config::Config& config, const diagrams::Arm& coordinated,
+void run_annealing(const config::Parameters& p, const diagrams::Arm& coordinated,
                    const diagrams::Arm& operant, const TelemetryOptions& telemetry,
                    const LearntWeights* initial_weights, SeedRun& run) {
-  const config::Parameters p = config::read_parameters(config);
   const double theta0 = p.trial.theta0;
   const double duration = p.trial.duration;
   const std::vector<config::AnnealingStep>& schedule = p.annealing;
-  SeedLoop first(config, coordinated, telemetry, initial_weights, run.seed);
+  SeedLoop first(p, coordinated, telemetry, initial_weights, run.seed);
   set_k1(first.loop, first.runner.context(), annealed_k1(schedule, 1));
   run.trials.push_back(
       {1, annealed_k1(schedule, 1), first.runner.run_trial(theta0, duration, 1), std::nullopt});
 
   // The operant loop carries on: weights, the omega counter and the random streams.
-  const diagrams::ClosedLoop later_loop = operant.learner(config);
+  const diagrams::ClosedLoop later_loop = operant.learner(p);
   TrialRunner later(later_loop, static_cast<std::uint64_t>(run.seed), p.trial.period, telemetry);
   later.context().continue_from(first.runner.context());
   for (int trial = 2; trial <= p.exp2.trials; ++trial) {
@@ -197,7 +190,7 @@ void run_annealing(const config::Config& config, const diagrams::Arm& coordinate
     }
   }
   if (!run.succeeded) run.failures_before_success = static_cast<int>(run.trials.size());
-  keep_weights(learnt_weights(later_loop, later.context(), config, provenance(config, run)), run);
+  keep_weights(learnt_weights(later_loop, later.context(), p, provenance(p, run)), run);
 }
 
 std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {
@@ -207,14 +200,19 @@ std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {
 }
 
 // One seed of one arm under a protocol (exp1's, exp3's).
-using ArmProtocol = void (*)(const config::Config&, const diagrams::Arm&, const TelemetryOptions&,
-                             const LearntWeights*, SeedRun&);
+using ArmProtocol = void (*)(const config::Parameters&, const diagrams::Arm&,
+                             const TelemetryOptions&, const LearntWeights*, SeedRun&);
 
 // `protocol` for every (arm, seed), the arms' names unique.
 ExperimentResults run_per_arm(const char* experiment, ArmProtocol protocol,
-                              const config::Config& config, const std::vector<diagrams::Arm>& arms,
+                              const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
                               const ExperimentOptions& options) {
   for (std::size_t a = 0; a < arms.size(); ++a) {
+    if (!config::is_name(arms[a].name)) {
+      throw std::invalid_argument(std::string(experiment) + ": arm name '" + arms[a].name +
+                                  "' is not a name (" + config::kNameRule +
+                                  "): it names files and columns of the results");
+    }
     for (std::size_t b = 0; b < a; ++b) {
       if (arms[a].name == arms[b].name) {
         throw std::invalid_argument(std::string(experiment) + ": two arms are named '" +
@@ -226,55 +224,108 @@ ExperimentResults run_per_arm(const char* experiment, ArmProtocol protocol,
   auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
     for (const auto& arm : arms) {
       if (arm.name == run.arm) {
-        protocol(config, arm, telemetry, options.initial_weights, run);
+        protocol(p, arm, telemetry, options.initial_weights, run);
         return;
       }
     }
   };
-  ExperimentResults results = run_tasks(config, names_of(arms), body, options);
+  ExperimentResults results = run_tasks(p, names_of(arms), body, options);
   results.experiment = experiment;
+  results.compares_arms = true;
   return results;
+}
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
 }
 
 }  // namespace
 
-ExperimentResults run_exp1(const config::Config& config, const std::vector<diagrams::Arm>& arms,
-                           const ExperimentOptions& options) {
-  return run_per_arm("exp1", run_until_success, config, arms, options);
+const std::vector<ProtocolName>& protocol_names() {
+  static const std::vector<ProtocolName> names{
+      {"exp1", "per arm and seed: trials until the first success (paper Fig. 11)"},
+      {"exp2", "one cbbg trial, then omega = 1 with the annealing schedule (paper Figs. 12-14)"},
+      {"exp3",
+       "per arm and seed: trials until the learnt actor alone balances from every "
+       "exp3.angles (skill acquisition)"},
+  };
+  return names;
 }
 
-ExperimentResults run_exp3(const config::Config& config, const std::vector<diagrams::Arm>& arms,
-                           const ExperimentOptions& options) {
-  return run_per_arm("exp3", run_until_skill, config, arms, options);
+void check_experiment_name(const std::string& experiment) {
+  std::vector<std::string> names;
+  for (const auto& protocol : protocol_names()) names.push_back(protocol.name);
+  for (const auto& arm : diagrams::arm_names()) names.push_back(arm);
+  if (!contains(names, experiment)) {
+    throw config::ConfigError("experiment must be one of " + joined(names) + "; got '" +
+                              experiment + "'");
+  }
 }
 
-ExperimentResults run_exp2(const config::Config& config, const diagrams::Arm& coordinated,
+void check_arm_names(const std::vector<std::string>& arms) {
+  const std::vector<std::string> names = diagrams::arm_names();
+  for (std::size_t i = 0; i < arms.size(); ++i) {
+    if (!contains(names, arms[i])) {
+      throw config::ConfigError("arms[" + std::to_string(i) + "] must be one of " + joined(names) +
+                                "; got '" + arms[i] + "'");
+    }
+  }
+}
+
+void check_run_names(const config::RunParams& run) {
+  check_experiment_name(run.experiment);
+  check_arm_names(run.arms);
+}
+
+ExperimentResults run_exp1(const config::Parameters& parameters,
+                           const std::vector<diagrams::Arm>& arms,
+                           const ExperimentOptions& options) {
+  return run_per_arm("exp1", run_until_success, parameters, arms, options);
+}
+
+ExperimentResults run_exp3(const config::Parameters& parameters,
+                           const std::vector<diagrams::Arm>& arms,
+                           const ExperimentOptions& options) {
+  return run_per_arm("exp3", run_until_skill, parameters, arms, options);
+}
+
+ExperimentResults run_exp2(const config::Parameters& parameters, const diagrams::Arm& coordinated,
                            const diagrams::Arm& operant, const ExperimentOptions& options) {
   auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
-    run_annealing(config, coordinated, operant, telemetry, options.initial_weights, run);
+    run_annealing(parameters, coordinated, operant, telemetry, options.initial_weights, run);
   };
-  ExperimentResults results = run_tasks(config, {coordinated.name}, body, options);
+  ExperimentResults results = run_tasks(parameters, {coordinated.name}, body, options);
   results.experiment = "exp2";
   return results;
 }
 
-std::vector<std::string> experiment_arms(const config::Config& config) {
-  const config::RunParams run = config::read_parameters(config).run;
+std::vector<std::string> experiment_arms(const config::RunParams& run) {
   const std::string& experiment = run.experiment;
   if (experiment == "exp1" || experiment == "exp3") return run.arms;
   if (experiment == "exp2") return {"cbbg"};
   return {experiment};
 }
 
-ExperimentResults run_experiment(const config::Config& config, const ExperimentOptions& options) {
-  const std::string experiment = config::read_parameters(config).run.experiment;
+ExperimentResults run_experiment(const config::Parameters& parameters,
+                                 const ExperimentOptions& options) {
+  check_run_names(parameters.run);
+  const std::string& experiment = parameters.run.experiment;
   if (experiment == "exp2") {
-    return run_exp2(config, diagrams::preset_arm("cbbg"), diagrams::preset_arm("bg_only"), options);
+    return run_exp2(parameters, diagrams::preset_arm("cbbg"), diagrams::preset_arm("bg_only"),
+                    options);
   }
   std::vector<diagrams::Arm> arms;
-  for (const auto& name : experiment_arms(config)) arms.push_back(diagrams::preset_arm(name));
-  if (experiment == "exp3") return run_exp3(config, arms, options);
-  ExperimentResults results = run_exp1(config, arms, options);
+  for (const auto& name : experiment_arms(parameters.run)) {
+    arms.push_back(diagrams::preset_arm(name));
+  }
+  if (experiment == "exp3") return run_exp3(parameters, arms, options);
+  ExperimentResults results = run_exp1(parameters, arms, options);
   results.experiment = experiment;
   return results;
 }

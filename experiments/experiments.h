@@ -22,34 +22,54 @@
 #include <string>
 #include <vector>
 
-#include "config/config.h"
+#include "config/parameters.h"
 #include "diagrams/presets.h"
 #include "experiments/parallel_runs.h"
 #include "experiments/seed_run.h"
 
 namespace cbbg::experiments {
 
-// exp1 for each arm, over the config's seeds.
-ExperimentResults run_exp1(const config::Config& config, const std::vector<diagrams::Arm>& arms,
+// The protocols take the run's typed parameters (diagrams::validated_parameters makes them
+// from a config, once) and hand them to every closed loop they build.
+
+// exp1 for each arm, over the parameters' seeds.
+ExperimentResults run_exp1(const config::Parameters& parameters,
+                           const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options = {});
 
-// exp3 for each arm, over the config's seeds: SeedRun::trials_to_skill and
+// exp3 for each arm, over the parameters' seeds: SeedRun::trials_to_skill and
 // failures_to_skill, and TrialRecord::actor_alone_passed per trial.
-ExperimentResults run_exp3(const config::Config& config, const std::vector<diagrams::Arm>& arms,
+ExperimentResults run_exp3(const config::Parameters& parameters,
+                           const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options = {});
 
 // exp2: trial 1 in `coordinated`'s closed loop, the later trials in `operant`'s, which
 // carries on the learning of trial 1 (Context::continue_from). The results name the arm
 // `coordinated.name`.
-ExperimentResults run_exp2(const config::Config& config, const diagrams::Arm& coordinated,
+ExperimentResults run_exp2(const config::Parameters& parameters, const diagrams::Arm& coordinated,
                            const diagrams::Arm& operant, const ExperimentOptions& options = {});
 
-// The preset names the config's experiment runs: exp1's `arms`, exp2's cbbg, or the one
-// preset `experiment` names.
-std::vector<std::string> experiment_arms(const config::Config& config);
+// A protocol `experiment` may name, and what it measures (`cbbg list`).
+struct ProtocolName {
+  std::string name;
+  std::string meaning;
+};
+// exp1, exp2, exp3: the one list of the protocols' names.
+const std::vector<ProtocolName>& protocol_names();
 
-// The experiment the config names, over the named presets (what `cbbg run` runs).
-ExperimentResults run_experiment(const config::Config& config,
+// Before any work: `experiment` names a protocol or an arm preset, and every entry of `arms`
+// an arm preset (diagrams::arm_names). Each throws config::ConfigError naming the key, what
+// is allowed and what was given. A library run of its own arms needs no such names.
+void check_experiment_name(const std::string& experiment);
+void check_arm_names(const std::vector<std::string>& arms);
+void check_run_names(const config::RunParams& run);
+
+// The preset names `run.experiment` runs: exp1's and exp3's `arms`, exp2's cbbg, or the one
+// preset `experiment` names.
+std::vector<std::string> experiment_arms(const config::RunParams& run);
+
+// The experiment the parameters name, over the named presets (what `cbbg run` runs).
+ExperimentResults run_experiment(const config::Parameters& parameters,
                                  const ExperimentOptions& options = {});
 
 }  // namespace cbbg::experiments

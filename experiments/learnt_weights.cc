@@ -23,13 +23,13 @@ bool LearntWeights::operator==(const LearntWeights& other) const {
 }
 
 LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& context,
-                             const config::Config& config, const WeightsProvenance& provenance) {
+                             const config::Parameters& parameters,
+                             const WeightsProvenance& provenance) {
   if (loop.learner.actor == nullptr || loop.learner.critic == nullptr) {
     throw std::invalid_argument("diagram '" + loop.diagram->name() +
                                 "' has no critic and actor: it learns no weights");
   }
   LearntWeights weights;
-  const config::Parameters parameters = config::read_parameters(config);
   weights.centres = parameters.rbf.centres;
   weights.width = parameters.rbf.width;
   weights.normaliser = parameters.normaliser;

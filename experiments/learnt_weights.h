@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "blocks/normaliser.h"
-#include "config/config.h"
+#include "config/parameters.h"
 #include "diagrams/closed_loop.h"
 #include "framework/context.h"
 #include "framework/types.h"
@@ -39,10 +39,11 @@ struct LearntWeights {
   bool operator==(const LearntWeights& other) const;
 };
 
-// The weights `loop` has learnt in `context`, with the layout of `config` (which built
+// The weights `loop` has learnt in `context`, with the layout of `parameters` (which built
 // `loop`). Throws std::invalid_argument when the loop has no critic and actor.
 LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& context,
-                             const config::Config& config, const WeightsProvenance& provenance);
+                             const config::Parameters& parameters,
+                             const WeightsProvenance& provenance);
 
 // Sets the actor's weights in `context`, and the critic's where the loop has one. Throws
 // std::invalid_argument when the loop has no actor or the feature counts differ;

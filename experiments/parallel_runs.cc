@@ -16,11 +16,10 @@ namespace cbbg::experiments {
 namespace {
 
 // Runs one task, its steps rows into the store's file or into run.steps_csv.
-void run_task(const config::Config& config, std::size_t task, const TaskBody& body,
+void run_task(const config::Parameters& parameters, std::size_t task, const TaskBody& body,
               const TaskStorage* store, SeedRun& run) {
   std::ofstream file;
   std::ostringstream memory;
-  const config::Parameters parameters = config::read_parameters(config);
   TelemetryOptions telemetry{.keep_in_memory = false,
                              .steps = nullptr,
                              .decimation = parameters.log.decimation,
@@ -49,9 +48,8 @@ void run_task(const config::Config& config, std::size_t task, const TaskBody& bo
   store->save(task, run);
 }
 
-ExperimentResults empty_results(const config::Config& config,
+ExperimentResults empty_results(const config::RunParams& what,
                                 const std::vector<std::string>& arms) {
-  const config::RunParams what = config::read_parameters(config).run;
   ExperimentResults results;
   results.experiment = what.experiment;
   results.arms = arms;
@@ -69,9 +67,10 @@ ExperimentResults empty_results(const config::Config& config,
 
 }  // namespace
 
-ExperimentResults run_tasks(const config::Config& config, const std::vector<std::string>& arms,
-                            const TaskBody& body, const ExperimentOptions& options) {
-  ExperimentResults results = empty_results(config, arms);
+ExperimentResults run_tasks(const config::Parameters& parameters,
+                            const std::vector<std::string>& arms, const TaskBody& body,
+                            const ExperimentOptions& options) {
+  ExperimentResults results = empty_results(parameters.run, arms);
   // Workers take tasks in index order; each writes only its own slot.
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
@@ -82,7 +81,7 @@ ExperimentResults run_tasks(const config::Config& config, const std::vector<std:
       try {
         SeedRun& run = results.runs[task];
         if (options.store == nullptr || !options.store->load(task, run)) {
-          run_task(config, task, body, options.store, run);
+          run_task(parameters, task, body, options.store, run);
         }
         if (options.progress) options.progress(run);
       } catch (...) {

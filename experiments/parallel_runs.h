@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <functional>
 
-#include "config/config.h"
+#include "config/parameters.h"
 #include "experiments/seed_run.h"
 
 namespace cbbg::experiments {
@@ -45,10 +45,11 @@ struct ExperimentOptions {
 // `telemetry`.
 using TaskBody = std::function<void(SeedRun& run, const TelemetryOptions& telemetry)>;
 
-// Results for every arm of `arms` and every seed of the config (seed, seed + 1, ...,
+// Results for every arm of `arms` and every seed of the parameters (seed, seed + 1, ...,
 // `seeds` of them), each task run by `body` in `options.jobs` threads. The first task to
 // throw stops the others from starting and is rethrown.
-ExperimentResults run_tasks(const config::Config& config, const std::vector<std::string>& arms,
-                            const TaskBody& body, const ExperimentOptions& options);
+ExperimentResults run_tasks(const config::Parameters& parameters,
+                            const std::vector<std::string>& arms, const TaskBody& body,
+                            const ExperimentOptions& options);
 
 }  // namespace cbbg::experiments

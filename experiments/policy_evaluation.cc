@@ -31,15 +31,15 @@ int AngleEvaluation::balanced() const {
 namespace {
 
 // The runs of evaluate_policy, or of evaluate_controller when `weights` is null.
-PolicyEvaluation evaluate(const config::Config& config, const diagrams::ClosedLoopFactory& factory,
-                          const LearntWeights* weights, const EvaluationSettings& settings) {
+PolicyEvaluation evaluate(const config::Parameters& parameters,
+                          const diagrams::ClosedLoopFactory& factory, const LearntWeights* weights,
+                          const EvaluationSettings& settings) {
   settings.validate();
-  const diagrams::ClosedLoop loop = factory(config);
+  const diagrams::ClosedLoop loop = factory(parameters);
   if (weights == nullptr && loop.learner.learns()) {
     throw std::invalid_argument("the closed loop '" + loop.diagram->name() +
                                 "' learns: evaluate its learnt policy instead");
   }
-  const config::Parameters parameters = config::read_parameters(config);
   PolicyEvaluation result;
   result.first_seed = parameters.run.seed;
   TelemetryOptions telemetry;
@@ -64,16 +64,16 @@ PolicyEvaluation evaluate(const config::Config& config, const diagrams::ClosedLo
 
 }  // namespace
 
-PolicyEvaluation evaluate_policy(const config::Config& config,
+PolicyEvaluation evaluate_policy(const config::Parameters& parameters,
                                  const diagrams::ClosedLoopFactory& policy,
                                  const LearntWeights& weights, const EvaluationSettings& settings) {
-  return evaluate(config, policy, &weights, settings);
+  return evaluate(parameters, policy, &weights, settings);
 }
 
-PolicyEvaluation evaluate_controller(const config::Config& config,
+PolicyEvaluation evaluate_controller(const config::Parameters& parameters,
                                      const diagrams::ClosedLoopFactory& controller,
                                      const EvaluationSettings& settings) {
-  return evaluate(config, controller, nullptr, settings);
+  return evaluate(parameters, controller, nullptr, settings);
 }
 
 }  // namespace cbbg::experiments

@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "config/config.h"
+#include "config/parameters.h"
 #include "diagrams/closed_loop.h"
 #include "experiments/learnt_weights.h"
 #include "experiments/trial_runner.h"
@@ -39,22 +39,22 @@ struct AngleEvaluation {
 };
 
 struct PolicyEvaluation {
-  long long first_seed = 0;  // the config's seed
+  long long first_seed = 0;  // the parameters' seed
   std::vector<AngleEvaluation> angles;
 };
 
-// Runs the policy of `weights` in the closed loop `policy` builds for `config` (plant.kind,
+// Runs the policy of `weights` in the closed loop `policy` builds from `parameters` (plant.kind,
 // trial.duration, trial.period, trial.failure_angle, sensors.*) from each angle,
 // settings.repeats times. The weights' feature count must match the loop's features
 // (store::check_layout gives the user's message; here a mismatch throws
 // std::invalid_argument, as does a loop without an actor).
-PolicyEvaluation evaluate_policy(const config::Config& config,
+PolicyEvaluation evaluate_policy(const config::Parameters& parameters,
                                  const diagrams::ClosedLoopFactory& policy,
                                  const LearntWeights& weights, const EvaluationSettings& settings);
 
 // The same runs of a closed loop that learns nothing (pd_only: the supervisor alone), as it
 // is. Throws std::invalid_argument for a loop that learns.
-PolicyEvaluation evaluate_controller(const config::Config& config,
+PolicyEvaluation evaluate_controller(const config::Parameters& parameters,
                                      const diagrams::ClosedLoopFactory& controller,
                                      const EvaluationSettings& settings);
 

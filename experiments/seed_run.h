@@ -51,6 +51,9 @@ struct SeedRun {
 struct ExperimentResults {
   std::string experiment;  // exp1, exp2 or the one arm's name
   std::vector<std::string> arms;
+  // True when `arms` are the arms the protocol compared (exp1, exp3), which config.yaml's
+  // `arms` then records, a user's own arms too; exp2's one arm is not the `arms` key's.
+  bool compares_arms = false;
   std::vector<long long> seeds;
   std::vector<SeedRun> runs;  // arm-major: runs[a * seeds.size() + s]
   const SeedRun& run(std::size_t arm, std::size_t seed) const {

@@ -138,9 +138,13 @@ class DeclarationCheck {
     throw std::invalid_argument(prefix_ + std::string(key) + " must be one of " + listed +
                                 "; got '" + value + "'");
   }
-  // Lists of names and exp2's schedule are the config's to check.
-  template <typename... Ignored>
-  void names(Ignored&&...) {}
+  void names(std::string_view key, const std::vector<std::string>& values, std::string_view meaning,
+             const std::vector<std::string>& words) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      text(std::string(key) + "[" + std::to_string(i) + "]", values[i], meaning, words);
+    }
+  }
+  // exp2's schedule is the config's to check.
   template <typename... Ignored>
   void annealing(Ignored&&...) {}
   template <typename Params>

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the built project into a scratch prefix, builds examples/ against it as a user's
 # own project would (find_package(cbbg)), and runs both examples: the framework alone, and a
-# user's supervisor through experiment 1 against the cbbg preset, writing a results directory.
+# user's supervisor through experiment 1 against the cbbg preset, writing a results directory,
+# then sweeping the supervisor's own keys over a 2 x 2 grid.
 # Also runs the installed `cbbg` command, which must find its plotting script by itself.
 #   test_find_package.sh BUILD_DIR
 set -euo pipefail
@@ -33,6 +34,32 @@ for file in config.yaml summary.json trials.csv evaluation.csv steps.csv; do
   test -s "$scratch/ablation/$file" || { echo "missing $file" >&2; exit 1; }
 done
 grep -q '"cbbg_saturated_pd"' "$scratch/ablation/summary.json"
+# config.yaml records the arms that ran, the user's own among them.
+grep -q "^arms: \[cbbg, cbbg_saturated_pd\]$" "$scratch/ablation/config.yaml" ||
+  { echo "config.yaml does not record the arms that ran" >&2; exit 1; }
+
+# The supervisor's own keys swept over a grid of 2 x 2 points: one results directory each,
+# recording its point's values.
+"$scratch/example/own_supervisor" "$scratch/grid" 1 --grid=saturated_pd.k_theta=50,70 \
+  --grid=saturated_pd.k_v=0.5,1 >/dev/null
+point=1
+for k_theta in 50 70; do
+  for k_v in 0.5 1; do
+    recorded="$scratch/grid/point_00$point/config.yaml"
+    grep -q "^  k_theta: $k_theta$" "$recorded" && grep -q "^  k_v: $k_v$" "$recorded" ||
+      { echo "$recorded does not record k_theta $k_theta, k_v $k_v" >&2; exit 1; }
+    test -s "$scratch/grid/point_00$point/summary.json"
+    point=$((point + 1))
+  done
+done
+set +e
+refused="$("$scratch/example/own_supervisor" "$scratch/refused" 1 \
+  --grid=saturated_pd.k_dtheta=1,.inf 2>&1)"
+status=$?
+set -e
+[[ $status == 2 && "$refused" == *"saturated_pd.k_dtheta must be a finite number"* ]] ||
+  { echo "the example swept saturated_pd.k_dtheta=.inf (exit $status): $refused" >&2; exit 1; }
+[[ ! -e "$scratch/refused" ]] || { echo "a refused sweep left $scratch/refused" >&2; exit 1; }
 grep -q '"cbbg"' "$scratch/ablation/summary.json"
 ls "$scratch/ablation/weights/cbbg_saturated_pd_seed1.txt" >/dev/null
 figure="$(ls "$scratch/ablation/figures/"diagram.*)"

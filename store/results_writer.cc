@@ -251,9 +251,17 @@ std::string summary_json(const ExperimentResults& results, const config::Config&
   return json.str();
 }
 
+config::Config recorded_config(const ExperimentResults& results, config::Config config) {
+  if (!results.compares_arms) return config;
+  config::Parameters parameters = config::read_parameters(config);
+  parameters.run.arms = results.arms;
+  config::write_parameters(parameters, config);
+  return config;
+}
+
 void write_result_files(const ExperimentResults& results, const config::Config& config,
                         const std::filesystem::path& directory, const TaskStore* store) {
-  write_atomically(directory / "config.yaml", config.to_yaml());
+  write_atomically(directory / "config.yaml", recorded_config(results, config).to_yaml());
   write_atomically(directory / "summary.json", summary_json(results, config));
   fault_point("commit:results");  // a kill here leaves half the files: resume rewrites them
   write_atomically(directory / "trials.csv", trials_csv(results));

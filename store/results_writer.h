@@ -15,9 +15,13 @@ using experiments::ExperimentResults;
 
 class TaskStore;
 
-// Writes every data file of `results` into `directory` (which must exist), and each learning
-// run's weights into weights/<arm>_seed<k>.txt. steps.csv comes from the store's files when
-// one is given, else from each run's steps_csv.
+// `config` as a results directory records it: `arms` are the arms the protocol compared (a
+// library run's own arms too), whatever the config said.
+config::Config recorded_config(const ExperimentResults& results, config::Config config);
+
+// Writes every data file of `results` into `directory` (which must exist), config.yaml as
+// recorded_config, and each learning run's weights into weights/<arm>_seed<k>.txt. steps.csv comes
+// from the store's files when one is given, else from each run's steps_csv.
 void write_result_files(const ExperimentResults& results, const config::Config& config,
                         const std::filesystem::path& directory, const TaskStore* store = nullptr);
 

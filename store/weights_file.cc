@@ -363,9 +363,8 @@ LearntWeights load_weights(const std::filesystem::path& path) {
   return parse(path, text);
 }
 
-void check_layout(const LearntWeights& weights, const config::Config& config,
+void check_layout(const LearntWeights& weights, const config::Parameters& parameters,
                   const std::filesystem::path& source) {
-  const config::Parameters parameters = config::read_parameters(config);
   const std::vector<double>& centres = parameters.rbf.centres;
   const double width = parameters.rbf.width;
   const std::string file = "weights file '" + source.string() + "' was made for ";

@@ -34,7 +34,7 @@ LearntWeights load_weights(const std::filesystem::path& path);
 
 // Throws config::ConfigError, naming `source` and both layouts, unless the weights were made
 // for the normaliser and RBF grid of `config` (the same numbers, bit for bit).
-void check_layout(const LearntWeights& weights, const config::Config& config,
+void check_layout(const LearntWeights& weights, const config::Parameters& parameters,
                   const std::filesystem::path& source);
 
 }  // namespace cbbg::store

@@ -35,14 +35,14 @@ void count_ticks(benchmark::State& state, long long ticks) {
 }
 
 void BM_DiagramTrial(benchmark::State& state) {
-  const config::Config config = analytic_config();
-  const diagrams::ClosedLoop controller = diagrams::build_preset("cbbg", config);
-  const double theta0 = config.number("trial.theta0");
-  const double duration = config.number("trial.duration");
+  const config::Parameters parameters = config::read_parameters(analytic_config());
+  const diagrams::ClosedLoop controller = diagrams::build_preset("cbbg", parameters);
+  const double theta0 = parameters.trial.theta0;
+  const double duration = parameters.trial.duration;
   long long ticks = 0;
   for (auto _ : state) {
     state.PauseTiming();
-    experiments::TrialRunner runner(controller, kSeed, config.number("trial.period"));
+    experiments::TrialRunner runner(controller, kSeed, parameters.trial.period);
     state.ResumeTiming();
     const experiments::TrialOutcome outcome = runner.run_trial(theta0, duration);
     ticks = outcome.steps;

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "config/config.h"
+#include "diagrams/presets.h"
 #include "tests/apps/cbbg_process.h"
 #include "tests/support/scratch_directory.h"
 
@@ -191,7 +192,7 @@ TEST_F(CbbgCommand, ListShowsEveryConfigKey) {
   for (const auto& spec : cbbg::config::schema()) {
     EXPECT_THAT(outcome.output, HasSubstr("  " + spec.path + " ")) << spec.path;
   }
-  for (const auto& name : cbbg::config::diagram_names()) {
+  for (const auto& name : cbbg::diagrams::arm_names()) {
     EXPECT_THAT(outcome.output, HasSubstr("  " + name + " ")) << name;
   }
 }

@@ -139,9 +139,15 @@ TEST(Config, RejectsNanAndInfinity) {
 
 TEST(Config, ChecksListsAndTheAnnealingSchedule) {
   EXPECT_EQ(error_of_yaml("arms: [cbbg, cbbg]"), "my.yaml: arms lists 'cbbg' twice");
-  EXPECT_EQ(error_of_yaml("arms: [cbbg, nope]"),
-            "my.yaml: arms[1] must be one of cbbg, cbbg_weighted, bg_only, cb_only, pd_only; "
-            "got 'nope'");
+  // Which names are arms is the presets' table's to say (experiments::check_run_names).
+  EXPECT_EQ(error_of_yaml("arms: []"), "my.yaml: arms must be a non-empty list of names; got []");
+  const std::string name =
+      "a name (1 to 100 letters, digits, '_', '-' and '.', not starting "
+      "with '-' or '.')";
+  EXPECT_EQ(error_of_yaml("arms: [cbbg, [1]]"), "my.yaml: arms[1] must be " + name + "; got [1]");
+  EXPECT_EQ(error_of_yaml("arms: [cbbg, a/b]"), "my.yaml: arms[1] must be " + name + "; got 'a/b'");
+  EXPECT_EQ(error_of_yaml("experiment: ../x"),
+            "my.yaml: experiment must be " + name + "; got '../x'");
   EXPECT_EQ(error_of_yaml("supervisor: {lqr_q: [1, 2, 3]}"),
             "my.yaml: supervisor.lqr_q must be a list of 4 numbers; got [1, 2, 3]");
   EXPECT_EQ(error_of_yaml("rbf: {centres: []}"),

@@ -152,7 +152,8 @@ BothRuns run_both(const std::string& arm, const config::Config& config,
                   const config::Config& loop_config, std::uint64_t seed, std::uint64_t loop_seed,
                   const std::vector<double>& theta0s,
                   const std::optional<StartWeights>& start = std::nullopt) {
-  const diagrams::ClosedLoop controller = diagrams::build_preset(arm, config);
+  const diagrams::ClosedLoop controller =
+      diagrams::build_preset(arm, config::read_parameters(config));
   experiments::TrialRunner runner(controller, seed, config.number("trial.period"));
   PlainLoop loop(loop_config, loop_seed, arm);
   if (start) {

@@ -30,28 +30,30 @@ bool has_block(const Diagram& diagram, const std::string& name) {
   return false;
 }
 
-TEST(Presets, AreTheConfigsArmsAndTheLearntActor) {
+TEST(Presets, TheArmsAreEveryPresetButTheLearntActor) {
   std::vector<std::string> names;
   for (const auto& preset : presets()) names.push_back(preset.name);
-  std::vector<std::string> expected = config::diagram_names();
-  expected.push_back(kLearntActor);
-  EXPECT_EQ(names, expected);
+  EXPECT_EQ(names, (std::vector<std::string>{"cbbg", "cbbg_weighted", "bg_only", "cb_only",
+                                             "pd_only", kLearntActor}));
+  std::vector<std::string> arms = names;
+  arms.pop_back();
+  EXPECT_EQ(arm_names(), arms);
 }
 
 TEST(Presets, EachHasTheBlocksItsNameSays) {
   const config::Config config = analytic_config();
-  const ClosedLoop cbbg = build_preset("cbbg", config);
+  const ClosedLoop cbbg = build_preset("cbbg", config::read_parameters(config));
   EXPECT_TRUE(has_block(*cbbg.diagram, "cerebellum"));
   EXPECT_TRUE(has_block(*cbbg.diagram, "critic"));
   EXPECT_TRUE(has_block(*cbbg.diagram, "sampler"));
-  const ClosedLoop bg_only = build_preset("bg_only", config);
+  const ClosedLoop bg_only = build_preset("bg_only", config::read_parameters(config));
   EXPECT_FALSE(has_block(*bg_only.diagram, "cerebellum"));
   EXPECT_TRUE(has_block(*bg_only.diagram, "actor"));
-  const ClosedLoop pd_only = build_preset("pd_only", config);
+  const ClosedLoop pd_only = build_preset("pd_only", config::read_parameters(config));
   EXPECT_TRUE(has_block(*pd_only.diagram, "supervisor"));
   EXPECT_FALSE(has_block(*pd_only.diagram, "actor"));
   EXPECT_FALSE(pd_only.learner.learns());
-  const ClosedLoop policy = build_preset(kLearntActor, config);
+  const ClosedLoop policy = build_preset(kLearntActor, config::read_parameters(config));
   EXPECT_TRUE(has_block(*policy.diagram, "actor"));
   EXPECT_FALSE(has_block(*policy.diagram, "sampler"));
   EXPECT_FALSE(has_block(*policy.diagram, "supervisor"));
@@ -67,7 +69,7 @@ TEST(Presets, OmegaFollowsThePreset) {
                                     {"cbbg", 0.0},  // the schedule starts at 0 (n2 = 500)
                                     {"pd_only", 0.0},
                                     {kLearntActor, 1.0}}) {
-    const ClosedLoop loop = build_preset(name, config);
+    const ClosedLoop loop = build_preset(name, config::read_parameters(config));
     auto context = loop.diagram->create_context(1);
     EXPECT_EQ(loop.diagram->eval_output(*context, *loop.telemetry)[kTelemetryOmega], omega) << name;
   }
@@ -76,12 +78,12 @@ TEST(Presets, OmegaFollowsThePreset) {
 TEST(Presets, ThePlantKindAndSupervisorKindSwapBlocks) {
   config::Config config = analytic_config();
   config.set("supervisor.kind=lqr");
-  const ClosedLoop lqr = build_preset("cbbg", config);
+  const ClosedLoop lqr = build_preset("cbbg", config::read_parameters(config));
   auto context = lqr.diagram->create_context(1);
   // Leaning forward, both supervisors push the wheels forward (a_S > 0).
   EXPECT_GT(lqr.diagram->eval_output(*context, *lqr.telemetry)[kTelemetrySupervisorAction], 0.0);
   config.set("plant.kind=simbody");
-  const ClosedLoop simbody = build_preset("cbbg", config);
+  const ClosedLoop simbody = build_preset("cbbg", config::read_parameters(config));
   auto simbody_context = simbody.diagram->create_context(1);
   EXPECT_EQ(simbody.diagram->eval_output(*simbody_context, *simbody.telemetry)[kTelemetryThetaB],
             config.number("trial.theta0"));
@@ -99,7 +101,7 @@ TEST(Presets, UnknownNamesListThePresets) {
 
 TEST(Presets, TheLearntActorOfAnArmKeepsItsSlots) {
   ControllerOptions options = preset("cb_only").options;
-  options.slots.features = [](const std::string&, const config::Config&) {
+  options.slots.features = [](const std::string&, const config::Parameters&) {
     return std::unique_ptr<Block>();
   };
   const ControllerOptions alone = learnt_actor(options);
@@ -114,7 +116,7 @@ TEST(Presets, TheLearntActorOfAnArmKeepsItsSlots) {
 
 // The sampler's generator in a fresh context of preset `name` under `seed`.
 RandomGenerator sampler_stream(const std::string& name, std::uint64_t seed) {
-  const ClosedLoop loop = build_preset(name, analytic_config());
+  const ClosedLoop loop = build_preset(name, config::read_parameters(analytic_config()));
   auto context = loop.diagram->create_context(seed);
   const auto& controller = static_cast<const Diagram&>(loop.diagram->block("controller"));
   const auto& basal_ganglia = static_cast<const Diagram&>(controller.block("basal_ganglia"));

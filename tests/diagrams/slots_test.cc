@@ -83,17 +83,17 @@ class PendulumRobot final : public plant::RobotPlant {
 
 TEST(Slots, AUsersSupervisorTakesTheCerebellumsPlace) {
   ControllerOptions options = preset("cbbg").options;
-  options.slots.supervisor = [](const std::string& name, const config::Config&) {
+  options.slots.supervisor = [](const std::string& name, const config::Parameters&) {
     return std::make_unique<PitchSupervisor>(name);
   };
   const Arm mine = make_arm("cbbg_pitch", options);
-  const ClosedLoop loop = mine.learner(quick_config());
+  const ClosedLoop loop = mine.learner(config::read_parameters(quick_config()));
   auto context = loop.diagram->create_context(1);
   // theta0 = 0.1744 at rest: a_S = 40 theta0.
   EXPECT_DOUBLE_EQ(loop.diagram->eval_output(*context, *loop.telemetry)[kTelemetrySupervisorAction],
                    40.0 * 0.1744);
   const experiments::ExperimentResults results =
-      experiments::run_exp1(quick_config(), {preset_arm("cbbg"), mine});
+      experiments::run_exp1(config::read_parameters(quick_config()), {preset_arm("cbbg"), mine});
   ASSERT_EQ(results.arms, (std::vector<std::string>{"cbbg", "cbbg_pitch"}));
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
     const auto& run = results.run(1, s);
@@ -105,10 +105,11 @@ TEST(Slots, AUsersSupervisorTakesTheCerebellumsPlace) {
 
 TEST(Slots, AUsersFeaturesFeedCriticAndActor) {
   ControllerOptions options = preset("bg_only").options;
-  options.slots.features = [](const std::string& name, const config::Config&) {
+  options.slots.features = [](const std::string& name, const config::Parameters&) {
     return std::make_unique<LinearFeatures>(name);
   };
-  const ClosedLoop loop = make_arm("bg_linear", options).learner(quick_config());
+  const ClosedLoop loop =
+      make_arm("bg_linear", options).learner(config::read_parameters(quick_config()));
   EXPECT_EQ(loop.learner.critic->num_features(), 3);
   EXPECT_EQ(loop.learner.actor->num_features(), 3);
   experiments::TrialRunner runner(loop, 1, 0.01);
@@ -119,15 +120,16 @@ TEST(Slots, AUsersFeaturesFeedCriticAndActor) {
 
 TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
   ClosedLoopOptions pendulum;
-  pendulum.plant = [](const std::string& name, const config::Config&) {
+  pendulum.plant = [](const std::string& name, const config::Parameters&) {
     return std::make_unique<PendulumRobot>(name);
   };
   // The paper's PD law balances the pendulum (50 > 2 * 24.5 / 2 ... stable), its absence not.
-  const ClosedLoop supervised = build_preset("pd_only", quick_config(), pendulum);
+  const ClosedLoop supervised =
+      build_preset("pd_only", config::read_parameters(quick_config()), pendulum);
   experiments::TrialRunner runner(supervised, 1, 0.01);
   EXPECT_EQ(runner.run_trial(0.1744, 5.0).status, experiments::TrialStatus::kSuccess);
-  const experiments::ExperimentResults results =
-      experiments::run_exp1(quick_config(), {preset_arm("bg_only", pendulum)});
+  const experiments::ExperimentResults results = experiments::run_exp1(
+      config::read_parameters(quick_config()), {preset_arm("bg_only", pendulum)});
   EXPECT_EQ(results.runs.size(), 2u);
   EXPECT_GT(results.runs[0].trials.size(), 0u);
   EXPECT_EQ(results.runs[0].trials.front().outcome.status, experiments::TrialStatus::kFailed);

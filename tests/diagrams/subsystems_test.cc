@@ -122,14 +122,14 @@ TEST(CbbgController, OffersTheDocumentedPortsWithAndWithoutBasalGanglia) {
   const std::vector<std::string> outputs{
       "action",   "supervisor_action", "actor_action", "exploration_action", "omega", "value",
       "td_error", "temperature",       "entropy"};
-  const CbbgController full("controller", config, ControllerOptions{});
+  const CbbgController full("controller", config::read_parameters(config), ControllerOptions{});
   EXPECT_EQ(port_names(full, true), (std::vector<std::string>{"measured", "reward", "failed"}));
   EXPECT_EQ(port_names(full, false), outputs);
   EXPECT_EQ(child_names(full), (std::vector<std::string>{"cerebellum", "normaliser",
                                                          "basal_ganglia", "omega", "mixer"}));
   ControllerOptions alone;
   alone.basal_ganglia = false;
-  const CbbgController supervisor("controller", config, alone);
+  const CbbgController supervisor("controller", config::read_parameters(config), alone);
   EXPECT_EQ(port_names(supervisor, true), std::vector<std::string>{"measured"});
   EXPECT_EQ(supervisor.reward(), nullptr);
   EXPECT_EQ(supervisor.basal_ganglia(), nullptr);
@@ -140,15 +140,16 @@ TEST(CbbgController, RefusesOptionsWithNothingThatActs) {
   ControllerOptions nothing;
   nothing.supervisor = false;
   nothing.basal_ganglia = false;
-  EXPECT_THAT([&] { CbbgController("controller", analytic_config(), nothing); },
-              ThrowsMessage<std::invalid_argument>(
-                  "controller options: with neither a supervisor nor basal ganglia nothing acts; "
-                  "keep one of them"));
+  EXPECT_THAT(
+      [&] { CbbgController("controller", config::read_parameters(analytic_config()), nothing); },
+      ThrowsMessage<std::invalid_argument>(
+          "controller options: with neither a supervisor nor basal ganglia nothing acts; "
+          "keep one of them"));
 }
 
 TEST(ClosedLoop, AStartedTrialResetsPerTrialStateAndKeepsTheWeights) {
   const config::Config config = analytic_config();
-  const ClosedLoop loop = build_preset("bg_only", config);
+  const ClosedLoop loop = build_preset("bg_only", config::read_parameters(config));
   experiments::TrialRunner runner(loop, 1, config.number("trial.period"));
   const experiments::TrialOutcome first = runner.run_trial(0.1744, 20.0);
   EXPECT_EQ(first.status, experiments::TrialStatus::kFailed);  // a blank actor cannot balance
@@ -173,11 +174,14 @@ TEST(ClosedLoop, RefusesAPlantWithoutTheRobotPorts) {
     void reset(Context&, double) const override {}
   };
   ClosedLoopOptions options;
-  options.plant = [](const std::string& name, const config::Config&) {
+  options.plant = [](const std::string& name, const config::Parameters&) {
     return std::make_unique<OneInputPlant>(name);
   };
   EXPECT_THAT(
-      [&] { closed_loop_factory("one_input", ControllerOptions{}, options)(analytic_config()); },
+      [&] {
+        closed_loop_factory("one_input", ControllerOptions{},
+                            options)(config::read_parameters(analytic_config()));
+      },
       ThrowsMessage<std::invalid_argument>(
           "plant 'plant' must have an input \"torque\" of size 2 and an output \"state\" "
           "of size 10 (plant/robot_plant.h)"));
@@ -210,7 +214,7 @@ TEST(ParamsFromConfig, PlantSimbodyModelChoosesTheFormulation) {
 }
 
 TEST(ClosedLoop, IsDrawnWithTheCerebellumAndTheBasalGangliaAsClusters) {
-  const ClosedLoop loop = build_preset("cbbg", analytic_config());
+  const ClosedLoop loop = build_preset("cbbg", config::read_parameters(analytic_config()));
   const std::string dot = to_dot(*loop.diagram, {.hidden_blocks = {"cbbg/telemetry"}});
   EXPECT_THAT(dot, HasSubstr("subgraph \"cluster_cbbg/controller/cerebellum\""));
   EXPECT_THAT(dot, HasSubstr("subgraph \"cluster_cbbg/controller/basal_ganglia\""));

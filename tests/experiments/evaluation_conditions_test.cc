@@ -20,42 +20,49 @@ config::Config analytic_config() {
   return config;
 }
 
+// The evaluation's parameters of a training config.
+config::Parameters evaluated(const config::Config& training) {
+  return evaluation_parameters(config::read_parameters(training));
+}
+
 TEST(EvaluationConditions, AtTheirDefaultsTheEvaluationIsTheTraining) {
   const config::Config training = analytic_config();
-  EXPECT_EQ(evaluation_config(training), training);
+  config::Config evaluation;
+  config::write_parameters(evaluated(training), evaluation);
+  EXPECT_EQ(evaluation, training);
 }
 
 TEST(EvaluationConditions, AreDescribedInWordsOnlyWhenChanged) {
   config::Config config = analytic_config();
-  EXPECT_EQ(describe_conditions(config), "");
+  EXPECT_EQ(describe_conditions(config::read_parameters(config).evaluation), "");
   config.set("evaluation.body_mass_scale=0.7");
   config.set("evaluation.com_height_scale=1.15");
   config.set("evaluation.noise_std=0.02");
   config.set("evaluation.push_torque=5");
   config.set("evaluation.push_duration=0.5");
-  EXPECT_EQ(describe_conditions(config),
+  EXPECT_EQ(describe_conditions(config::read_parameters(config).evaluation),
             "body mass x0.7, CoM height x1.15, pitch noise 0.02, push 5 N m from 5 s for 0.5 s");
 }
 
 TEST(EvaluationConditions, TheMassScaleMakesTheBodyDenserAndLeavesTheWheels) {
   config::Config training = analytic_config();
   training.set("evaluation.body_mass_scale=1.3");
-  const config::Config evaluation = evaluation_config(training);
-  EXPECT_DOUBLE_EQ(evaluation.number("plant.body_mass"), 13.0);
-  EXPECT_DOUBLE_EQ(evaluation.number("plant.body_pitch_inertia"), 1.5417 * 1.3);
-  EXPECT_DOUBLE_EQ(evaluation.number("plant.body_yaw_inertia"), 0.5893 * 1.3);
-  EXPECT_DOUBLE_EQ(evaluation.number("plant.body_roll_inertia"), 1.5417 * 1.3);
-  EXPECT_EQ(evaluation.number("plant.wheel_mass"), 1.0);
-  EXPECT_EQ(evaluation.number("plant.com_height"), 0.4);
+  const plant::RobotParams robot = evaluated(training).plant.robot;
+  EXPECT_DOUBLE_EQ(robot.body_mass, 13.0);
+  EXPECT_DOUBLE_EQ(robot.body_pitch_inertia, 1.5417 * 1.3);
+  EXPECT_DOUBLE_EQ(robot.body_yaw_inertia, 0.5893 * 1.3);
+  EXPECT_DOUBLE_EQ(robot.body_roll_inertia, 1.5417 * 1.3);
+  EXPECT_EQ(robot.wheel_mass, 1.0);
+  EXPECT_EQ(robot.com_height, 0.4);
 }
 
 TEST(EvaluationConditions, TheHeightScaleMovesTheCentreOfMassOnly) {
   config::Config training = analytic_config();
   training.set("evaluation.com_height_scale=0.7");
-  const config::Config evaluation = evaluation_config(training);
-  EXPECT_DOUBLE_EQ(evaluation.number("plant.com_height"), 0.28);
-  EXPECT_EQ(evaluation.number("plant.body_pitch_inertia"), 1.5417);
-  EXPECT_EQ(evaluation.number("plant.body_mass"), 10.0);
+  const plant::RobotParams robot = evaluated(training).plant.robot;
+  EXPECT_DOUBLE_EQ(robot.com_height, 0.28);
+  EXPECT_EQ(robot.body_pitch_inertia, 1.5417);
+  EXPECT_EQ(robot.body_mass, 10.0);
 }
 
 TEST(EvaluationConditions, NoiseAddsInQuadratureToThePitchAndPitchRate) {
@@ -63,7 +70,7 @@ TEST(EvaluationConditions, NoiseAddsInQuadratureToThePitchAndPitchRate) {
   training.set("sensors.noise_std=[0.03, 0, 0.5, 0, 0, 0]");
   training.set("evaluation.noise_std=0.04");
   EXPECT_THAT(
-      evaluation_config(training).numbers("sensors.noise_std"),
+      evaluated(training).sensors.noise_std,
       ::testing::Pointwise(::testing::DoubleEq(), std::vector<double>{0.05, 0.04, 0.5, 0, 0, 0}));
 }
 
@@ -72,15 +79,16 @@ TEST(EvaluationConditions, APushTorqueSetsThePushOfEveryTrial) {
   training.set("evaluation.push_torque=-3");
   training.set("evaluation.push_start=2");
   training.set("evaluation.push_duration=0.5");
-  const config::Config evaluation = evaluation_config(training);
-  EXPECT_EQ(evaluation.number("push.torque"), -3.0);
-  EXPECT_EQ(evaluation.number("push.start"), 2.0);
-  EXPECT_EQ(evaluation.number("push.duration"), 0.5);
-  EXPECT_EQ(training.number("push.torque"), 0.0);
+  const blocks::PushParams push = evaluated(training).push;
+  EXPECT_EQ(push.torque, -3.0);
+  EXPECT_EQ(push.start, 2.0);
+  EXPECT_EQ(push.duration, 0.5);
+  EXPECT_EQ(config::read_parameters(training).push.torque, 0.0);
 }
 
 bool has_push(const config::Config& config) {
-  const diagrams::ClosedLoop loop = diagrams::build_preset("pd_only", config);
+  const diagrams::ClosedLoop loop =
+      diagrams::build_preset("pd_only", config::read_parameters(config));
   const auto& blocks = loop.diagram->blocks();
   return std::any_of(blocks.begin(), blocks.end(),
                      [](const auto& block) { return block->name() == "push"; });
@@ -95,9 +103,9 @@ TEST(EvaluationConditions, ThePushOfTheConfigIsABlockOfTheClosedLoop) {
 
 // The supervisor alone, as evaluated, from 0.1744 rad.
 TrialOutcome supervisor_alone(const config::Config& training) {
-  const config::Config config = evaluation_config(training);
-  const PolicyEvaluation evaluation = evaluate_controller(
-      config, diagrams::preset_arm("pd_only").learner, EvaluationSettings{{0.1744}, 1});
+  const PolicyEvaluation evaluation =
+      evaluate_controller(evaluated(training), diagrams::preset_arm("pd_only").learner,
+                          EvaluationSettings{{0.1744}, 1});
   return evaluation.angles.front().runs.front();
 }
 
@@ -122,7 +130,8 @@ TEST(EvaluationConditions, ANoisyPitchChangesWhatTheSupervisorDoes) {
 
 TEST(EvaluationConditions, ALearningLoopIsEvaluatedThroughItsPolicy) {
   EXPECT_THAT(([] {
-                evaluate_controller(analytic_config(), diagrams::preset_arm("cbbg").learner,
+                evaluate_controller(config::read_parameters(analytic_config()),
+                                    diagrams::preset_arm("cbbg").learner,
                                     EvaluationSettings{{0.1}, 1});
               }),
               ::testing::ThrowsMessage<std::invalid_argument>(
@@ -136,7 +145,8 @@ TEST(EvaluationConditions, Exp1EvaluatesTheSupervisorAloneUnderThem) {
   config.set("evaluation.push_torque=-20");
   config.set("evaluation.push_start=2");
   config.set("evaluation.push_duration=1.5");
-  const ExperimentResults results = run_exp1(config, {diagrams::preset_arm("pd_only")});
+  const ExperimentResults results =
+      run_exp1(config::read_parameters(config), {diagrams::preset_arm("pd_only")});
   const SeedRun& run = results.run(0, 0);
   ASSERT_TRUE(run.succeeded);  // trained (here: run) unpushed
   ASSERT_EQ(run.evaluation.size(), 1u);
@@ -147,7 +157,8 @@ TEST(EvaluationConditions, Exp3EvaluatesTheActorItTaughtUnderThem) {
   config::Config config = analytic_config();
   config.set("seeds=1");
   config.set("evaluation.angles=[0.05, 0.25]");
-  const ExperimentResults nominal = run_exp3(config, {diagrams::preset_arm("bg_only")});
+  const ExperimentResults nominal =
+      run_exp3(config::read_parameters(config), {diagrams::preset_arm("bg_only")});
   const SeedRun& run = nominal.run(0, 0);
   ASSERT_TRUE(run.trials_to_skill.has_value());
   ASSERT_EQ(run.evaluation.size(), 2u);
@@ -157,7 +168,8 @@ TEST(EvaluationConditions, Exp3EvaluatesTheActorItTaughtUnderThem) {
   EXPECT_EQ(run.evaluation[1].outcome.status, TrialStatus::kSuccess);
 
   config.set("evaluation.com_height_scale=0.5");
-  const ExperimentResults lower = run_exp3(config, {diagrams::preset_arm("bg_only")});
+  const ExperimentResults lower =
+      run_exp3(config::read_parameters(config), {diagrams::preset_arm("bg_only")});
   EXPECT_EQ(lower.run(0, 0).trials_to_skill, run.trials_to_skill);  // training is nominal
   EXPECT_EQ(lower.run(0, 0).failures_to_skill, run.failures_to_skill);
   EXPECT_NE(lower.run(0, 0).evaluation[1].outcome.final_theta,

@@ -31,7 +31,7 @@ config::Config quick_config() {
 
 TEST(TrialRunner, ATrialReachingItsDurationSucceeds) {
   const config::Config config = quick_config();
-  const auto controller = build_preset("pd_only", config);
+  const auto controller = build_preset("pd_only", config::read_parameters(config));
   TrialRunner runner(controller, 1, config.number("trial.period"));
   const TrialOutcome outcome = runner.run_trial(0.1744, 2.0);
   EXPECT_EQ(outcome.status, TrialStatus::kSuccess);
@@ -44,7 +44,7 @@ TEST(TrialRunner, RecordsThePoseTheWheelsRolledTo) {
   for (const char* kind : {"analytic", "simbody"}) {
     config::Config config = quick_config();
     config.set(std::string("plant.kind=") + kind);
-    const auto controller = build_preset("pd_only", config);
+    const auto controller = build_preset("pd_only", config::read_parameters(config));
     TrialRunner runner(controller, 1, config.number("trial.period"));
     ASSERT_EQ(runner.run_trial(0.1744, 2.0).status, TrialStatus::kSuccess);
     const auto values = runner.telemetry().values();
@@ -63,7 +63,7 @@ TEST(TrialRunner, RecordsThePoseTheWheelsRolledTo) {
 // from the kept log.
 TEST(TrialRunner, MeasuresTheOscillationAfterTheSettleTime) {
   const config::Config config = quick_config();
-  const auto controller = build_preset("pd_only", config);
+  const auto controller = build_preset("pd_only", config::read_parameters(config));
   TelemetryOptions telemetry;
   telemetry.settle_time = 2.0;
   TrialRunner runner(controller, 1, config.number("trial.period"), telemetry);
@@ -110,7 +110,7 @@ TEST(Experiments, Exp1CountsFailuresBeforeTheFirstSuccess) {
   config.set("arms=[cbbg, bg_only]");
   ExperimentOptions two_threads;
   two_threads.jobs = 2;
-  const ExperimentResults results = run_experiment(config, two_threads);
+  const ExperimentResults results = run_experiment(config::read_parameters(config), two_threads);
   ASSERT_EQ(results.runs.size(), 4u);
   EXPECT_EQ(results.seeds, (std::vector<long long>{1, 2}));
   for (const SeedRun& run : results.runs) {
@@ -131,7 +131,7 @@ TEST(Experiments, Exp3RunsUntilTheActorAloneBalancesFromEveryAngle) {
   config::Config config = quick_config();
   config.set("experiment=exp3");
   config.set("arms=[cbbg, bg_only, pd_only]");
-  const ExperimentResults results = run_experiment(config);
+  const ExperimentResults results = run_experiment(config::read_parameters(config));
   EXPECT_EQ(results.experiment, "exp3");
   for (std::size_t arm : {0u, 1u}) {
     for (std::size_t seed = 0; seed < 2; ++seed) {
@@ -164,7 +164,7 @@ TEST(Experiments, Exp3ReportsASeedThatNeverGetsThereAsSuch) {
   config.set("experiment=exp3");
   config.set("arms=[bg_only]");
   config.set("max_trials=2");
-  const ExperimentResults results = run_experiment(config);
+  const ExperimentResults results = run_experiment(config::read_parameters(config));
   for (const SeedRun& run : results.runs) {
     EXPECT_EQ(run.trials.size(), 2u);
     EXPECT_FALSE(run.trials_to_skill.has_value());
@@ -186,7 +186,7 @@ TEST(Experiments, ASeedThatNeverSucceedsCountsAllItsTrials) {
   config.set("seeds=1");
   config.set("max_trials=3");
   config.set("trial.failure_angle=0.1");  // below theta0: every trial fails at once
-  const ExperimentResults results = run_experiment(config);
+  const ExperimentResults results = run_experiment(config::read_parameters(config));
   ASSERT_EQ(results.runs.size(), 1u);
   EXPECT_FALSE(results.runs[0].succeeded);
   EXPECT_EQ(results.runs[0].failures_before_success, 3);
@@ -200,7 +200,7 @@ TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
   config.set("seeds=1");
   config.set("max_trials=3");
   config.set("critic.beta=1e300");  // the critic's weights overflow within a few ticks
-  const ExperimentResults results = run_experiment(config);
+  const ExperimentResults results = run_experiment(config::read_parameters(config));
   const auto& trials = results.runs.at(0).trials;
   ASSERT_EQ(trials.size(), 3u);
   for (const TrialRecord& record : trials) {
@@ -225,7 +225,7 @@ TEST(Experiments, ATemperatureTooLargeToAverageEndsTheTrialAsDiverged) {
   config.set("seeds=1");
   config.set("max_trials=2");
   config.set("tropism.k1=1e306");
-  const ExperimentResults results = run_experiment(config);
+  const ExperimentResults results = run_experiment(config::read_parameters(config));
   bool diverged = false;
   for (const TrialRecord& record : results.runs.at(0).trials) {
     EXPECT_NE(record.outcome.status, TrialStatus::kSuccess) << "trial " << record.trial;
@@ -241,7 +241,7 @@ TEST(Experiments, Exp2AnnealsK1TrialByTrial) {
   config.set("seeds=1");
   config.set("exp2.trials=12");
   config.set("trial.duration=1");
-  const ExperimentResults results = run_experiment(config);
+  const ExperimentResults results = run_experiment(config::read_parameters(config));
   ASSERT_EQ(results.runs.size(), 1u);
   const auto& trials = results.runs[0].trials;
   ASSERT_EQ(trials.size(), 12u);
@@ -258,8 +258,8 @@ TEST(Experiments, Exp1GivesEveryArmOfASeedTheSameRandomStreams) {
   config::Config config = quick_config();
   config.set("log.decimation=0");
   const ControllerOptions options = preset("bg_only").options;
-  const ExperimentResults results =
-      run_exp1(config, {make_arm("first", options), make_arm("second", options)});
+  const ExperimentResults results = run_exp1(
+      config::read_parameters(config), {make_arm("first", options), make_arm("second", options)});
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
     const SeedRun& first = results.run(0, s);
     const SeedRun& second = results.run(1, s);
@@ -274,10 +274,15 @@ TEST(Experiments, Exp1GivesEveryArmOfASeedTheSameRandomStreams) {
   EXPECT_NE(results.run(0, 0).weights->actor, results.run(0, 1).weights->actor);
   EXPECT_THAT(
       [&] {
-        run_exp1(config, {preset_arm("cbbg"), preset_arm("cbbg")});
+        run_exp1(config::read_parameters(config), {preset_arm("cbbg"), preset_arm("cbbg")});
       },
       ::testing::ThrowsMessage<std::invalid_argument>(
           "exp1: two arms are named 'cbbg'; an arm's name must be unique"));
+  EXPECT_THAT(
+      [&] { run_exp1(config::read_parameters(config), {make_arm("mine/v2", options)}); },
+      ::testing::ThrowsMessage<std::invalid_argument>(
+          "exp1: arm name 'mine/v2' is not a name (1 to 100 letters, digits, '_', '-' and '.', "
+          "not starting with '-' or '.'): it names files and columns of the results"));
 }
 
 TEST(Experiments, Exp2CarriesTheCoordinatedTrialsLearningIntoOperantLearning) {
@@ -286,11 +291,11 @@ TEST(Experiments, Exp2CarriesTheCoordinatedTrialsLearningIntoOperantLearning) {
   config.set("seeds=1");
   config.set("exp2.trials=2");
   config.set("log.decimation=0");
-  const ExperimentResults results = run_experiment(config);
+  const ExperimentResults results = run_experiment(config::read_parameters(config));
   ASSERT_EQ(results.runs.front().trials.size(), 2u);
   // By hand: one cbbg trial, then bg_only continuing from its context.
-  const ClosedLoop coordinated = build_preset("cbbg", config);
-  const ClosedLoop operant = build_preset("bg_only", config);
+  const ClosedLoop coordinated = build_preset("cbbg", config::read_parameters(config));
+  const ClosedLoop operant = build_preset("bg_only", config::read_parameters(config));
   TrialRunner first(coordinated, 1, 0.01);
   first.run_trial(0.1744, 20.0);
   TrialRunner later(operant, 1, 0.01);
@@ -303,6 +308,42 @@ TEST(Experiments, Exp2CarriesTheCoordinatedTrialsLearningIntoOperantLearning) {
   const TrialOutcome second = later.run_trial(0.1744, 20.0);
   EXPECT_EQ(results.runs.front().trials[1].outcome.final_theta, second.final_theta);
   EXPECT_EQ(results.runs.front().trials[1].outcome.steps, second.steps);
+}
+
+TEST(Experiments, TheRunsNamesComeFromTheProtocolAndPresetTables) {
+  config::RunParams run;
+  EXPECT_NO_THROW(check_run_names(run));
+  run.arms = {"cbbg", "nope"};
+  EXPECT_THAT([&] { check_run_names(run); },
+              ::testing::ThrowsMessage<config::ConfigError>(
+                  "arms[1] must be one of cbbg, cbbg_weighted, bg_only, cb_only, pd_only; got "
+                  "'nope'"));
+  run.arms = {"cbbg"};
+  run.experiment = "learnt_actor";
+  EXPECT_THAT([&] { check_run_names(run); },
+              ::testing::ThrowsMessage<config::ConfigError>(
+                  "experiment must be one of exp1, exp2, exp3, cbbg, cbbg_weighted, bg_only, "
+                  "cb_only, pd_only; got 'learnt_actor'"));
+  std::vector<std::string> protocols;
+  for (const auto& protocol : protocol_names()) protocols.push_back(protocol.name);
+  EXPECT_EQ(protocols, (std::vector<std::string>{"exp1", "exp2", "exp3"}));
+}
+
+TEST(ResultsWriter, ConfigYamlRecordsTheArmsTheProtocolCompared) {
+  config::Config config = quick_config();
+  config.set("seeds=1");
+  config.set("max_trials=1");
+  config.set("trial.duration=0.5");
+  config.set("log.decimation=0");
+  const ExperimentResults mine =
+      run_exp1(config::read_parameters(config), {make_arm("mine", preset("bg_only").options)});
+  const config::Config recorded = recorded_config(mine, config);
+  EXPECT_EQ(recorded.names("arms"), std::vector<std::string>{"mine"});
+  EXPECT_THAT(recorded.to_yaml(), HasSubstr("\narms: [mine]\n"));
+  // exp2's one arm is not what the arms key means: the config stands as given.
+  ExperimentResults one_arm = mine;
+  one_arm.compares_arms = false;
+  EXPECT_EQ(recorded_config(one_arm, config), config);
 }
 
 TEST(ResultsWriter, TrialsCsvHasOneRowPerTrial) {

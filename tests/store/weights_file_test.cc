@@ -330,11 +330,11 @@ TEST_F(WeightsFile, WrongCountsAndMissingLinesAreNamed) {
 TEST_F(WeightsFile, LayoutMismatchNamesBothLayouts) {
   const LearntWeights weights = default_layout_weights();
   config::Config config;
-  EXPECT_NO_THROW(check_layout(weights, config, "w.txt"));
+  EXPECT_NO_THROW(check_layout(weights, config::read_parameters(config), "w.txt"));
 
   config.set("rbf.centres=[-2, -1, 0, 1, 2]");
   try {
-    check_layout(weights, config, "w.txt");
+    check_layout(weights, config::read_parameters(config), "w.txt");
     FAIL() << "accepted another grid";
   } catch (const config::ConfigError& error) {
     EXPECT_EQ(std::string(error.what()),
@@ -347,7 +347,7 @@ TEST_F(WeightsFile, LayoutMismatchNamesBothLayouts) {
   EXPECT_THROW(
       {
         try {
-          check_layout(weights, config, "w.txt");
+          check_layout(weights, config::read_parameters(config), "w.txt");
         } catch (const config::ConfigError& error) {
           EXPECT_THAT(error.what(), HasSubstr("this config has rbf.centres [-3, -2, -1, 0, 1, 2, "
                                               "3] and rbf.width 0.75 (49 features)"));
@@ -358,7 +358,7 @@ TEST_F(WeightsFile, LayoutMismatchNamesBothLayouts) {
   config = config::Config();
   config.set("normaliser.scale_theta=0.1");
   try {
-    check_layout(weights, config, "w.txt");
+    check_layout(weights, config::read_parameters(config), "w.txt");
     FAIL() << "accepted another normaliser";
   } catch (const config::ConfigError& error) {
     EXPECT_EQ(std::string(error.what()),
@@ -373,14 +373,14 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
   config::Config config;
   config.set("plant.kind=analytic");
   config.set("rbf.centres=[-1, 0, 1]");
-  const ClosedLoop learner = build_preset("bg_only", config);
+  const ClosedLoop learner = build_preset("bg_only", config::read_parameters(config));
   auto learnt = learner.diagram->create_context(1);
   for (int k = 0; k < 9; ++k) {
     learner.learner.actor->mutable_weights(*learnt)[k] = 0.5 * k;
     learner.learner.critic->mutable_weights(*learnt)[k] = -1.0 * k;
   }
-  const LearntWeights weights =
-      learnt_weights(learner, *learnt, config, {"bg_only", 4, 9, "analytic"});
+  const LearntWeights weights = learnt_weights(learner, *learnt, config::read_parameters(config),
+                                               {"bg_only", 4, 9, "analytic"});
   EXPECT_EQ(weights.centres, (std::vector<double>{-1, 0, 1}));
   EXPECT_EQ(weights.width, 0.5);
   EXPECT_EQ(weights.normaliser.scale_dtheta, 0.05817764);
@@ -388,14 +388,14 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
   EXPECT_EQ(weights.critic[8], -8.0);
   EXPECT_EQ(weights.provenance.trials, 9);
 
-  const ClosedLoop policy = build_preset(kLearntActor, config);
+  const ClosedLoop policy = build_preset(kLearntActor, config::read_parameters(config));
   auto evaluated = policy.diagram->create_context(1);
   load_learnt_weights(policy, *evaluated, weights);
   EXPECT_EQ(policy.learner.actor->weights(*evaluated)[4], 2.0);
 
   config::Config grid_of_49;
   grid_of_49.set("plant.kind=analytic");
-  const ClosedLoop other = build_preset("cbbg", grid_of_49);
+  const ClosedLoop other = build_preset("cbbg", config::read_parameters(grid_of_49));
   auto other_context = other.diagram->create_context(1);
   try {
     load_learnt_weights(other, *other_context, weights);
@@ -404,9 +404,12 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
     EXPECT_EQ(std::string(error.what()),
               "the weights have 9 actor weights; diagram 'cbbg' has 49 features");
   }
-  const ClosedLoop supervisor = build_preset("pd_only", config);
+  const ClosedLoop supervisor = build_preset("pd_only", config::read_parameters(config));
   auto supervisor_context = supervisor.diagram->create_context(1);
-  EXPECT_THAT(([&] { learnt_weights(supervisor, *supervisor_context, config, {}); }),
+  EXPECT_THAT(([&] {
+                learnt_weights(supervisor, *supervisor_context, config::read_parameters(config),
+                               {});
+              }),
               ::testing::ThrowsMessage<std::invalid_argument>(
                   "diagram 'pd_only' has no critic and actor: it learns no weights"));
 }
