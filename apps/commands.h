@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "config/config.h"
-#include "config/parameters.h"
-#include "config/sweep.h"
+#include "cbbg/config/config.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/config/sweep.h"
 
 namespace cbbg::app {
 

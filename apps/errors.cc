@@ -1,4 +1,4 @@
-#include "apps/errors.h"
+#include "cbbg/apps/errors.h"
 
 #include <unistd.h>
 
@@ -7,8 +7,8 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "config/config.h"
-#include "store/files.h"
+#include "cbbg/config/config.h"
+#include "cbbg/store/files.h"
 
 namespace cbbg::app {
 namespace fs = std::filesystem;

@@ -1,7 +1,7 @@
 // cbbg eval: load learnt weights, check them against the config, run the policy alone.
 
-#include "apps/eval_command.h"
-#include "apps/errors.h"
+#include "cbbg/apps/eval_command.h"
+#include "cbbg/apps/errors.h"
 
 #include <algorithm>
 #include <charconv>
@@ -10,14 +10,14 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "config/config.h"
-#include "diagrams/presets.h"
-#include "diagrams/validated_parameters.h"
-#include "experiments/evaluation_conditions.h"
-#include "experiments/policy_evaluation.h"
-#include "store/files.h"
-#include "store/output_guard.h"
-#include "store/weights_file.h"
+#include "cbbg/config/config.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/evaluation_conditions.h"
+#include "cbbg/experiments/policy_evaluation.h"
+#include "cbbg/store/files.h"
+#include "cbbg/store/output_guard.h"
+#include "cbbg/store/weights_file.h"
 
 namespace cbbg::app {
 namespace {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "config/parameters.h"
-#include "framework/graphviz.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/framework/graphviz.h"
 
 namespace cbbg::app {
 

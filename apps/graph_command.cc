@@ -2,13 +2,13 @@
 
 #include <iostream>
 
-#include "apps/commands.h"
-#include "apps/errors.h"
-#include "apps/figures.h"
-#include "diagrams/presets.h"
-#include "diagrams/validated_parameters.h"
-#include "experiments/experiments.h"
-#include "store/output_guard.h"
+#include "cbbg/apps/commands.h"
+#include "cbbg/apps/errors.h"
+#include "cbbg/apps/figures.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/experiments.h"
+#include "cbbg/store/output_guard.h"
 
 namespace cbbg::app {
 

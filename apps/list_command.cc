@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <sstream>
 
-#include "apps/commands.h"
-#include "config/config.h"
-#include "diagrams/presets.h"
-#include "experiments/experiments.h"
+#include "cbbg/apps/commands.h"
+#include "cbbg/config/config.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/experiments.h"
 
 namespace cbbg::app {
 namespace {

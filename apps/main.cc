@@ -8,11 +8,11 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
-#include "apps/commands.h"
-#include "apps/errors.h"
-#include "apps/eval_command.h"
-#include "diagrams/presets.h"
-#include "experiments/experiments.h"
+#include "cbbg/apps/commands.h"
+#include "cbbg/apps/errors.h"
+#include "cbbg/apps/eval_command.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/experiments.h"
 
 namespace {
 

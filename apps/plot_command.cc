@@ -8,13 +8,13 @@
 #include <spdlog/spdlog.h>
 #include <sys/wait.h>
 
-#include "apps/commands.h"
-#include "apps/errors.h"
-#include "apps/figures.h"
-#include "diagrams/presets.h"
-#include "experiments/experiments.h"
-#include "replay/trial_log.h"
-#include "store/output_guard.h"
+#include "cbbg/apps/commands.h"
+#include "cbbg/apps/errors.h"
+#include "cbbg/apps/figures.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/experiments.h"
+#include "cbbg/replay/trial_log.h"
+#include "cbbg/store/output_guard.h"
 
 namespace cbbg::app {
 namespace {

@@ -1,4 +1,4 @@
-#include "apps/progress.h"
+#include "cbbg/apps/progress.h"
 
 #include <cstdio>
 

@@ -6,7 +6,7 @@
 #include <mutex>
 #include <string>
 
-#include "experiments/seed_run.h"
+#include "cbbg/experiments/seed_run.h"
 
 namespace cbbg::app {
 

@@ -6,13 +6,13 @@
 
 #include <spdlog/spdlog.h>
 
-#include "apps/commands.h"
-#include "apps/errors.h"
-#include "apps/figures.h"
-#include "experiments/experiments.h"
-#include "replay/replay_page.h"
-#include "store/files.h"
-#include "store/output_guard.h"
+#include "cbbg/apps/commands.h"
+#include "cbbg/apps/errors.h"
+#include "cbbg/apps/figures.h"
+#include "cbbg/experiments/experiments.h"
+#include "cbbg/replay/replay_page.h"
+#include "cbbg/store/files.h"
+#include "cbbg/store/output_guard.h"
 
 namespace cbbg::app {
 namespace {

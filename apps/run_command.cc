@@ -8,19 +8,19 @@
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
-#include "apps/commands.h"
-#include "apps/errors.h"
-#include "apps/figures.h"
-#include "apps/progress.h"
-#include "diagrams/presets.h"
-#include "diagrams/validated_parameters.h"
-#include "experiments/evaluation_conditions.h"
-#include "experiments/experiments.h"
-#include "store/output_guard.h"
-#include "store/results_writer.h"
-#include "store/run_directory.h"
-#include "store/task_store.h"
-#include "store/weights_file.h"
+#include "cbbg/apps/commands.h"
+#include "cbbg/apps/errors.h"
+#include "cbbg/apps/figures.h"
+#include "cbbg/apps/progress.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/evaluation_conditions.h"
+#include "cbbg/experiments/experiments.h"
+#include "cbbg/store/output_guard.h"
+#include "cbbg/store/results_writer.h"
+#include "cbbg/store/run_directory.h"
+#include "cbbg/store/task_store.h"
+#include "cbbg/store/weights_file.h"
 
 namespace cbbg::app {
 namespace {

@@ -9,17 +9,17 @@
 
 #include <spdlog/spdlog.h>
 
-#include "apps/commands.h"
-#include "apps/errors.h"
-#include "apps/figures.h"
-#include "config/sweep.h"
-#include "experiments/experiments.h"
-#include "store/files.h"
-#include "store/results_writer.h"
-#include "store/run_directory.h"
-#include "store/sweep_directory.h"
-#include "store/sweep_results.h"
-#include "store/task_store.h"
+#include "cbbg/apps/commands.h"
+#include "cbbg/apps/errors.h"
+#include "cbbg/apps/figures.h"
+#include "cbbg/config/sweep.h"
+#include "cbbg/experiments/experiments.h"
+#include "cbbg/store/files.h"
+#include "cbbg/store/results_writer.h"
+#include "cbbg/store/run_directory.h"
+#include "cbbg/store/sweep_directory.h"
+#include "cbbg/store/sweep_results.h"
+#include "cbbg/store/task_store.h"
 
 namespace cbbg::app {
 namespace {

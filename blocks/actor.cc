@@ -1,9 +1,9 @@
-#include "blocks/actor.h"
+#include "cbbg/blocks/actor.h"
 
 #include <stdexcept>
 
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
 namespace {

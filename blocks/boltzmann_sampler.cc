@@ -1,10 +1,10 @@
-#include "blocks/boltzmann_sampler.h"
+#include "cbbg/blocks/boltzmann_sampler.h"
 
 #include <cmath>
 
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
-#include "framework/random.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/random.h"
 
 namespace cbbg::blocks {
 

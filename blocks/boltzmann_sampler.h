@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "framework/block.h"
-#include "framework/parameters.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/parameters.h"
 
 namespace cbbg::blocks {
 

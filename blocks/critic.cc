@@ -1,8 +1,8 @@
-#include "blocks/critic.h"
+#include "cbbg/blocks/critic.h"
 
 #include <stdexcept>
 
-#include "blocks/parameter_checks.h"
+#include "cbbg/blocks/parameter_checks.h"
 
 namespace cbbg::blocks {
 

@@ -2,10 +2,10 @@
 
 #include <string>
 
-#include "framework/block.h"
-#include "framework/block_context.h"
-#include "framework/context.h"
-#include "framework/parameters.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/context.h"
+#include "cbbg/framework/parameters.h"
 
 namespace cbbg::blocks {
 

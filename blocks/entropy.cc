@@ -1,10 +1,10 @@
-#include "blocks/entropy.h"
+#include "cbbg/blocks/entropy.h"
 
 #include <cmath>
 #include <numbers>
 
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "framework/block.h"
+#include "cbbg/framework/block.h"
 
 namespace cbbg::blocks {
 

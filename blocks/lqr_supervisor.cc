@@ -1,12 +1,12 @@
-#include "blocks/lqr_supervisor.h"
+#include "cbbg/blocks/lqr_supervisor.h"
 
 #include <stdexcept>
 
-#include "blocks/measured_signals.h"
-#include "blocks/parameter_checks.h"
-#include "blocks/riccati.h"
-#include "framework/block_context.h"
-#include "plant/linearization.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/blocks/riccati.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/plant/linearization.h"
 
 namespace cbbg::blocks {
 

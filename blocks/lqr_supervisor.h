@@ -5,9 +5,9 @@
 
 #include <Eigen/Core>
 
-#include "framework/block.h"
-#include "framework/parameters.h"
-#include "plant/robot_params.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/parameters.h"
+#include "cbbg/plant/robot_params.h"
 
 namespace cbbg::blocks {
 

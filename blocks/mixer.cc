@@ -1,6 +1,6 @@
-#include "blocks/mixer.h"
+#include "cbbg/blocks/mixer.h"
 
-#include "framework/block_context.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
 

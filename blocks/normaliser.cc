@@ -1,10 +1,10 @@
-#include "blocks/normaliser.h"
+#include "cbbg/blocks/normaliser.h"
 
 #include <algorithm>
 
-#include "blocks/measured_signals.h"
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
 

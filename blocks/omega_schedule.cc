@@ -1,11 +1,11 @@
-#include "blocks/omega_schedule.h"
+#include "cbbg/blocks/omega_schedule.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
 
@@ -13,7 +13,8 @@ OmegaMode parse_omega_mode(std::string_view text) {
   if (text == "schedule") return OmegaMode::kSchedule;
   if (text == "zero") return OmegaMode::kZero;
   if (text == "one") return OmegaMode::kOne;
-  throw std::invalid_argument("omega.mode must be schedule, zero or one; got '" +
+  if (text == "constant") return OmegaMode::kConstant;
+  throw std::invalid_argument("omega.mode must be schedule, zero, one or constant; got '" +
                               std::string(text) + "'");
 }
 
@@ -23,6 +24,8 @@ std::string_view to_string(OmegaMode mode) {
       return "zero";
     case OmegaMode::kOne:
       return "one";
+    case OmegaMode::kConstant:
+      return "constant";
     case OmegaMode::kSchedule:
       break;
   }
@@ -31,9 +34,15 @@ std::string_view to_string(OmegaMode mode) {
 
 void OmegaParams::validate() const {
   check_declared(*this, kSection);
-  if (mode != OmegaMode::kSchedule && mode != OmegaMode::kZero && mode != OmegaMode::kOne) {
-    throw std::invalid_argument("omega.mode must be schedule, zero or one; got the value " +
-                                std::to_string(static_cast<int>(mode)));
+  if (mode != OmegaMode::kSchedule && mode != OmegaMode::kZero && mode != OmegaMode::kOne &&
+      mode != OmegaMode::kConstant) {
+    throw std::invalid_argument(
+        "omega.mode must be schedule, zero, one or constant; got the "
+        "value " +
+        std::to_string(static_cast<int>(mode)));
+  }
+  if (mode == OmegaMode::kConstant) {
+    check_bounds("omega constant", constant, interval(0.0, 1.0));
   }
 }
 
@@ -60,6 +69,8 @@ double OmegaSchedule::omega_at(double ticks) const {
       return 0.0;
     case OmegaMode::kOne:
       return 1.0;
+    case OmegaMode::kConstant:
+      return params_.constant;
     case OmegaMode::kSchedule:
       break;
   }

@@ -3,20 +3,21 @@
 #include <string>
 #include <string_view>
 
-#include "framework/block.h"
-#include "framework/context.h"
-#include "framework/parameters.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/context.h"
+#include "cbbg/framework/parameters.h"
 
 namespace cbbg::blocks {
 
-// Config key omega.mode: where omega comes from.
+// Where omega comes from (a controller option, diagrams::ControllerOptions::omega).
 enum class OmegaMode {
   kSchedule,  // "schedule": docs/model.md §2.7's exponential rise (the CB-BG arms)
   kZero,      // "zero": omega = 0, the supervisor alone drives (cb_only)
   kOne,       // "one": omega = 1, exploration alone drives (bg_only)
+  kConstant,  // "constant": omega = OmegaParams::constant throughout (an ablation)
 };
 
-// "schedule", "zero" or "one"; anything else throws naming omega.mode.
+// "schedule", "zero", "one" or "constant"; anything else throws naming omega.mode.
 OmegaMode parse_omega_mode(std::string_view text);
 std::string_view to_string(OmegaMode mode);
 
@@ -25,6 +26,7 @@ struct OmegaParams {
   double n2 = 500.0;  // omega.n2: ticks of pure supervision before omega rises, >= 0
   double n3 = 200.0;  // omega.n3: the rise's time constant in ticks, > 0
   OmegaMode mode = OmegaMode::kSchedule;  // not a config key: the controller's option
+  double constant = 0.5;                  // mode constant's omega, in [0, 1]; the same
 
   static constexpr const char* kSection = "omega";
   template <class Archive>
@@ -33,7 +35,8 @@ struct OmegaParams {
     a.number("n3", n3, "time constant of omega's rise, ticks", kPositive);
   }
 
-  // Throws naming the key unless n2 is finite and >= 0, n3 finite and > 0, mode valid.
+  // Throws naming the key unless n2 is finite and >= 0, n3 finite and > 0, mode valid, and
+  // (mode constant) the constant in [0, 1].
   void validate() const;
 };
 
@@ -46,7 +49,8 @@ struct OmegaParams {
 ///
 /// Equation (mode schedule): omega(t) = max(0, 1 - exp(-(t - n2) / n3)), t the ticks since
 /// learning began: a counter in the discrete state, advanced by each periodic update and
-/// NOT reset between trials. Modes zero and one output that constant.
+/// NOT reset between trials. Modes zero and one output that constant, mode constant its
+/// `constant`.
 /// Parameters: n2 = omega.n2, n3 = omega.n3, mode = omega.mode, the period trial.period.
 class OmegaSchedule final : public Block {
  public:

@@ -1,4 +1,4 @@
-#include "blocks/parameter_checks.h"
+#include "cbbg/blocks/parameter_checks.h"
 
 #include <stdexcept>
 #include <string>

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "framework/parameters.h"
+#include "cbbg/framework/parameters.h"
 
 namespace cbbg::blocks {
 

@@ -1,8 +1,8 @@
-#include "blocks/pd_supervisor.h"
+#include "cbbg/blocks/pd_supervisor.h"
 
-#include "blocks/measured_signals.h"
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
 

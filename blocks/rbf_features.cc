@@ -1,10 +1,10 @@
-#include "blocks/rbf_features.h"
+#include "cbbg/blocks/rbf_features.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
 

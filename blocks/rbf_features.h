@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "framework/block.h"
-#include "framework/parameters.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/parameters.h"
 
 namespace cbbg::blocks {
 

@@ -1,8 +1,8 @@
-#include "blocks/reward.h"
+#include "cbbg/blocks/reward.h"
 
-#include "blocks/measured_signals.h"
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
 void RewardParams::validate() const { check_declared(*this, kSection); }

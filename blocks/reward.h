@@ -2,9 +2,9 @@
 
 #include <string>
 
-#include "framework/block.h"
-#include "framework/context.h"
-#include "framework/parameters.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/context.h"
+#include "cbbg/framework/parameters.h"
 
 namespace cbbg::blocks {
 

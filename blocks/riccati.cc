@@ -1,4 +1,4 @@
-#include "blocks/riccati.h"
+#include "cbbg/blocks/riccati.h"
 
 #include <cmath>
 #include <complex>

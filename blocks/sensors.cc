@@ -1,11 +1,11 @@
-#include "blocks/sensors.h"
+#include "cbbg/blocks/sensors.h"
 
 #include <cmath>
 
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
-#include "framework/random.h"
-#include "plant/plant_ports.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/random.h"
+#include "cbbg/plant/plant_ports.h"
 
 namespace cbbg::blocks {
 namespace {

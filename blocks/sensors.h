@@ -3,10 +3,10 @@
 #include <array>
 #include <string>
 
-#include "blocks/measured_signals.h"
-#include "framework/block.h"
-#include "framework/context.h"
-#include "framework/parameters.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/context.h"
+#include "cbbg/framework/parameters.h"
 
 namespace cbbg::blocks {
 

@@ -1,10 +1,10 @@
-#include "blocks/torque_push.h"
+#include "cbbg/blocks/torque_push.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
 

@@ -1,9 +1,9 @@
-#include "blocks/tropism.h"
+#include "cbbg/blocks/tropism.h"
 
 #include <cmath>
 
-#include "blocks/parameter_checks.h"
-#include "framework/block_context.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
 

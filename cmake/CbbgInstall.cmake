@@ -1,8 +1,10 @@
 # Install rules and a CMake package: find_package(cbbg) gives every library as a target
 # (cbbg::framework, plant, blocks, config, diagrams, experiments, store, replay), the `cbbg`
-# command, its plotting script and its replay page. Headers install under include/cbbg/ with their tree
-# (framework/..., diagrams/...), as the sources include them; plant/simbody/ is the plant
-# library's own (its headers include Simbody) and stays out.
+# command, its plotting script and its replay page; find_package(cbbg COMPONENTS framework)
+# gives the framework alone, needing Eigen only. Headers install under include/cbbg/ with
+# their tree and are included as <cbbg/framework/...>, <cbbg/diagrams/...>, as the sources
+# include them; plant/simbody/ is the plant library's own (its headers include Simbody) and
+# stays out. The docs and the examples install under share/doc/cbbg/.
 include(CMakePackageConfigHelpers)
 
 set(CBBG_LIBRARIES cbbg_framework cbbg_plant cbbg_blocks cbbg_config cbbg_diagrams
@@ -23,6 +25,10 @@ install(PROGRAMS scripts/robustness_study.sh scripts/robustness_report.py
 # The Slurm batch scripts of a sweep (README: Sweeps).
 install(PROGRAMS scripts/slurm/sweep.sbatch scripts/slurm/merge.sbatch scripts/slurm/submit_sweep.sh
         DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/slurm)
+# The documentation, and the examples as a user's project to start from.
+install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
+install(DIRECTORY examples/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples)
 install(EXPORT cbbgTargets NAMESPACE cbbg:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/cbbg)
 
 configure_package_config_file(cmake/cbbgConfig.cmake.in

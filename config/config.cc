@@ -1,4 +1,4 @@
-#include "config/config.h"
+#include "cbbg/config/config.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,7 +9,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "framework/number_text.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::config {
 namespace {

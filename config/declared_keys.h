@@ -20,9 +20,9 @@
 #include <utility>
 #include <vector>
 
-#include "config/config.h"
-#include "config/own_sections.h"
-#include "framework/parameters.h"
+#include "cbbg/config/config.h"
+#include "cbbg/config/own_sections.h"
+#include "cbbg/framework/parameters.h"
 
 namespace cbbg::config {
 

@@ -1,11 +1,11 @@
-#include "config/parameters.h"
+#include "cbbg/config/parameters.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <utility>
 
-#include "config/declared_keys.h"
-#include "framework/number_text.h"
+#include "cbbg/config/declared_keys.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::config {
 namespace {

@@ -9,22 +9,22 @@
 #include <string>
 #include <vector>
 
-#include "blocks/actor.h"
-#include "blocks/boltzmann_sampler.h"
-#include "blocks/critic.h"
-#include "blocks/lqr_supervisor.h"
-#include "blocks/normaliser.h"
-#include "blocks/omega_schedule.h"
-#include "blocks/pd_supervisor.h"
-#include "blocks/rbf_features.h"
-#include "blocks/reward.h"
-#include "blocks/sensors.h"
-#include "blocks/torque_push.h"
-#include "blocks/tropism.h"
-#include "config/config.h"
-#include "config/own_sections.h"
-#include "framework/parameters.h"
-#include "plant/robot_params.h"
+#include "cbbg/blocks/actor.h"
+#include "cbbg/blocks/boltzmann_sampler.h"
+#include "cbbg/blocks/critic.h"
+#include "cbbg/blocks/lqr_supervisor.h"
+#include "cbbg/blocks/normaliser.h"
+#include "cbbg/blocks/omega_schedule.h"
+#include "cbbg/blocks/pd_supervisor.h"
+#include "cbbg/blocks/rbf_features.h"
+#include "cbbg/blocks/reward.h"
+#include "cbbg/blocks/sensors.h"
+#include "cbbg/blocks/torque_push.h"
+#include "cbbg/blocks/tropism.h"
+#include "cbbg/config/config.h"
+#include "cbbg/config/own_sections.h"
+#include "cbbg/framework/parameters.h"
+#include "cbbg/plant/robot_params.h"
 
 namespace cbbg::config {
 

@@ -1,4 +1,4 @@
-#include "config/sweep.h"
+#include "cbbg/config/sweep.h"
 
 #include <fstream>
 #include <sstream>

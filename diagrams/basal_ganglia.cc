@@ -1,10 +1,10 @@
-#include "diagrams/basal_ganglia.h"
+#include "cbbg/diagrams/basal_ganglia.h"
 
 #include <limits>
 
-#include "diagrams/slot_check.h"
-#include "framework/diagram_builder.h"
-#include "framework/primitives/constant_source.h"
+#include "cbbg/diagrams/slot_check.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/constant_source.h"
 
 namespace cbbg::diagrams {
 

@@ -7,12 +7,12 @@
 #include <memory>
 #include <string>
 
-#include "blocks/actor.h"
-#include "blocks/boltzmann_sampler.h"
-#include "blocks/critic.h"
-#include "blocks/entropy.h"
-#include "blocks/tropism.h"
-#include "framework/diagram.h"
+#include "cbbg/blocks/actor.h"
+#include "cbbg/blocks/boltzmann_sampler.h"
+#include "cbbg/blocks/critic.h"
+#include "cbbg/blocks/entropy.h"
+#include "cbbg/blocks/tropism.h"
+#include "cbbg/framework/diagram.h"
 
 namespace cbbg::diagrams {
 

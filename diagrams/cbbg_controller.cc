@@ -1,16 +1,18 @@
-#include "diagrams/cbbg_controller.h"
+#include "cbbg/diagrams/cbbg_controller.h"
 
 #include <limits>
 #include <stdexcept>
 
-#include "blocks/lqr_supervisor.h"
-#include "blocks/mixer.h"
-#include "blocks/normaliser.h"
-#include "blocks/pd_supervisor.h"
-#include "blocks/rbf_features.h"
-#include "config/parameters.h"
-#include "framework/diagram_builder.h"
-#include "framework/primitives/constant_source.h"
+#include "cbbg/blocks/lqr_supervisor.h"
+#include "cbbg/blocks/mixer.h"
+#include "cbbg/blocks/normaliser.h"
+#include "cbbg/blocks/pd_supervisor.h"
+#include "cbbg/blocks/rbf_features.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/slot_check.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/number_text.h"
+#include "cbbg/framework/primitives/constant_source.h"
 
 namespace cbbg::diagrams {
 namespace {
@@ -48,13 +50,27 @@ BasalGangliaParams basal_ganglia_params(const config::Parameters& p,
   params.critic = p.critic;
   params.actor = p.actor;
   if (options.actor_rule) params.actor.rule = *options.actor_rule;
-  params.critic.frozen = params.actor.frozen = !options.learning;
+  params.critic.frozen = !options.critic_learns;
+  params.actor.frozen = !options.actor_learns;
   params.tropism = p.tropism;
   params.sampler = p.sampler;
   params.entropy = blocks::EntropyParams{p.sampler.k_b};
   params.period = p.trial.period;
   params.exploration = options.exploration;
   return params;
+}
+
+// The omega slot's block, or the schedule in the options' mode.
+std::unique_ptr<Block> omega_block(const ControllerOptions& options, const config::Parameters& p) {
+  if (options.slots.omega) {
+    std::unique_ptr<Block> block = options.slots.omega("omega", p);
+    check_slot_block(block.get(), "omega slot", nullptr, "omega", 1);
+    return block;
+  }
+  blocks::OmegaParams params = p.omega;
+  params.mode = options.omega;
+  params.constant = options.omega_constant;
+  return std::make_unique<blocks::OmegaSchedule>("omega", params, p.trial.period);
 }
 
 }  // namespace
@@ -64,6 +80,10 @@ void ControllerOptions::validate() const {
     throw std::invalid_argument(
         "controller options: with neither a supervisor nor basal ganglia nothing acts; keep "
         "one of them");
+  }
+  if (omega == blocks::OmegaMode::kConstant && !(omega_constant >= 0.0 && omega_constant <= 1.0)) {
+    throw std::invalid_argument("controller options: omega_constant must be in [0, 1]; got " +
+                                format_number(omega_constant));
   }
 }
 
@@ -94,15 +114,12 @@ CbbgController::CbbgController(std::string name, const config::Parameters& param
 void CbbgController::add_basal_ganglia(DiagramBuilder& builder, const config::Parameters& p,
                                        const ControllerOptions& options,
                                        const OutputPort& supervisor_action) {
-  const double period = p.trial.period;
-  blocks::OmegaParams omega_params = p.omega;
-  omega_params.mode = options.omega;
   const Block& normaliser =
       builder.add(fill_slot(options.slots.normaliser, configured_normaliser, "normaliser", p));
   auto& basal_ganglia = builder.emplace<BasalGanglia>(
       "basal_ganglia", fill_slot(options.slots.features, configured_features, "features", p),
       basal_ganglia_params(p, options));
-  auto& omega = builder.emplace<blocks::OmegaSchedule>("omega", omega_params, period);
+  const Block& omega = builder.add(omega_block(options, p));
   auto& mixer = builder.emplace<blocks::Mixer>("mixer");
   basal_ganglia_ = &basal_ganglia;
 

@@ -9,12 +9,12 @@
 #include <optional>
 #include <string>
 
-#include "blocks/actor.h"
-#include "blocks/omega_schedule.h"
-#include "config/parameters.h"
-#include "diagrams/basal_ganglia.h"
-#include "diagrams/cerebellum.h"
-#include "framework/diagram.h"
+#include "cbbg/blocks/actor.h"
+#include "cbbg/blocks/omega_schedule.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/basal_ganglia.h"
+#include "cbbg/diagrams/cerebellum.h"
+#include "cbbg/framework/diagram.h"
 
 namespace cbbg {
 class DiagramBuilder;
@@ -39,6 +39,9 @@ struct ControllerSlots {
   // Input "x", output "features": what critic and actor share. Default: blocks::RbfFeatures
   // (rbf.*).
   BlockFactory features;
+  // No input, output "omega" (1): omega(t), in [0, 1]. Default: blocks::OmegaSchedule, in
+  // ControllerOptions::omega's mode. Set, it replaces that mode.
+  BlockFactory omega;
 };
 
 // Independent choices; each preset of presets.h is one set of them.
@@ -48,18 +51,20 @@ struct ControllerOptions {
   // False: no basal ganglia; the supervisor drives alone (a = a_S) and nothing learns.
   bool basal_ganglia = true;
   // omega: kSchedule (omega.n2, omega.n3), kZero (the supervisor drives), kOne (the basal
-  // ganglia drive).
+  // ganglia drive), kConstant (omega_constant throughout). slots.omega replaces it.
   blocks::OmegaMode omega = blocks::OmegaMode::kSchedule;
+  double omega_constant = 0.5;  // kConstant's omega, in [0, 1]
   // The actor's learning rule; unset: actor.rule.
   std::optional<blocks::ActorRule> actor_rule;
-  // False: critic and actor act but never change their weights.
-  bool learning = true;
+  // False: that learner acts but never changes its weights (frozen); the other learns on.
+  bool critic_learns = true;
+  bool actor_learns = true;
   // False: no exploration; a_E = a_A, and T and E are NaN.
   bool exploration = true;
   ControllerSlots slots;
 
   // Throws std::invalid_argument for choices that make no controller (no supervisor and no
-  // basal ganglia).
+  // basal ganglia) and for an omega_constant outside [0, 1] (with kConstant).
   void validate() const;
 };
 
@@ -82,7 +87,9 @@ struct ControllerOptions {
 ///
 /// Without basal ganglia the outputs from actor_action on are NaN, except omega = 0.
 /// Blocks: "cerebellum" (Cerebellum) or the constant "no_supervisor"; "normaliser",
-/// "basal_ganglia" (BasalGanglia), "omega" (blocks::OmegaSchedule), "mixer".
+/// "basal_ganglia" (BasalGanglia), "omega" (blocks::OmegaSchedule or the omega slot's),
+/// "mixer". The closed loop needs none of these names: any diagram with these ports is a
+/// controller (closed_loop.h).
 class CbbgController final : public Diagram {
  public:
   CbbgController(std::string name, const config::Parameters& parameters,

@@ -1,7 +1,7 @@
-#include "diagrams/cerebellum.h"
+#include "cbbg/diagrams/cerebellum.h"
 
-#include "diagrams/slot_check.h"
-#include "framework/diagram_builder.h"
+#include "cbbg/diagrams/slot_check.h"
+#include "cbbg/framework/diagram_builder.h"
 
 namespace cbbg::diagrams {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "framework/diagram.h"
+#include "cbbg/framework/diagram.h"
 
 namespace cbbg::diagrams {
 

@@ -1,17 +1,20 @@
-#include "diagrams/closed_loop.h"
+#include "cbbg/diagrams/closed_loop.h"
 
+#include <limits>
 #include <stdexcept>
 
-#include "blocks/failure_detector.h"
-#include "blocks/reward.h"
-#include "blocks/sensors.h"
-#include "config/parameters.h"
-#include "framework/diagram_builder.h"
-#include "framework/primitives/multiplexer.h"
-#include "framework/primitives/selector.h"
-#include "framework/primitives/zero_order_hold.h"
-#include "plant/analytic_plant.h"
-#include "plant/simbody_plant.h"
+#include "cbbg/blocks/failure_detector.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/blocks/reward.h"
+#include "cbbg/blocks/sensors.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/constant_source.h"
+#include "cbbg/framework/primitives/multiplexer.h"
+#include "cbbg/framework/primitives/selector.h"
+#include "cbbg/framework/primitives/zero_order_hold.h"
+#include "cbbg/plant/analytic_plant.h"
+#include "cbbg/plant/simbody_plant.h"
 
 namespace cbbg::diagrams {
 namespace {
@@ -62,9 +65,62 @@ void wire_actuation(DiagramBuilder& builder, double period, const OutputPort& ac
   builder.connect(wheel_torques.output_port("y"), robot.torque_input());
 }
 
+void check_port_size(const Diagram& controller, const char* kind, const char* name, int size,
+                     int wanted) {
+  if (size == wanted) return;
+  throw std::invalid_argument("controller '" + controller.name() + "': its " + kind + " \"" + name +
+                              "\" has size " + std::to_string(size) + "; it must be " +
+                              std::to_string(wanted));
+}
+
+// The ports the closed loop feeds and reads (kControllerDiagnostics' comment), and no other
+// input: an input left unfed would read nothing.
+void check_controller_ports(const Diagram& controller) {
+  const OutputPort* action = controller.find_output_port("action");
+  if (action == nullptr || action->size() != 1) {
+    throw std::invalid_argument("controller '" + controller.name() +
+                                "' must have an output \"action\" of size 1; its outputs are: " +
+                                controller.output_port_names());
+  }
+  const InputPort* measured = controller.find_input_port("measured");
+  if (measured == nullptr) {
+    throw std::invalid_argument("controller '" + controller.name() +
+                                "' must have an input \"measured\" of size 6; its inputs are: " +
+                                controller.input_port_names());
+  }
+  for (int i = 0; i < controller.num_input_ports(); ++i) {
+    const InputPort& input = controller.input_port(i);
+    const std::string& name = input.name();
+    if (name == "measured") {
+      check_port_size(controller, "input", "measured", input.size(), blocks::kMeasuredSize);
+    } else if (name == "reward" || name == "failed") {
+      check_port_size(controller, "input", name.c_str(), input.size(), 1);
+    } else {
+      throw std::invalid_argument(
+          "controller '" + controller.name() + "' has an input \"" + name +
+          "\" the closed loop does not feed; it feeds \"measured\" (6), \"reward\" (1) and "
+          "\"failed\" (1)");
+    }
+  }
+  for (const char* name : kControllerDiagnostics) {
+    if (const OutputPort* output = controller.find_output_port(name)) {
+      check_port_size(controller, "output", name, output->size(), 1);
+    }
+  }
+}
+
+// The controller's output `name`, or a NaN source for a diagnostic it does not have.
+const OutputPort& diagnostic(DiagramBuilder& builder, const Diagram& controller, const char* name) {
+  if (const OutputPort* output = controller.find_output_port(name)) return *output;
+  return builder
+      .emplace<ConstantSource>(std::string("no_") + name,
+                               Vector::Constant(1, std::numeric_limits<double>::quiet_NaN()))
+      .output_port("y");
+}
+
 // The multiplexer of telemetry.h's signals.
 const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& measured,
-                                 const CbbgController& controller, const OutputPort& reward,
+                                 const Diagram& controller, const OutputPort& reward,
                                  const plant::RobotPlant& robot) {
   const std::vector<std::string> from_controller{
       "supervisor_action", "actor_action", "exploration_action", "action", "omega", "value",
@@ -81,17 +137,36 @@ const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& meas
   builder.connect(pose.output_port("y"), telemetry.input_port("pose"));
   builder.connect(measured, telemetry.input_port("measured"));
   for (const auto& name : from_controller) {
-    builder.connect(controller.output_port(name), telemetry.input_port(name));
+    builder.connect(diagnostic(builder, controller, name.c_str()), telemetry.input_port(name));
   }
   builder.connect(reward, telemetry.input_port("reward"));
-  builder.connect(controller.output_port("entropy"), telemetry.input_port("entropy"));
+  builder.connect(diagnostic(builder, controller, "entropy"), telemetry.input_port("entropy"));
   return telemetry.output_port("y");
 }
 
-LearnerBlocks learner_of(const CbbgController& controller) {
-  const BasalGanglia* basal_ganglia = controller.basal_ganglia();
-  if (basal_ganglia == nullptr) return {};
-  return {&basal_ganglia->critic(), &basal_ganglia->actor(), basal_ganglia->tropism()};
+// Sets `slot` to `found`, refusing a second learner of the same kind.
+template <typename B>
+void keep_learner(const B*& slot, const B* found, const Diagram& controller, const char* kind) {
+  if (slot != nullptr) {
+    throw std::invalid_argument("controller '" + controller.name() + "' has two " + kind + "s ('" +
+                                slot->path() + "' and '" + found->path() +
+                                "'); a closed loop keeps the weights of one");
+  }
+  slot = found;
+}
+
+void find_learners(const Diagram& diagram, const Diagram& controller, LearnerBlocks& found) {
+  for (const auto& block : diagram.blocks()) {
+    if (block->is_diagram()) {
+      find_learners(static_cast<const Diagram&>(*block), controller, found);
+    } else if (const auto* critic = dynamic_cast<const blocks::Critic*>(block.get())) {
+      keep_learner(found.critic, critic, controller, "critic");
+    } else if (const auto* actor = dynamic_cast<const blocks::Actor*>(block.get())) {
+      keep_learner(found.actor, actor, controller, "actor");
+    } else if (const auto* tropism = dynamic_cast<const blocks::Tropism*>(block.get())) {
+      keep_learner(found.tropism, tropism, controller, "tropism");
+    }
+  }
 }
 
 }  // namespace
@@ -102,8 +177,10 @@ void ClosedLoop::start_trial(Context& context, double theta0) const {
 }
 
 ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
-                             std::unique_ptr<CbbgController> controller,
+                             std::unique_ptr<Diagram> controller,
                              const ClosedLoopOptions& options) {
+  if (!controller) throw std::invalid_argument("the controller factory returned null");
+  check_controller_ports(*controller);
   ClosedLoop loop;
   loop.accuracy = p.plant.robot.accuracy;
   loop.wheel_radius = p.plant.robot.wheel_radius;
@@ -118,19 +195,24 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   auto& failure = builder.emplace<blocks::FailureDetector>(
       "failure", blocks::FailureDetectorParams{p.trial.failure_angle}, period);
   auto& reward = builder.emplace<blocks::Reward>("reward", p.reward, period);
-  const CbbgController& brain = builder.add(std::move(controller));
+  const Diagram& brain = builder.add(std::move(controller));
   loop.plant = &robot;
-  loop.learner = learner_of(brain);
+  loop.controller = &brain;
+  find_learners(brain, brain, loop.learner);
 
   builder.connect(robot.state_output(), sensors.input_port("plant_state"));
   const OutputPort& measured = sensors.output_port("measured");
   builder.connect(measured, failure.input_port("measured"));
   builder.connect(measured, reward.input_port("measured"));
   builder.connect(failure.output_port("failed"), reward.input_port("failed"));
-  builder.connect(measured, brain.measured());
-  if (brain.reward() != nullptr) builder.connect(reward.output_port("reward"), *brain.reward());
-  if (brain.failed() != nullptr) builder.connect(failure.output_port("failed"), *brain.failed());
-  wire_actuation(builder, period, brain.action(), robot,
+  builder.connect(measured, brain.input_port("measured"));
+  if (const InputPort* learns_from = brain.find_input_port("reward")) {
+    builder.connect(reward.output_port("reward"), *learns_from);
+  }
+  if (const InputPort* ends_on = brain.find_input_port("failed")) {
+    builder.connect(failure.output_port("failed"), *ends_on);
+  }
+  wire_actuation(builder, period, brain.output_port("action"), robot,
                  options.push ? options.push : configured_push(p));
   loop.telemetry = &wire_telemetry(builder, measured, brain, reward.output_port("reward"), robot);
   loop.diagram = builder.build();
@@ -140,11 +222,19 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
 ClosedLoopFactory closed_loop_factory(std::string name, ControllerOptions controller,
                                       ClosedLoopOptions options) {
   controller.validate();
+  return closed_loop_factory(
+      std::move(name),
+      [controller = std::move(controller)](const config::Parameters& parameters) {
+        return std::make_unique<CbbgController>("controller", parameters, controller);
+      },
+      std::move(options));
+}
+
+ClosedLoopFactory closed_loop_factory(std::string name, ControllerFactory controller,
+                                      ClosedLoopOptions options) {
   return [name = std::move(name), controller = std::move(controller),
           options = std::move(options)](const config::Parameters& parameters) {
-    return build_closed_loop(name, parameters,
-                             std::make_unique<CbbgController>("controller", parameters, controller),
-                             options);
+    return build_closed_loop(name, parameters, controller(parameters), options);
   };
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The closed loop a trial runs: any robot plant (plant/robot_plant.h), the sensors, the task
-// (failure detector and sliding-surface reward), a CB-BG controller, the zero-order hold on
-// its action, and a telemetry multiplexer of what each tick records (telemetry.h).
+// (failure detector and sliding-surface reward), any controller (a CbbgController, or a
+// diagram of the user's with a controller's ports), the zero-order hold on its action, and a
+// telemetry multiplexer of what each tick records (telemetry.h).
 //
 //   plant -> sensors -> failure, reward -> controller -> hold [-> push] -> both wheels -> plant
 //
@@ -13,18 +14,18 @@
 #include <optional>
 #include <string>
 
-#include "blocks/critic.h"
-#include "blocks/torque_push.h"
-#include "blocks/tropism.h"
-#include "diagrams/cbbg_controller.h"
-#include "diagrams/telemetry.h"
-#include "framework/diagram.h"
-#include "plant/robot_plant.h"
+#include "cbbg/blocks/critic.h"
+#include "cbbg/blocks/torque_push.h"
+#include "cbbg/blocks/tropism.h"
+#include "cbbg/diagrams/cbbg_controller.h"
+#include "cbbg/diagrams/telemetry.h"
+#include "cbbg/framework/diagram.h"
+#include "cbbg/plant/robot_plant.h"
 
 namespace cbbg::diagrams {
 
-// The learning blocks the protocols read and write (weights files, exp2's annealing of k1);
-// null where a controller has none.
+// The learning blocks the protocols read and write (weights files, exp2's annealing of k1),
+// found by their type anywhere in the controller; null where it has none.
 struct LearnerBlocks {
   const blocks::Critic* critic = nullptr;
   const blocks::Actor* actor = nullptr;
@@ -37,8 +38,14 @@ struct ClosedLoop {
   const plant::RobotPlant* plant = nullptr;
   const OutputPort* telemetry = nullptr;  // kTelemetrySize signals, TelemetryIndex order
   LearnerBlocks learner;
-  double accuracy = 1e-6;      // the simulator's (plant.accuracy)
-  double wheel_radius = 0.15;  // plant.wheel_radius, m: wheel angles to distance
+  const Diagram* controller = nullptr;  // kControllerDiagnostics' comment: its ports
+  double accuracy = 1e-6;               // the simulator's (plant.accuracy)
+  double wheel_radius = 0.15;           // plant.wheel_radius, m: wheel angles to distance
+
+  // Whether the controller has the diagnostic output `name` (the telemetry's is NaN if not).
+  bool outputs(const char* name) const {
+    return controller == nullptr || controller->find_output_port(name) != nullptr;
+  }
 
   // Starts a trial in `context`: time 0, every block's per-trial state reset
   // (Context::reset_trial_state), the robot at `theta0` and at rest; learnt weights, the
@@ -58,19 +65,34 @@ struct ClosedLoopOptions {
   std::optional<blocks::PushParams> push{};
 };
 
-// Wires `controller` (named anything; its ports as CbbgController's) into the closed loop
-// named `name`. Throws std::invalid_argument when the plant's ports are not the
-// RobotPlant's, config::ConfigError for a value a block rejects.
+// What the closed loop feeds a controller, and what it reads of it. Required: input
+// "measured" (6, blocks/measured_signals.h) and output "action" (1). Optional: inputs
+// "reward" and "failed" (1 each: a learner's), and any of the diagnostic outputs (1 each),
+// which the telemetry records (NaN for those it lacks).
+inline constexpr const char* kControllerDiagnostics[] = {
+    "supervisor_action", "actor_action", "exploration_action", "omega", "value", "td_error",
+    "temperature",       "entropy"};
+
+// Wires `controller` (any diagram with the ports above; CbbgController is one) into the
+// closed loop named `name`. Its learners (blocks::Critic, blocks::Actor, blocks::Tropism)
+// are found wherever they sit in it. Throws std::invalid_argument when the controller's or
+// the plant's ports do not fit, naming them, or the controller has two learners of a kind.
 ClosedLoop build_closed_loop(std::string name, const config::Parameters& parameters,
-                             std::unique_ptr<CbbgController> controller,
+                             std::unique_ptr<Diagram> controller,
                              const ClosedLoopOptions& options = {});
 
 // Builds the closed loop of one arm from the run's typed parameters; called once per task
 // (maybe in several threads at once, each with its own result).
 using ClosedLoopFactory = std::function<ClosedLoop(const config::Parameters& parameters)>;
 
+// Builds a controller (any diagram with a controller's ports) from the run's parameters.
+using ControllerFactory = std::function<std::unique_ptr<Diagram>(const config::Parameters&)>;
+
 // The factory of a CB-BG controller with `controller` options, in a closed loop named `name`.
 ClosedLoopFactory closed_loop_factory(std::string name, ControllerOptions controller,
+                                      ClosedLoopOptions options = {});
+// The same for a controller of the user's own.
+ClosedLoopFactory closed_loop_factory(std::string name, ControllerFactory controller,
                                       ClosedLoopOptions options = {});
 
 }  // namespace cbbg::diagrams

@@ -1,4 +1,4 @@
-#include "diagrams/presets.h"
+#include "cbbg/diagrams/presets.h"
 
 #include <stdexcept>
 
@@ -79,8 +79,9 @@ ControllerOptions learnt_actor(ControllerOptions options) {
   options.supervisor = false;
   options.basal_ganglia = true;
   options.omega = blocks::OmegaMode::kOne;
-  options.learning = false;
+  options.critic_learns = options.actor_learns = false;
   options.exploration = false;
+  options.slots.omega = {};  // a user's omega would not be 1
   return options;
 }
 
@@ -94,6 +95,17 @@ Arm make_arm(std::string name, const ControllerOptions& options, const ClosedLoo
   arm.learner = closed_loop_factory(name, options, loop);
   if (options.basal_ganglia) {
     arm.policy = closed_loop_factory(name + "_" + kLearntActor, learnt_actor(options), loop);
+  }
+  arm.name = std::move(name);
+  return arm;
+}
+
+Arm make_arm(std::string name, ControllerFactory learner, ControllerFactory policy,
+             const ClosedLoopOptions& loop) {
+  Arm arm;
+  arm.learner = closed_loop_factory(name, std::move(learner), loop);
+  if (policy) {
+    arm.policy = closed_loop_factory(name + "_" + kLearntActor, std::move(policy), loop);
   }
   arm.name = std::move(name);
   return arm;

@@ -23,8 +23,8 @@
 #include <string_view>
 #include <vector>
 
-#include "diagrams/cbbg_controller.h"
-#include "diagrams/closed_loop.h"
+#include "cbbg/diagrams/cbbg_controller.h"
+#include "cbbg/diagrams/closed_loop.h"
 
 namespace cbbg::diagrams {
 
@@ -45,7 +45,8 @@ std::vector<std::string> arm_names();
 const Preset& preset(std::string_view name);
 
 // The learnt actor of a controller alone: `options` with omega = 1, no supervisor, no
-// exploration and frozen weights, its slots (normaliser, features) kept.
+// exploration and frozen weights, its slots (normaliser, features) kept, an omega slot
+// dropped.
 ControllerOptions learnt_actor(ControllerOptions options);
 
 // What an experiment compares: a name, the closed loop that learns, and the closed loop of
@@ -61,6 +62,12 @@ ClosedLoop build_preset(std::string_view name, const config::Parameters& paramet
                         const ClosedLoopOptions& loop = {});
 
 Arm make_arm(std::string name, const ControllerOptions& options,
+             const ClosedLoopOptions& loop = {});
+// The arm of a controller of the user's own (closed_loop.h's ports): `learner` is the one
+// that runs the trials; `policy`, when given, its learnt actor alone, which the evaluations
+// load the learnt weights into (without one, a learning arm's weights are kept but not
+// evaluated, and an arm that learns nothing is evaluated as it is).
+Arm make_arm(std::string name, ControllerFactory learner, ControllerFactory policy = {},
              const ClosedLoopOptions& loop = {});
 // The arm of a preset (not learnt_actor), in a closed loop named after it.
 Arm preset_arm(std::string_view name, const ClosedLoopOptions& loop = {});

@@ -1,9 +1,9 @@
-#include "diagrams/validated_parameters.h"
+#include "cbbg/diagrams/validated_parameters.h"
 
 #include <stdexcept>
 
-#include "blocks/failure_detector.h"
-#include "blocks/lqr_supervisor.h"
+#include "cbbg/blocks/failure_detector.h"
+#include "cbbg/blocks/lqr_supervisor.h"
 
 namespace cbbg::diagrams {
 namespace {

@@ -6,8 +6,8 @@
 // (config::Parameters::check_across_sections). This is the edge of a run: below it, blocks,
 // diagrams and protocols take the typed tree and look no key up.
 
-#include "config/config.h"
-#include "config/parameters.h"
+#include "cbbg/config/config.h"
+#include "cbbg/config/parameters.h"
 
 namespace cbbg::diagrams {
 

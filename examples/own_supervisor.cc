@@ -19,19 +19,19 @@
 #include <string>
 #include <vector>
 
-#include "blocks/measured_signals.h"
-#include "config/declared_keys.h"
-#include "config/parameters.h"
-#include "config/sweep.h"
-#include "diagrams/presets.h"
-#include "diagrams/validated_parameters.h"
-#include "experiments/experiments.h"
-#include "framework/block_context.h"
-#include "framework/graphviz.h"
-#include "store/results_writer.h"
-#include "store/run_directory.h"
-#include "store/sweep_directory.h"
-#include "store/task_store.h"
+#include <cbbg/blocks/measured_signals.h>
+#include <cbbg/config/declared_keys.h>
+#include <cbbg/config/parameters.h>
+#include <cbbg/config/sweep.h>
+#include <cbbg/diagrams/presets.h>
+#include <cbbg/diagrams/validated_parameters.h>
+#include <cbbg/experiments/experiments.h>
+#include <cbbg/framework/block_context.h>
+#include <cbbg/framework/graphviz.h>
+#include <cbbg/store/results_writer.h>
+#include <cbbg/store/run_directory.h>
+#include <cbbg/store/sweep_directory.h>
+#include <cbbg/store/task_store.h>
 
 namespace {
 

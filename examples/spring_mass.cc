@@ -10,11 +10,11 @@
 #include <iostream>
 #include <string>
 
-#include "framework/block_context.h"
-#include "framework/diagram_builder.h"
-#include "framework/graphviz.h"
-#include "framework/primitives/zero_order_hold.h"
-#include "framework/simulator.h"
+#include <cbbg/framework/block_context.h>
+#include <cbbg/framework/diagram_builder.h>
+#include <cbbg/framework/graphviz.h>
+#include <cbbg/framework/primitives/zero_order_hold.h>
+#include <cbbg/framework/simulator.h>
 
 namespace {
 

@@ -1,13 +1,13 @@
-#include "experiments/evaluation_conditions.h"
+#include "cbbg/experiments/evaluation_conditions.h"
 
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "blocks/measured_signals.h"
-#include "config/parameters.h"
-#include "diagrams/validated_parameters.h"
-#include "framework/number_text.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::experiments {
 namespace {

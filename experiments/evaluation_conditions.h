@@ -18,7 +18,7 @@
 
 #include <string>
 
-#include "config/parameters.h"
+#include "cbbg/config/parameters.h"
 
 namespace cbbg::experiments {
 

@@ -1,11 +1,11 @@
-#include "experiments/experiments.h"
+#include "cbbg/experiments/experiments.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "config/parameters.h"
-#include "experiments/evaluation_conditions.h"
-#include "experiments/policy_evaluation.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/experiments/evaluation_conditions.h"
+#include "cbbg/experiments/policy_evaluation.h"
 
 namespace cbbg::experiments {
 namespace {

@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "config/parameters.h"
-#include "diagrams/presets.h"
-#include "experiments/parallel_runs.h"
-#include "experiments/seed_run.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/parallel_runs.h"
+#include "cbbg/experiments/seed_run.h"
 
 namespace cbbg::experiments {
 

@@ -1,9 +1,9 @@
-#include "experiments/learnt_weights.h"
+#include "cbbg/experiments/learnt_weights.h"
 
 #include <stdexcept>
 #include <string>
 
-#include "config/parameters.h"
+#include "cbbg/config/parameters.h"
 
 namespace cbbg::experiments {
 

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "blocks/normaliser.h"
-#include "config/parameters.h"
-#include "diagrams/closed_loop.h"
-#include "framework/context.h"
-#include "framework/types.h"
+#include "cbbg/blocks/normaliser.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/closed_loop.h"
+#include "cbbg/framework/context.h"
+#include "cbbg/framework/types.h"
 
 namespace cbbg::experiments {
 

@@ -1,4 +1,4 @@
-#include "experiments/paired_statistics.h"
+#include "cbbg/experiments/paired_statistics.h"
 
 #include <algorithm>
 #include <cmath>

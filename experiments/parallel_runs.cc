@@ -1,4 +1,4 @@
-#include "experiments/parallel_runs.h"
+#include "cbbg/experiments/parallel_runs.h"
 
 #include <atomic>
 #include <cerrno>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "config/parameters.h"
+#include "cbbg/config/parameters.h"
 
 namespace cbbg::experiments {
 namespace {

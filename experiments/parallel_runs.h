@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <functional>
 
-#include "config/parameters.h"
-#include "experiments/seed_run.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/experiments/seed_run.h"
 
 namespace cbbg::experiments {
 

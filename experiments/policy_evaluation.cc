@@ -1,11 +1,11 @@
-#include "experiments/policy_evaluation.h"
+#include "cbbg/experiments/policy_evaluation.h"
 
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 
-#include "config/parameters.h"
+#include "cbbg/config/parameters.h"
 
 namespace cbbg::experiments {
 

@@ -12,10 +12,10 @@
 #include <optional>
 #include <vector>
 
-#include "config/parameters.h"
-#include "diagrams/closed_loop.h"
-#include "experiments/learnt_weights.h"
-#include "experiments/trial_runner.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/closed_loop.h"
+#include "cbbg/experiments/learnt_weights.h"
+#include "cbbg/experiments/trial_runner.h"
 
 namespace cbbg::experiments {
 

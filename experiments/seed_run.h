@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "experiments/learnt_weights.h"
-#include "experiments/trial_runner.h"
+#include "cbbg/experiments/learnt_weights.h"
+#include "cbbg/experiments/trial_runner.h"
 
 namespace cbbg::experiments {
 

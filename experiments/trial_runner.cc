@@ -1,12 +1,12 @@
-#include "experiments/trial_runner.h"
+#include "cbbg/experiments/trial_runner.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
 
-#include "framework/number_text.h"
-#include "plant/plant_ports.h"
+#include "cbbg/framework/number_text.h"
+#include "cbbg/plant/plant_ports.h"
 
 namespace cbbg::experiments {
 
@@ -63,7 +63,9 @@ TrialRunner::TrialRunner(const diagrams::ClosedLoop& loop, std::uint64_t seed, d
       simulator_(*loop.diagram, SimulatorOptions{.accuracy = loop.accuracy}, seed),
       telemetry_(&simulator_.add_log(*loop.telemetry, period)),
       period_(period),
-      options_(std::move(telemetry)) {
+      options_(std::move(telemetry)),
+      checks_value_(loop.learner.critic != nullptr && loop.outputs("value")),
+      checks_temperature_(loop.learner.tropism != nullptr && loop.outputs("temperature")) {
   telemetry_->keep_in_memory(options_.keep_in_memory);
   telemetry_->set_sink([this](double time, const double* values) { record(time, values); });
 }
@@ -119,9 +121,8 @@ void TrialRunner::finish_oscillation(TrialOutcome& outcome) const {
 
 void TrialRunner::check_learning_signals(double time, const double* values) const {
   const diagrams::LearnerBlocks& learner = loop_->learner;
-  const bool value_ok = learner.critic == nullptr || std::isfinite(values[kTelemetryValue]);
-  const bool temperature_ok =
-      learner.tropism == nullptr || std::isfinite(values[kTelemetryTemperature]);
+  const bool value_ok = !checks_value_ || std::isfinite(values[kTelemetryValue]);
+  const bool temperature_ok = !checks_temperature_ || std::isfinite(values[kTelemetryTemperature]);
   if (value_ok && temperature_ok) return;
   const Block& block = value_ok ? static_cast<const Block&>(*learner.tropism) : *learner.critic;
   throw SimulationError("block '" + block.path() +

@@ -9,8 +9,8 @@
 #include <ostream>
 #include <string>
 
-#include "diagrams/closed_loop.h"
-#include "framework/simulator.h"
+#include "cbbg/diagrams/closed_loop.h"
+#include "cbbg/framework/simulator.h"
 
 namespace cbbg::experiments {
 
@@ -74,6 +74,10 @@ class TrialRunner {
   SignalLog* telemetry_;
   double period_;
   TelemetryOptions options_;
+  // Whether the controller outputs a learner's value and temperature to check (a user's
+  // controller may keep them inside).
+  bool checks_value_;
+  bool checks_temperature_;
   // The current trial's running sums and its row prefix.
   long long ticks_ = 0;
   double temperature_sum_ = 0.0;

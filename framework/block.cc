@@ -1,10 +1,10 @@
-#include "framework/block.h"
+#include "cbbg/framework/block.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "framework/diagram.h"
-#include "framework/names.h"
+#include "cbbg/framework/diagram.h"
+#include "cbbg/framework/names.h"
 
 namespace cbbg {
 
@@ -50,18 +50,31 @@ std::string list_names(const Ports& ports) {
 
 }  // namespace
 
-const InputPort& Block::input_port(std::string_view name) const {
+const InputPort* Block::find_input_port(std::string_view name) const {
   for (const auto& port : inputs_) {
-    if (port.name() == name) return port;
+    if (port.name() == name) return &port;
   }
+  return nullptr;
+}
+
+const OutputPort* Block::find_output_port(std::string_view name) const {
+  for (const auto& port : outputs_) {
+    if (port.name() == name) return &port;
+  }
+  return nullptr;
+}
+
+std::string Block::input_port_names() const { return list_names(inputs_); }
+std::string Block::output_port_names() const { return list_names(outputs_); }
+
+const InputPort& Block::input_port(std::string_view name) const {
+  if (const InputPort* port = find_input_port(name)) return *port;
   throw std::invalid_argument("block '" + path() + "' has no input port '" + std::string(name) +
                               "'; its input ports are: " + list_names(inputs_));
 }
 
 const OutputPort& Block::output_port(std::string_view name) const {
-  for (const auto& port : outputs_) {
-    if (port.name() == name) return port;
-  }
+  if (const OutputPort* port = find_output_port(name)) return *port;
   throw std::invalid_argument("block '" + path() + "' has no output port '" + std::string(name) +
                               "'; its output ports are: " + list_names(outputs_));
 }

@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "framework/port.h"
-#include "framework/types.h"
+#include "cbbg/framework/port.h"
+#include "cbbg/framework/types.h"
 
 namespace cbbg {
 
@@ -101,6 +101,12 @@ class Block {
   // By name; an unknown name throws, listing the ports the block has.
   const InputPort& input_port(std::string_view name) const;
   const OutputPort& output_port(std::string_view name) const;
+  // By name, or null for a port the block does not have (an optional port).
+  const InputPort* find_input_port(std::string_view name) const;
+  const OutputPort* find_output_port(std::string_view name) const;
+  // "a, b, c": the ports' names, for messages.
+  std::string input_port_names() const;
+  std::string output_port_names() const;
 
   // What a leaf block declared (empty for a Diagram).
   const OutputFunction& output_function(int output_index) const {

@@ -2,10 +2,10 @@
 // BlockContext: one leaf block's view of a Context, handed to its output, update, derivative
 // and advance functions. Everything is a view into the context's storage: no copies.
 
-#include "framework/context.h"
-#include "framework/layout.h"
-#include "framework/port.h"
-#include "framework/types.h"
+#include "cbbg/framework/context.h"
+#include "cbbg/framework/layout.h"
+#include "cbbg/framework/port.h"
+#include "cbbg/framework/types.h"
 
 namespace cbbg {
 

@@ -1,11 +1,11 @@
-#include "framework/context.h"
+#include "cbbg/framework/context.h"
 
 #include <stdexcept>
 #include <string_view>
 #include <unordered_map>
 
-#include "framework/diagram.h"
-#include "framework/layout.h"
+#include "cbbg/framework/diagram.h"
+#include "cbbg/framework/layout.h"
 
 namespace cbbg {
 

@@ -10,9 +10,9 @@
 #include <string_view>
 #include <vector>
 
-#include "framework/block.h"
-#include "framework/random.h"
-#include "framework/types.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/random.h"
+#include "cbbg/framework/types.h"
 
 namespace cbbg {
 

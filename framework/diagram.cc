@@ -1,10 +1,10 @@
-#include "framework/diagram.h"
+#include "cbbg/framework/diagram.h"
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "framework/block_context.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg {
 

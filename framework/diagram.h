@@ -10,9 +10,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "framework/block.h"
-#include "framework/context.h"
-#include "framework/layout.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/context.h"
+#include "cbbg/framework/layout.h"
 
 namespace cbbg {
 

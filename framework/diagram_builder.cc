@@ -1,4 +1,4 @@
-#include "framework/diagram_builder.h"
+#include "cbbg/framework/diagram_builder.h"
 
 #include <stdexcept>
 

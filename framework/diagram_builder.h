@@ -7,7 +7,7 @@
 #include <string_view>
 #include <utility>
 
-#include "framework/diagram.h"
+#include "cbbg/framework/diagram.h"
 
 namespace cbbg {
 

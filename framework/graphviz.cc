@@ -1,7 +1,7 @@
-#include "framework/graphviz.h"
+#include "cbbg/framework/graphviz.h"
 
-#include "framework/number_text.h"
-#include "framework/owned_files.h"
+#include "cbbg/framework/number_text.h"
+#include "cbbg/framework/owned_files.h"
 
 #include <fcntl.h>
 #include <spawn.h>

@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/diagram.h"
+#include "cbbg/framework/diagram.h"
 
 namespace cbbg {
 

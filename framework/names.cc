@@ -1,4 +1,4 @@
-#include "framework/names.h"
+#include "cbbg/framework/names.h"
 
 #include <stdexcept>
 

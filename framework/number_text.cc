@@ -1,4 +1,4 @@
-#include "framework/number_text.h"
+#include "cbbg/framework/number_text.h"
 
 #include <charconv>
 

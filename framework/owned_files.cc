@@ -1,4 +1,4 @@
-#include "framework/owned_files.h"
+#include "cbbg/framework/owned_files.h"
 
 #include <fstream>
 

@@ -32,7 +32,7 @@
 #include <string_view>
 #include <vector>
 
-#include "framework/number_text.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg {
 

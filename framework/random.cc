@@ -1,4 +1,4 @@
-#include "framework/random.h"
+#include "cbbg/framework/random.h"
 
 #include <cmath>
 #include <numbers>

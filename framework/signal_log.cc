@@ -1,6 +1,6 @@
-#include "framework/signal_log.h"
+#include "cbbg/framework/signal_log.h"
 
-#include "framework/number_text.h"
+#include "cbbg/framework/number_text.h"
 
 #include <array>
 #include <charconv>

@@ -10,8 +10,8 @@
 
 #include <Eigen/Core>
 
-#include "framework/port.h"
-#include "framework/types.h"
+#include "cbbg/framework/port.h"
+#include "cbbg/framework/types.h"
 
 namespace cbbg {
 

@@ -1,4 +1,4 @@
-#include "framework/simulator.h"
+#include "cbbg/framework/simulator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <boost/numeric/odeint.hpp>
 
-#include "framework/block_context.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg {
 namespace odeint = boost::numeric::odeint;

@@ -29,9 +29,9 @@
 #include <string>
 #include <vector>
 
-#include "framework/context.h"
-#include "framework/diagram.h"
-#include "framework/signal_log.h"
+#include "cbbg/framework/context.h"
+#include "cbbg/framework/diagram.h"
+#include "cbbg/framework/signal_log.h"
 
 namespace cbbg {
 

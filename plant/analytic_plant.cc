@@ -1,12 +1,12 @@
-#include "plant/analytic_plant.h"
+#include "cbbg/plant/analytic_plant.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "framework/block_context.h"
-#include "plant/plant_ports.h"
-#include "plant/plant_state.h"
-#include "plant/robot_dynamics.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/plant/plant_ports.h"
+#include "cbbg/plant/plant_state.h"
+#include "cbbg/plant/robot_dynamics.h"
 
 namespace cbbg::plant {
 namespace {

@@ -2,10 +2,10 @@
 
 #include <string>
 
-#include "framework/block.h"
-#include "framework/context.h"
-#include "plant/robot_params.h"
-#include "plant/robot_plant.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/context.h"
+#include "cbbg/plant/robot_params.h"
+#include "cbbg/plant/robot_plant.h"
 
 namespace cbbg::plant {
 

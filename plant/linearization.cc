@@ -1,8 +1,8 @@
-#include "plant/linearization.h"
+#include "cbbg/plant/linearization.h"
 
 #include <functional>
 
-#include "plant/robot_dynamics.h"
+#include "cbbg/plant/robot_dynamics.h"
 
 namespace cbbg::plant {
 namespace {

@@ -1,4 +1,4 @@
-#include "plant/multibody_robot.h"
+#include "cbbg/plant/multibody_robot.h"
 
 #include <cmath>
 #include <memory>
@@ -6,7 +6,7 @@
 
 #include <Simbody.h>
 
-#include "plant/simbody/robot_model.h"
+#include "cbbg/plant/simbody/robot_model.h"
 
 namespace cbbg::plant {
 

@@ -21,7 +21,7 @@
 
 #include <Eigen/Core>
 
-#include "plant/robot_params.h"
+#include "cbbg/plant/robot_params.h"
 
 namespace cbbg::plant {
 

@@ -1,14 +1,14 @@
-#include "plant/plant_state.h"
+#include "cbbg/plant/plant_state.h"
 
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 
-#include "framework/simulator.h"
-#include "plant/plant_ports.h"
+#include "cbbg/framework/simulator.h"
+#include "cbbg/plant/plant_ports.h"
 
-#include "framework/number_text.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::plant {
 namespace {

@@ -2,8 +2,8 @@
 // What both plants share about their state vector (layout in plant_ports.h): the trial's
 // initial state and the checks that keep a non-finite number from silently propagating.
 
-#include "framework/block.h"
-#include "framework/types.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/types.h"
 
 namespace cbbg::plant {
 

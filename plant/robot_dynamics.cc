@@ -1,4 +1,4 @@
-#include "plant/robot_dynamics.h"
+#include "cbbg/plant/robot_dynamics.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
-#include "plant/robot_params.h"
+#include "cbbg/plant/robot_params.h"
 
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 
-#include "framework/number_text.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::plant {
 

@@ -3,7 +3,7 @@
 // under `plant.` (docs/model.md §4), with the defaults of docs/model.md §1; body_roll_inertia and
 // wheel_diametral_inertia are two keys this project adds (see below).
 
-#include "framework/parameters.h"
+#include "cbbg/framework/parameters.h"
 
 namespace cbbg::plant {
 

@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "framework/block.h"
-#include "framework/context.h"
-#include "plant/plant_ports.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/context.h"
+#include "cbbg/plant/plant_ports.h"
 
 namespace cbbg::plant {
 

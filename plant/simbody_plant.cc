@@ -1,4 +1,4 @@
-#include "plant/simbody_plant.h"
+#include "cbbg/plant/simbody_plant.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,15 +6,15 @@
 #include <limits>
 #include <string>
 
-#include "framework/block_context.h"
-#include "framework/diagram.h"
-#include "framework/simulator.h"
-#include "plant/multibody_robot.h"
-#include "plant/plant_ports.h"
-#include "plant/plant_state.h"
-#include "plant/robot_dynamics.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/diagram.h"
+#include "cbbg/framework/simulator.h"
+#include "cbbg/plant/multibody_robot.h"
+#include "cbbg/plant/plant_ports.h"
+#include "cbbg/plant/plant_state.h"
+#include "cbbg/plant/robot_dynamics.h"
 
-#include "framework/number_text.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::plant {
 namespace {}  // namespace

@@ -1,10 +1,10 @@
-#include "replay/replay_page.h"
+#include "cbbg/replay/replay_page.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "config/parameters.h"
-#include "framework/number_text.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::replay {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "config/config.h"
-#include "replay/trial_log.h"
+#include "cbbg/config/config.h"
+#include "cbbg/replay/trial_log.h"
 
 namespace cbbg::replay {
 

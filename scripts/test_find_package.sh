@@ -11,9 +11,36 @@ build="$1"
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
 cmake --install "$build" --prefix "$scratch/prefix" >/dev/null
-cmake -S "$root/examples" -B "$scratch/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+# The examples as installed (share/doc/cbbg/examples), built as a user's own project.
+examples="$scratch/prefix/share/doc/cbbg/examples"
+test -s "$scratch/prefix/share/doc/cbbg/docs/parameters.md"
+cmake -S "$examples" -B "$scratch/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$scratch/prefix" >/dev/null
 cmake --build "$scratch/example" >/dev/null
+# The installed headers include each other as <cbbg/...> only: nothing of a user's own
+# folders (config/, plant/) can shadow them.
+if grep -rnE '#include "(framework|plant|blocks|config|diagrams|experiments|store|replay)/' \
+  "$scratch/prefix/include/cbbg"; then
+  echo "an installed header includes a project header without cbbg/" >&2
+  exit 1
+fi
+
+# The framework alone: its component needs Eigen, and none of Simbody, yaml-cpp or Boost.
+mkdir -p "$scratch/framework_only"
+cat >"$scratch/framework_only/CMakeLists.txt" <<CMAKE
+cmake_minimum_required(VERSION 3.25)
+project(framework_only LANGUAGES CXX)
+set(CMAKE_CXX_STANDARD 20)
+find_package(cbbg 0.1 REQUIRED COMPONENTS framework)
+add_executable(spring_mass "$examples/spring_mass.cc")
+target_link_libraries(spring_mass PRIVATE cbbg::framework)
+CMAKE
+cmake -S "$scratch/framework_only" -B "$scratch/framework_only/build" -G Ninja \
+  -DCMAKE_PREFIX_PATH="$scratch/prefix" -DCMAKE_DISABLE_FIND_PACKAGE_Simbody=ON \
+  -DCMAKE_DISABLE_FIND_PACKAGE_yaml-cpp=ON -DCMAKE_DISABLE_FIND_PACKAGE_Boost=ON >/dev/null
+cmake --build "$scratch/framework_only/build" >/dev/null
+"$scratch/framework_only/build/spring_mass" "$scratch/framework_out" >/dev/null
+test -s "$scratch/framework_out/position.csv"
 
 "$scratch/example/spring_mass" "$scratch/out"
 test -s "$scratch/out/position.csv"

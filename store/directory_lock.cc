@@ -1,4 +1,4 @@
-#include "store/directory_lock.h"
+#include "cbbg/store/directory_lock.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "config/config.h"
+#include "cbbg/config/config.h"
 
 namespace cbbg::store {
 namespace {

@@ -1,4 +1,4 @@
-#include "store/fault_point.h"
+#include "cbbg/store/fault_point.h"
 
 #include <unistd.h>
 

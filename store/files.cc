@@ -1,4 +1,4 @@
-#include "store/files.h"
+#include "cbbg/store/files.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "store/output_guard.h"
+#include "cbbg/store/output_guard.h"
 
 namespace cbbg::store {
 

@@ -1,4 +1,4 @@
-#include "store/output_guard.h"
+#include "cbbg/store/output_guard.h"
 
 #include <signal.h>
 #include <unistd.h>
@@ -8,8 +8,8 @@
 #include <cerrno>
 #include <fstream>
 
-#include "config/config.h"
-#include "store/files.h"
+#include "cbbg/config/config.h"
+#include "cbbg/store/files.h"
 
 namespace cbbg::store {
 namespace fs = std::filesystem;

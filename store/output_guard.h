@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "framework/owned_files.h"
+#include "cbbg/framework/owned_files.h"
 
 namespace cbbg::store {
 

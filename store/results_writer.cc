@@ -1,11 +1,11 @@
-#include "store/results_writer.h"
+#include "cbbg/store/results_writer.h"
 
-#include "config/parameters.h"
-#include "experiments/paired_statistics.h"
-#include "store/fault_point.h"
-#include "store/files.h"
-#include "store/task_store.h"
-#include "store/weights_file.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/experiments/paired_statistics.h"
+#include "cbbg/store/fault_point.h"
+#include "cbbg/store/files.h"
+#include "cbbg/store/task_store.h"
+#include "cbbg/store/weights_file.h"
 
 #include <algorithm>
 #include <charconv>

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "config/config.h"
-#include "experiments/seed_run.h"
+#include "cbbg/config/config.h"
+#include "cbbg/experiments/seed_run.h"
 
 namespace cbbg::store {
 

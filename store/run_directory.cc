@@ -1,4 +1,4 @@
-#include "store/run_directory.h"
+#include "cbbg/store/run_directory.h"
 
 #include <fcntl.h>
 #include <stdio.h>
@@ -11,11 +11,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "store/fault_point.h"
-#include "store/files.h"
-#include "store/output_guard.h"
-#include "store/sweep_directory.h"
-#include "store/task_store.h"
+#include "cbbg/store/fault_point.h"
+#include "cbbg/store/files.h"
+#include "cbbg/store/output_guard.h"
+#include "cbbg/store/sweep_directory.h"
+#include "cbbg/store/task_store.h"
 
 namespace cbbg::store {
 namespace fs = std::filesystem;

@@ -22,8 +22,8 @@
 #include <optional>
 #include <string>
 
-#include "config/config.h"
-#include "store/directory_lock.h"
+#include "cbbg/config/config.h"
+#include "cbbg/store/directory_lock.h"
 
 namespace cbbg::store {
 

@@ -1,4 +1,4 @@
-#include "store/sweep_directory.h"
+#include "cbbg/store/sweep_directory.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -9,12 +9,12 @@
 #include <cstring>
 #include <sstream>
 
-#include "config/config.h"
-#include "store/fault_point.h"
-#include "store/files.h"
-#include "store/output_guard.h"
-#include "store/run_directory.h"
-#include "store/task_store.h"
+#include "cbbg/config/config.h"
+#include "cbbg/store/fault_point.h"
+#include "cbbg/store/files.h"
+#include "cbbg/store/output_guard.h"
+#include "cbbg/store/run_directory.h"
+#include "cbbg/store/task_store.h"
 
 namespace cbbg::store {
 namespace fs = std::filesystem;

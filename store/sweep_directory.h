@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "store/directory_lock.h"
+#include "cbbg/store/directory_lock.h"
 
 namespace cbbg::store {
 

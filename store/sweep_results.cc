@@ -1,11 +1,11 @@
-#include "store/sweep_results.h"
+#include "cbbg/store/sweep_results.h"
 
 #include <algorithm>
 #include <functional>
 
-#include "framework/number_text.h"
-#include "store/results_writer.h"
-#include "store/sweep_directory.h"
+#include "cbbg/framework/number_text.h"
+#include "cbbg/store/results_writer.h"
+#include "cbbg/store/sweep_directory.h"
 
 namespace cbbg::store {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "config/sweep.h"
-#include "experiments/seed_run.h"
+#include "cbbg/config/sweep.h"
+#include "cbbg/experiments/seed_run.h"
 
 namespace cbbg::store {
 

@@ -1,11 +1,11 @@
-#include "store/task_store.h"
+#include "cbbg/store/task_store.h"
 
-#include "config/config.h"
-#include "framework/number_text.h"
-#include "store/fault_point.h"
-#include "store/files.h"
-#include "store/output_guard.h"
-#include "store/weights_file.h"
+#include "cbbg/config/config.h"
+#include "cbbg/framework/number_text.h"
+#include "cbbg/store/fault_point.h"
+#include "cbbg/store/files.h"
+#include "cbbg/store/output_guard.h"
+#include "cbbg/store/weights_file.h"
 
 #include <algorithm>
 #include <charconv>

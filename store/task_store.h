@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <string>
 
-#include "experiments/parallel_runs.h"
-#include "experiments/seed_run.h"
+#include "cbbg/experiments/parallel_runs.h"
+#include "cbbg/experiments/seed_run.h"
 
 namespace cbbg::store {
 

@@ -1,4 +1,4 @@
-#include "store/weights_file.h"
+#include "cbbg/store/weights_file.h"
 
 #include <charconv>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include <string_view>
 #include <system_error>
 
-#include "config/parameters.h"
-#include "store/files.h"
-#include "store/output_guard.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/store/files.h"
+#include "cbbg/store/output_guard.h"
 
 namespace cbbg::store {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "config/config.h"
-#include "experiments/learnt_weights.h"
+#include "cbbg/config/config.h"
+#include "cbbg/experiments/learnt_weights.h"
 
 namespace cbbg::store {
 

@@ -10,9 +10,9 @@
 #include <string>
 
 #include "bench/ratio_reporter.h"
-#include "config/config.h"
-#include "diagrams/presets.h"
-#include "experiments/trial_runner.h"
+#include "cbbg/config/config.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/trial_runner.h"
 #include "tests/diagrams/plain_loop.h"
 
 namespace cbbg::bench {

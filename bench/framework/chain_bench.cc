@@ -7,10 +7,10 @@
 #include <string>
 
 #include "bench/ratio_reporter.h"
-#include "framework/block_context.h"
-#include "framework/diagram_builder.h"
-#include "framework/primitives/zero_order_hold.h"
-#include "framework/simulator.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/zero_order_hold.h"
+#include "cbbg/framework/simulator.h"
 
 namespace cbbg::bench {
 namespace {

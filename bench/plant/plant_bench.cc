@@ -13,15 +13,15 @@
 #include <vector>
 
 #include "bench/ratio_reporter.h"
-#include "framework/block_context.h"
-#include "framework/diagram_builder.h"
-#include "framework/primitives/zero_order_hold.h"
-#include "framework/simulator.h"
-#include "plant/analytic_plant.h"
-#include "plant/multibody_robot.h"
-#include "plant/plant_ports.h"
-#include "plant/robot_dynamics.h"
-#include "plant/simbody_plant.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/zero_order_hold.h"
+#include "cbbg/framework/simulator.h"
+#include "cbbg/plant/analytic_plant.h"
+#include "cbbg/plant/multibody_robot.h"
+#include "cbbg/plant/plant_ports.h"
+#include "cbbg/plant/robot_dynamics.h"
+#include "cbbg/plant/simbody_plant.h"
 #include "tests/support/allocation_counter.h"
 
 namespace cbbg::plant::bench {

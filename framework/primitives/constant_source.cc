@@ -1,4 +1,4 @@
-#include "framework/primitives/constant_source.h"
+#include "cbbg/framework/primitives/constant_source.h"
 
 namespace cbbg {
 

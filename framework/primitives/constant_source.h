@@ -1,6 +1,6 @@
 #pragma once
 
-#include "framework/block.h"
+#include "cbbg/framework/block.h"
 
 namespace cbbg {
 

@@ -1,6 +1,6 @@
-#include "framework/primitives/gain.h"
+#include "cbbg/framework/primitives/gain.h"
 
-#include "framework/block_context.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg {
 

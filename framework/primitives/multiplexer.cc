@@ -1,8 +1,8 @@
-#include "framework/primitives/multiplexer.h"
+#include "cbbg/framework/primitives/multiplexer.h"
 
 #include <algorithm>
 
-#include "framework/block_context.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/block.h"
+#include "cbbg/framework/block.h"
 
 namespace cbbg {
 

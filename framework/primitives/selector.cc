@@ -1,9 +1,9 @@
-#include "framework/primitives/selector.h"
+#include "cbbg/framework/primitives/selector.h"
 
 #include <stdexcept>
 #include <string>
 
-#include "framework/block_context.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg {
 

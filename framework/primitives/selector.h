@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "framework/block.h"
+#include "cbbg/framework/block.h"
 
 namespace cbbg {
 

@@ -1,8 +1,8 @@
-#include "framework/primitives/zero_order_hold.h"
+#include "cbbg/framework/primitives/zero_order_hold.h"
 
 #include <algorithm>
 
-#include "framework/block_context.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg {
 

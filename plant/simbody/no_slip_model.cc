@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "plant/plant_ports.h"
-#include "plant/robot_dynamics.h"
-#include "plant/simbody/robot_model.h"
+#include "cbbg/plant/plant_ports.h"
+#include "cbbg/plant/robot_dynamics.h"
+#include "cbbg/plant/simbody/robot_model.h"
 
 namespace cbbg::plant::simbody {
 namespace {

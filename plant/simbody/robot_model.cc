@@ -1,4 +1,4 @@
-#include "plant/simbody/robot_model.h"
+#include "cbbg/plant/simbody/robot_model.h"
 
 namespace cbbg::plant::simbody {
 

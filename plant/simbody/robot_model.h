@@ -18,7 +18,7 @@
 #include <Simbody.h>
 #include <Eigen/Core>
 
-#include "plant/robot_params.h"
+#include "cbbg/plant/robot_params.h"
 
 namespace cbbg::plant::simbody {
 

@@ -1,8 +1,8 @@
-#include "plant/simbody/rolling_base_mobilizer.h"
+#include "cbbg/plant/simbody/rolling_base_mobilizer.h"
 
 #include <cmath>
 
-#include "plant/robot_dynamics.h"
+#include "cbbg/plant/robot_dynamics.h"
 
 namespace cbbg::plant::simbody {
 

@@ -13,7 +13,7 @@
 
 #include <Simbody.h>
 
-#include "plant/robot_params.h"
+#include "cbbg/plant/robot_params.h"
 
 namespace cbbg::plant::simbody {
 

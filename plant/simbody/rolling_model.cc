@@ -17,10 +17,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "plant/plant_ports.h"
-#include "plant/robot_dynamics.h"
-#include "plant/simbody/robot_model.h"
-#include "plant/simbody/rolling_base_mobilizer.h"
+#include "cbbg/plant/plant_ports.h"
+#include "cbbg/plant/robot_dynamics.h"
+#include "cbbg/plant/simbody/robot_model.h"
+#include "cbbg/plant/simbody/rolling_base_mobilizer.h"
 
 namespace cbbg::plant::simbody {
 namespace {

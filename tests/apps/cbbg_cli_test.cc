@@ -18,8 +18,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "config/config.h"
-#include "diagrams/presets.h"
+#include "cbbg/config/config.h"
+#include "cbbg/diagrams/presets.h"
 #include "tests/apps/cbbg_process.h"
 #include "tests/support/scratch_directory.h"
 

@@ -14,7 +14,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "store/fault_point.h"
+#include "cbbg/store/fault_point.h"
 #include "tests/apps/cbbg_process.h"
 #include "tests/support/scratch_directory.h"
 

@@ -8,7 +8,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "replay/replay_page.h"
+#include "cbbg/replay/replay_page.h"
 #include "tests/apps/cbbg_process.h"
 #include "tests/support/scratch_directory.h"
 

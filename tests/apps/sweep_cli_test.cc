@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/number_text.h"
+#include "cbbg/framework/number_text.h"
 #include "tests/apps/cbbg_process.h"
 #include "tests/support/scratch_directory.h"
 

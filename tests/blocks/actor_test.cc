@@ -1,4 +1,4 @@
-#include "blocks/actor.h"
+#include "cbbg/blocks/actor.h"
 
 #include <cmath>
 #include <random>
@@ -7,10 +7,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "blocks/mixer.h"
-#include "framework/diagram_builder.h"
-#include "framework/simulator.h"
-#include "tests/blocks/block_harness.h"
+#include "cbbg/blocks/mixer.h"
+#include "cbbg/framework/block_harness.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/simulator.h"
 
 namespace cbbg::blocks {
 namespace {

@@ -1,4 +1,4 @@
-#include "blocks/boltzmann_sampler.h"
+#include "cbbg/blocks/boltzmann_sampler.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -7,9 +7,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "framework/diagram_builder.h"
-#include "framework/simulator.h"
-#include "tests/blocks/block_harness.h"
+#include "cbbg/framework/block_harness.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/simulator.h"
 
 namespace cbbg::blocks {
 namespace {
@@ -105,7 +105,7 @@ TEST(BoltzmannSampler, DeviationIsSqrtOfKbTOverTwoTimesTheHeldDraw) {
   harness.set_input("actor_action", 2.0);
   harness.set_input("temperature", 10.0);
   harness.tick();
-  const double eps = harness.state()[0];
+  const double eps = harness.state_part("noise")[0];
   ASSERT_NE(eps, 0.0);
   EXPECT_EQ(harness.scalar_output("action"), 2.0 + std::sqrt(1.38e-23 * 10.0 / 2.0) * eps);
   EXPECT_LT(std::abs(harness.scalar_output("action") - 2.0), 1e-10);

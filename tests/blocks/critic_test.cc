@@ -1,4 +1,4 @@
-#include "blocks/critic.h"
+#include "cbbg/blocks/critic.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -6,11 +6,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "framework/block_context.h"
-#include "framework/diagram_builder.h"
-#include "framework/random.h"
-#include "framework/simulator.h"
-#include "tests/blocks/block_harness.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/block_harness.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/random.h"
+#include "cbbg/framework/simulator.h"
 
 namespace cbbg::blocks {
 namespace {

@@ -1,4 +1,4 @@
-#include "blocks/failure_detector.h"
+#include "cbbg/blocks/failure_detector.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -6,9 +6,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "blocks/measured_signals.h"
-#include "blocks/parameter_checks.h"
-#include "tests/blocks/block_harness.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_harness.h"
 
 namespace cbbg::blocks {
 namespace {

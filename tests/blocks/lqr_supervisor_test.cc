@@ -1,4 +1,4 @@
-#include "blocks/lqr_supervisor.h"
+#include "cbbg/blocks/lqr_supervisor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,18 +8,18 @@
 #include <gtest/gtest.h>
 #include <Eigen/Eigenvalues>
 
-#include "blocks/measured_signals.h"
-#include "blocks/riccati.h"
-#include "blocks/sensors.h"
-#include "framework/block_context.h"
-#include "framework/diagram_builder.h"
-#include "framework/primitives/zero_order_hold.h"
-#include "framework/signal_log.h"
-#include "framework/simulator.h"
-#include "plant/analytic_plant.h"
-#include "plant/linearization.h"
-#include "plant/plant_ports.h"
-#include "tests/blocks/block_harness.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/blocks/riccati.h"
+#include "cbbg/blocks/sensors.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/block_harness.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/zero_order_hold.h"
+#include "cbbg/framework/signal_log.h"
+#include "cbbg/framework/simulator.h"
+#include "cbbg/plant/analytic_plant.h"
+#include "cbbg/plant/linearization.h"
+#include "cbbg/plant/plant_ports.h"
 
 namespace cbbg::blocks {
 namespace {

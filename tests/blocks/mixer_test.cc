@@ -1,8 +1,8 @@
-#include "blocks/mixer.h"
+#include "cbbg/blocks/mixer.h"
 
 #include <gtest/gtest.h>
 
-#include "tests/blocks/block_harness.h"
+#include "cbbg/framework/block_harness.h"
 
 namespace cbbg::blocks {
 namespace {

@@ -1,4 +1,4 @@
-#include "blocks/omega_schedule.h"
+#include "cbbg/blocks/omega_schedule.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -6,7 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "tests/blocks/block_harness.h"
+#include "cbbg/framework/block_harness.h"
 
 namespace cbbg::blocks {
 namespace {
@@ -60,14 +60,33 @@ TEST(OmegaSchedule, FixedModesHoldTheirValue) {
   }
 }
 
+TEST(OmegaSchedule, ModeConstantHoldsItsConstantForever) {
+  OmegaParams params;
+  params.mode = OmegaMode::kConstant;
+  params.constant = 0.5;
+  Harness half("omega", params, kPeriod);
+  for (int t = 0; t < 1000; ++t) {
+    ASSERT_EQ(half.scalar_output("omega"), 0.5);
+    half.tick();
+  }
+}
+
 TEST(OmegaSchedule, ParsesItsModeAndRejectsInvalidParameters) {
   EXPECT_EQ(parse_omega_mode("schedule"), OmegaMode::kSchedule);
   EXPECT_EQ(parse_omega_mode("zero"), OmegaMode::kZero);
   EXPECT_EQ(parse_omega_mode("one"), OmegaMode::kOne);
+  EXPECT_EQ(parse_omega_mode("constant"), OmegaMode::kConstant);
   EXPECT_EQ(to_string(OmegaMode::kOne), "one");
+  EXPECT_EQ(to_string(OmegaMode::kConstant), "constant");
   EXPECT_THAT([] { parse_omega_mode("half"); },
               ThrowsMessage<std::invalid_argument>(
-                  StrEq("omega.mode must be schedule, zero or one; got 'half'")));
+                  StrEq("omega.mode must be schedule, zero, one or constant; got 'half'")));
+  OmegaParams too_much;
+  too_much.mode = OmegaMode::kConstant;
+  too_much.constant = 1.5;
+  EXPECT_THAT(
+      [&] { OmegaSchedule("omega", too_much, kPeriod); },
+      ThrowsMessage<std::invalid_argument>(StrEq("omega constant must be in [0, 1]; got 1.5")));
   OmegaParams zero_n3;
   zero_n3.n3 = 0.0;
   EXPECT_THAT(

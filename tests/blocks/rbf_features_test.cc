@@ -1,4 +1,4 @@
-#include "blocks/rbf_features.h"
+#include "cbbg/blocks/rbf_features.h"
 
 #include <cmath>
 #include <random>
@@ -7,9 +7,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "blocks/critic.h"
-#include "framework/diagram_builder.h"
-#include "tests/blocks/block_harness.h"
+#include "cbbg/blocks/critic.h"
+#include "cbbg/framework/block_harness.h"
+#include "cbbg/framework/diagram_builder.h"
 
 namespace cbbg::blocks {
 namespace {

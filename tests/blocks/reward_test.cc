@@ -1,4 +1,4 @@
-#include "blocks/reward.h"
+#include "cbbg/blocks/reward.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -6,8 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "blocks/measured_signals.h"
-#include "tests/blocks/block_harness.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/framework/block_harness.h"
 
 namespace cbbg::blocks {
 namespace {

@@ -1,4 +1,4 @@
-#include "blocks/sensors.h"
+#include "cbbg/blocks/sensors.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -6,8 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "plant/plant_ports.h"
-#include "tests/blocks/block_harness.h"
+#include "cbbg/framework/block_harness.h"
+#include "cbbg/plant/plant_ports.h"
 
 namespace cbbg::blocks {
 namespace {
@@ -86,11 +86,11 @@ TEST(Sensors, ANewTrialDrawsFreshNoise) {
   Harness harness("sensors", params, kPeriod);
   harness.set_input("plant_state", plant_state());
   harness.tick();
-  const Vector before = harness.state();
+  const Vector before = harness.state_part("noise");
   harness.context().reset_trial_state();
-  EXPECT_EQ(harness.state(), Vector::Zero(kMeasuredSize));  // the noise is per trial
+  EXPECT_EQ(harness.state_part("noise"), Vector::Zero(kMeasuredSize));  // the noise is per trial
   harness.restart_time();  // the trial's initialisation draws the first tick's noise
-  const Vector after = harness.state();
+  const Vector after = harness.state_part("noise");
   for (int i = 0; i < kMeasuredSize; ++i) {
     EXPECT_NE(after[i], before[i]) << "signal " << i;
     EXPECT_NE(after[i], 0.0) << "signal " << i;

@@ -10,21 +10,21 @@
 
 #include <gtest/gtest.h>
 
-#include "blocks/actor.h"
-#include "blocks/boltzmann_sampler.h"
-#include "blocks/critic.h"
-#include "blocks/entropy.h"
-#include "blocks/failure_detector.h"
-#include "blocks/lqr_supervisor.h"
-#include "blocks/mixer.h"
-#include "blocks/normaliser.h"
-#include "blocks/omega_schedule.h"
-#include "blocks/pd_supervisor.h"
-#include "blocks/rbf_features.h"
-#include "blocks/reward.h"
-#include "blocks/sensors.h"
-#include "blocks/torque_push.h"
-#include "blocks/tropism.h"
+#include "cbbg/blocks/actor.h"
+#include "cbbg/blocks/boltzmann_sampler.h"
+#include "cbbg/blocks/critic.h"
+#include "cbbg/blocks/entropy.h"
+#include "cbbg/blocks/failure_detector.h"
+#include "cbbg/blocks/lqr_supervisor.h"
+#include "cbbg/blocks/mixer.h"
+#include "cbbg/blocks/normaliser.h"
+#include "cbbg/blocks/omega_schedule.h"
+#include "cbbg/blocks/pd_supervisor.h"
+#include "cbbg/blocks/rbf_features.h"
+#include "cbbg/blocks/reward.h"
+#include "cbbg/blocks/sensors.h"
+#include "cbbg/blocks/torque_push.h"
+#include "cbbg/blocks/tropism.h"
 
 namespace cbbg::blocks {
 namespace {

@@ -1,13 +1,13 @@
-#include "blocks/torque_push.h"
+#include "cbbg/blocks/torque_push.h"
 
 #include <limits>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "framework/diagram_builder.h"
-#include "framework/primitives/constant_source.h"
-#include "framework/simulator.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/constant_source.h"
+#include "cbbg/framework/simulator.h"
 
 namespace cbbg::blocks {
 namespace {

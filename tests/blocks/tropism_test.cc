@@ -1,4 +1,4 @@
-#include "blocks/tropism.h"
+#include "cbbg/blocks/tropism.h"
 
 #include <cmath>
 #include <numbers>
@@ -7,7 +7,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "tests/blocks/block_harness.h"
+#include "cbbg/framework/block_harness.h"
 
 namespace cbbg::blocks {
 namespace {

@@ -1,4 +1,4 @@
-#include "config/config.h"
+#include "cbbg/config/config.h"
 
 #include <filesystem>
 #include <fstream>

@@ -2,7 +2,7 @@
 // and message come from its params struct; a user's own section is set, swept, checked and
 // recorded like a built-in one; the typed tree reads back what was set.
 
-#include "config/declared_keys.h"
+#include "cbbg/config/declared_keys.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,9 +15,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "config/parameters.h"
-#include "config/sweep.h"
-#include "framework/number_text.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/config/sweep.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::config {
 namespace {

@@ -1,7 +1,7 @@
 // config::Sweep: axes from --grid and from a config file's sweep: section, the grid's order,
 // each point's config, and its errors, each naming where the axis came from.
 
-#include "config/sweep.h"
+#include "cbbg/config/sweep.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

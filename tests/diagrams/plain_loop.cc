@@ -11,10 +11,10 @@
 #include <Eigen/Core>
 #include <boost/numeric/odeint.hpp>
 
-#include "diagrams/validated_parameters.h"
-#include "framework/random.h"
-#include "plant/robot_dynamics.h"
-#include "plant/robot_params.h"
+#include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/framework/random.h"
+#include "cbbg/plant/robot_dynamics.h"
+#include "cbbg/plant/robot_params.h"
 
 namespace cbbg::tests {
 namespace {

@@ -22,7 +22,7 @@
 
 #include <Eigen/Core>
 
-#include "config/config.h"
+#include "cbbg/config/config.h"
 
 namespace cbbg::tests {
 

@@ -16,9 +16,9 @@
 #include <utility>
 #include <vector>
 
-#include "config/config.h"
-#include "diagrams/presets.h"
-#include "experiments/trial_runner.h"
+#include "cbbg/config/config.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/trial_runner.h"
 #include "tests/diagrams/plain_loop.h"
 
 namespace cbbg::tests {

@@ -7,8 +7,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "diagrams/presets.h"
-#include "framework/diagram.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/framework/diagram.h"
 
 namespace cbbg::diagrams {
 namespace {
@@ -104,12 +104,17 @@ TEST(Presets, TheLearntActorOfAnArmKeepsItsSlots) {
   options.slots.features = [](const std::string&, const config::Parameters&) {
     return std::unique_ptr<Block>();
   };
+  options.slots.omega = [](const std::string&, const config::Parameters&) {
+    return std::unique_ptr<Block>();
+  };
   const ControllerOptions alone = learnt_actor(options);
   EXPECT_FALSE(alone.supervisor);
-  EXPECT_FALSE(alone.learning);
+  EXPECT_FALSE(alone.critic_learns);
+  EXPECT_FALSE(alone.actor_learns);
   EXPECT_FALSE(alone.exploration);
   EXPECT_EQ(alone.omega, blocks::OmegaMode::kOne);
   EXPECT_TRUE(static_cast<bool>(alone.slots.features));
+  EXPECT_FALSE(static_cast<bool>(alone.slots.omega));  // the actor alone: omega is 1
   EXPECT_TRUE(static_cast<bool>(make_arm("mine", options).policy));
   EXPECT_FALSE(static_cast<bool>(preset_arm("pd_only").policy));
 }

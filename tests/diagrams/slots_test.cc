@@ -7,10 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "blocks/measured_signals.h"
-#include "diagrams/presets.h"
-#include "experiments/experiments.h"
-#include "framework/block_context.h"
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/experiments.h"
+#include "cbbg/framework/block_context.h"
+#include "tests/diagrams/pitch_supervisor.h"
 
 namespace cbbg::diagrams {
 namespace {
@@ -23,20 +24,7 @@ config::Config quick_config() {
   return config;
 }
 
-// A supervisor of the user's: a PD law on the pitch alone, a_S = 40 theta_b + 8 theta_b'.
-class PitchSupervisor final : public Block {
- public:
-  explicit PitchSupervisor(std::string name) : Block(std::move(name)) {
-    const InputPort& measured = declare_input_port("measured", blocks::kMeasuredSize);
-    declare_output_port("action", 1,
-                        [&measured](const BlockContext& context, VectorRef action) {
-                          const auto y = context.input(measured);
-                          action[0] = 40.0 * y[blocks::kMeasuredThetaB] +
-                                      8.0 * y[blocks::kMeasuredThetaBDot];
-                        },
-                        {&measured});
-  }
-};
+using testing::PitchSupervisor;
 
 // Features of the user's: a bias and the two state coordinates, phi = (1, x_0, x_1).
 class LinearFeatures final : public Block {

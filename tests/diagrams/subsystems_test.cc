@@ -8,16 +8,16 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "blocks/pd_supervisor.h"
-#include "blocks/rbf_features.h"
-#include "diagrams/basal_ganglia.h"
-#include "diagrams/cerebellum.h"
-#include "diagrams/closed_loop.h"
-#include "diagrams/presets.h"
-#include "diagrams/validated_parameters.h"
-#include "experiments/trial_runner.h"
-#include "framework/graphviz.h"
-#include "framework/primitives/gain.h"
+#include "cbbg/blocks/pd_supervisor.h"
+#include "cbbg/blocks/rbf_features.h"
+#include "cbbg/diagrams/basal_ganglia.h"
+#include "cbbg/diagrams/cerebellum.h"
+#include "cbbg/diagrams/closed_loop.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/trial_runner.h"
+#include "cbbg/framework/graphviz.h"
+#include "cbbg/framework/primitives/gain.h"
 
 namespace cbbg::diagrams {
 namespace {

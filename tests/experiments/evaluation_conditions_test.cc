@@ -1,4 +1,4 @@
-#include "experiments/evaluation_conditions.h"
+#include "cbbg/experiments/evaluation_conditions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "diagrams/presets.h"
-#include "experiments/experiments.h"
-#include "experiments/policy_evaluation.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/experiments.h"
+#include "cbbg/experiments/policy_evaluation.h"
 
 namespace cbbg::experiments {
 namespace {

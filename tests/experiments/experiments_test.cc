@@ -1,4 +1,4 @@
-#include "experiments/experiments.h"
+#include "cbbg/experiments/experiments.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,11 +6,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "diagrams/presets.h"
-#include "diagrams/telemetry.h"
-#include "plant/plant_ports.h"
-#include "store/results_writer.h"
-#include "store/task_store.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/diagrams/telemetry.h"
+#include "cbbg/plant/plant_ports.h"
+#include "cbbg/store/results_writer.h"
+#include "cbbg/store/task_store.h"
 
 namespace cbbg::experiments {
 namespace {

@@ -1,6 +1,6 @@
 // Paired statistics against values worked by hand.
 
-#include "experiments/paired_statistics.h"
+#include "cbbg/experiments/paired_statistics.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "experiments/policy_evaluation.h"
+#include "cbbg/experiments/policy_evaluation.h"
 #include "tests/support/scratch_directory.h"
 
 #include <algorithm>
@@ -15,14 +15,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "apps/eval_command.h"
-#include "blocks/torque_push.h"
-#include "diagrams/presets.h"
-#include "experiments/trial_runner.h"
-#include "framework/diagram_builder.h"
-#include "framework/primitives/constant_source.h"
-#include "framework/simulator.h"
-#include "store/weights_file.h"
+#include "cbbg/apps/eval_command.h"
+#include "cbbg/blocks/torque_push.h"
+#include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/trial_runner.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/constant_source.h"
+#include "cbbg/framework/simulator.h"
+#include "cbbg/store/weights_file.h"
 
 namespace cbbg::experiments {
 namespace {

@@ -4,8 +4,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "framework/block_context.h"
-#include "framework/diagram_builder.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/block_harness.h"
+#include "cbbg/framework/diagram_builder.h"
 #include "tests/support/error_of.h"
 
 namespace cbbg {
@@ -88,6 +89,18 @@ TEST(StateParts, ContinueFromCarriesPersistentPartsAndStreamsOfMatchingBlocks) {
   unrelated->continue_from(*from);
   EXPECT_EQ(unrelated->discrete_state(learner_of(*other_layout)),
             learner_of(*other_layout).initial_discrete_state());
+}
+
+// The installed harness of a block's unit tests: one block alone, its state read by part.
+TEST(BlockHarness, RunsOneBlockAloneAndReadsItsStateByPart) {
+  testing::BlockHarness<Learner> harness("learner", 3);
+  EXPECT_EQ(harness.state_part("weights"), Vector::Constant(3, 1.0));
+  harness.tick();  // the event instant at t = 0: one update
+  EXPECT_EQ(harness.state_part("weights"), Vector::Constant(3, 2.0));
+  EXPECT_EQ(harness.state_part("trace"), Vector::Zero(1));
+  EXPECT_THAT([&] { harness.state_part("bias"); },
+              ::testing::ThrowsMessage<std::invalid_argument>(
+                  "block 'harness/learner' has no state part 'bias'; it has: weights, trace"));
 }
 
 }  // namespace

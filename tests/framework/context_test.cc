@@ -1,11 +1,11 @@
-#include "framework/context.h"
+#include "cbbg/framework/context.h"
 
 #include <gtest/gtest.h>
 
-#include "framework/block_context.h"
-#include "framework/diagram_builder.h"
-#include "framework/primitives/constant_source.h"
-#include "framework/simulator.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/constant_source.h"
+#include "cbbg/framework/simulator.h"
 #include "tests/framework/test_blocks.h"
 
 namespace cbbg {

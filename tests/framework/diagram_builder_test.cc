@@ -1,11 +1,11 @@
-#include "framework/diagram_builder.h"
+#include "cbbg/framework/diagram_builder.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "framework/primitives/constant_source.h"
-#include "framework/primitives/gain.h"
-#include "framework/primitives/zero_order_hold.h"
+#include "cbbg/framework/primitives/constant_source.h"
+#include "cbbg/framework/primitives/gain.h"
+#include "cbbg/framework/primitives/zero_order_hold.h"
 #include "tests/framework/test_blocks.h"
 #include "tests/support/error_of.h"
 

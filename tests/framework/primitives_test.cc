@@ -1,13 +1,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "framework/diagram_builder.h"
-#include "framework/primitives/constant_source.h"
-#include "framework/primitives/gain.h"
-#include "framework/primitives/multiplexer.h"
-#include "framework/primitives/selector.h"
-#include "framework/primitives/zero_order_hold.h"
-#include "framework/simulator.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/constant_source.h"
+#include "cbbg/framework/primitives/gain.h"
+#include "cbbg/framework/primitives/multiplexer.h"
+#include "cbbg/framework/primitives/selector.h"
+#include "cbbg/framework/primitives/zero_order_hold.h"
+#include "cbbg/framework/simulator.h"
 #include "tests/framework/test_blocks.h"
 
 namespace cbbg {

@@ -1,4 +1,4 @@
-#include "framework/signal_log.h"
+#include "cbbg/framework/signal_log.h"
 
 #include <filesystem>
 #include <fstream>
@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "framework/block_context.h"
-#include "framework/diagram_builder.h"
-#include "framework/primitives/constant_source.h"
-#include "framework/simulator.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/constant_source.h"
+#include "cbbg/framework/simulator.h"
 #include "tests/framework/test_blocks.h"
 #include "tests/support/scratch_directory.h"
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <utility>
 
-#include "framework/block.h"
-#include "framework/block_context.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/block_context.h"
 
 namespace cbbg::testing {
 

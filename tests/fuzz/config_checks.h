@@ -2,7 +2,7 @@
 // What must hold after every fuzz input, whatever Config made of it. A failed check prints
 // why and aborts, which libFuzzer reports as a crash and saves the input.
 
-#include "config/config.h"
+#include "cbbg/config/config.h"
 
 namespace cbbg::fuzz {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "config/config.h"
+#include "cbbg/config/config.h"
 #include "tests/fuzz/config_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,4 +1,4 @@
-#include "plant/linearization.h"
+#include "cbbg/plant/linearization.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -9,7 +9,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "framework/primitives/constant_source.h"
+#include "cbbg/framework/primitives/constant_source.h"
 #include "tests/plant/plant_rigs.h"
 
 namespace cbbg::plant::testing {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "plant/robot_dynamics.h"
+#include "cbbg/plant/robot_dynamics.h"
 #include "tests/plant/plant_rigs.h"
 
 namespace cbbg::plant::testing {

@@ -8,16 +8,16 @@
 #include <string>
 #include <utility>
 
-#include "framework/block.h"
-#include "framework/block_context.h"
-#include "framework/diagram_builder.h"
-#include "framework/primitives/zero_order_hold.h"
-#include "framework/random.h"
-#include "framework/simulator.h"
-#include "plant/analytic_plant.h"
-#include "plant/plant_ports.h"
-#include "plant/robot_params.h"
-#include "plant/simbody_plant.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/zero_order_hold.h"
+#include "cbbg/framework/random.h"
+#include "cbbg/framework/simulator.h"
+#include "cbbg/plant/analytic_plant.h"
+#include "cbbg/plant/plant_ports.h"
+#include "cbbg/plant/robot_params.h"
+#include "cbbg/plant/simbody_plant.h"
 
 namespace cbbg::plant::testing {
 

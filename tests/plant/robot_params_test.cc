@@ -1,4 +1,4 @@
-#include "plant/robot_params.h"
+#include "cbbg/plant/robot_params.h"
 
 #include <cmath>
 #include <limits>

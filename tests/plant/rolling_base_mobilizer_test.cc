@@ -4,13 +4,13 @@
 // routines invert the transform and H. (The dynamics are tested against the analytic plant
 // in plant_agreement_test.cc.)
 
-#include "plant/simbody/rolling_base_mobilizer.h"
+#include "cbbg/plant/simbody/rolling_base_mobilizer.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "plant/robot_dynamics.h"
+#include "cbbg/plant/robot_dynamics.h"
 
 namespace cbbg::plant::simbody {
 namespace {

@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "plant/multibody_robot.h"
-#include "plant/plant_ports.h"
+#include "cbbg/plant/multibody_robot.h"
+#include "cbbg/plant/plant_ports.h"
 #include "tests/support/allocation_counter.h"
 
 namespace cbbg::plant {

@@ -1,4 +1,4 @@
-#include "replay/replay_page.h"
+#include "cbbg/replay/replay_page.h"
 
 #include <algorithm>
 #include <string>

@@ -1,4 +1,4 @@
-#include "replay/trial_log.h"
+#include "cbbg/replay/trial_log.h"
 
 #include <cmath>
 #include <fstream>

@@ -2,7 +2,7 @@
 // and non-regular files refused with their path, manifests that survive a reread; and the
 // task folder's own files told from a user's (store/task_store.h).
 
-#include "store/output_guard.h"
+#include "cbbg/store/output_guard.h"
 
 #include <sys/socket.h>
 #include <sys/stat.h>
@@ -15,9 +15,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "config/config.h"
-#include "store/files.h"
-#include "store/task_store.h"
+#include "cbbg/config/config.h"
+#include "cbbg/store/files.h"
+#include "cbbg/store/task_store.h"
 #include "tests/support/scratch_directory.h"
 
 namespace cbbg::store {

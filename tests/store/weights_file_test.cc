@@ -1,4 +1,4 @@
-#include "store/weights_file.h"
+#include "cbbg/store/weights_file.h"
 #include "tests/support/scratch_directory.h"
 
 #include <bit>
@@ -15,7 +15,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "diagrams/presets.h"
+#include "cbbg/diagrams/presets.h"
 
 namespace cbbg::store {
 namespace {

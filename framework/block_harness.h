@@ -1,7 +1,15 @@
 #pragma once
-// Runs one block alone in a diagram of its own, as the simulator runs it in a controller:
-// its inputs become the diagram's inputs (set them with set_input), and tick() fires one
-// event instant (outputs from the current state, then the updates, committed together).
+// Unit-tests one block alone: the harness puts it in a diagram of its own, as the simulator
+// runs it in a controller. Its inputs become the diagram's inputs (set them with
+// set_input), its outputs are evaluated on demand, tick() fires one event instant (outputs
+// from the current state, then the updates, committed together), and its discrete state is
+// read whole or by part name.
+//
+//   cbbg::testing::BlockHarness<MyBlock> harness("mine", my_params);
+//   harness.set_input("measured", Vector::Zero(6));
+//   EXPECT_EQ(harness.scalar_output("action"), 0.0);
+//   harness.tick();
+//   EXPECT_EQ(harness.state_part("weights")[0], 0.5);
 
 #include <cstdint>
 #include <memory>
@@ -9,10 +17,10 @@
 #include <string_view>
 #include <utility>
 
-#include "framework/diagram_builder.h"
-#include "framework/simulator.h"
+#include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/simulator.h"
 
-namespace cbbg::blocks::testing {
+namespace cbbg::testing {
 
 template <typename B>
 class BlockHarness {
@@ -59,6 +67,12 @@ class BlockHarness {
     return context.discrete_state(*block_);
   }
 
+  // A copy of the block's discrete state part `name` ("weights"); an unknown name throws,
+  // naming the parts the block has.
+  Vector state_part(std::string_view name) const {
+    return block_->discrete_state_part(name).of(state());
+  }
+
   // Fires the next event instant (the first one initialises the simulation first).
   SimulationStatus tick() {
     const double end = (static_cast<double>(ticks_) + 0.5) * kPeriod;
@@ -82,4 +96,4 @@ class BlockHarness {
   long long ticks_ = 0;
 };
 
-}  // namespace cbbg::blocks::testing
+}  // namespace cbbg::testing
