@@ -150,6 +150,7 @@ int eval_command(const EvalOptions& options) {
   experiments::LearntWeights weights;
   experiments::EvaluationSettings settings;
   diagrams::ClosedLoopOptions loop;
+  diagrams::ClosedLoopFactory policy;
   try {
     if (options.weights_file.empty()) throw config::ConfigError("--load-weights FILE is required");
     if (options.repeats < 1 || options.repeats > kMaxRepeats) {
@@ -163,7 +164,9 @@ int eval_command(const EvalOptions& options) {
     loop.push = push_from(options);
     parameters = resolve(options);
     weights = store::load_weights(options.weights_file);
-    store::check_layout(weights, parameters, options.weights_file);
+    policy = diagrams::closed_loop_factory(diagrams::kLearntActor,
+                                           diagrams::preset(diagrams::kLearntActor).options, loop);
+    store::check_layout(weights, policy(parameters).layout, options.weights_file);
     settings.angles = parameters.evaluation.angles;
     settings.repeats = options.repeats;
   } catch (const config::ConfigError& error) {
@@ -172,11 +175,8 @@ int eval_command(const EvalOptions& options) {
     return report_error(kMachineError, describe(error));
   }
   try {
-    const experiments::PolicyEvaluation evaluation = experiments::evaluate_policy(
-        parameters,
-        diagrams::closed_loop_factory(diagrams::kLearntActor,
-                                      diagrams::preset(diagrams::kLearntActor).options, loop),
-        weights, settings);
+    const experiments::PolicyEvaluation evaluation =
+        experiments::evaluate_policy(parameters, policy, weights, settings);
     if (!options.out.empty()) {
       std::filesystem::create_directories(options.out);
       store::Manifest manifest(options.out);

@@ -124,6 +124,17 @@ long long learning_runs(const config::RunParams& run) {
   return learning * run.seeds;
 }
 
+// Learning starts from the file's weights in every arm that learns: each must have the
+// layout they were made for.
+void check_initial_weights(const experiments::LearntWeights& weights,
+                           const config::Parameters& parameters,
+                           const std::filesystem::path& file) {
+  for (const std::string& name : experiments::experiment_arms(parameters.run)) {
+    const diagrams::ClosedLoop loop = diagrams::preset_arm(name).learner(parameters);
+    if (loop.learner.learns()) store::check_layout(weights, loop.layout, file);
+  }
+}
+
 // What a run needs before it starts: everything checked, the work directory made.
 struct PreparedRun {
   config::Config config;  // what the results directory records
@@ -167,7 +178,7 @@ PreparedRun prepare(const RunOptions& options) {
   }
   if (!options.load_weights.empty()) {
     run.initial_weights = store::load_weights(options.load_weights);
-    store::check_layout(*run.initial_weights, run.parameters, options.load_weights);
+    check_initial_weights(*run.initial_weights, run.parameters, options.load_weights);
   }
   if (!run.directory) {
     run.directory = store::RunDirectory::create(

@@ -3,6 +3,7 @@
 #include <string>
 #include <string_view>
 
+#include "cbbg/blocks/weight_learner.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/parameters.h"
@@ -67,14 +68,16 @@ struct ActorParams {
 ///
 /// Discrete state: weights theta (n, persistent); per trial: previous_features phi(s_{t-1})
 /// (n), previous_actions (a_S, a_E, a_A, omega at t-1), has_previous (1).
-class Actor final : public Block {
+class Actor final : public Block, public WeightLearner {
  public:
   Actor(std::string name, int num_features, const ActorParams& params, double period);
 
-  int num_features() const { return num_features_; }
+  Role learner_role() const override { return Role::kActor; }
+  const Block& learner_block() const override { return *this; }
+  int num_features() const override { return num_features_; }
   // The learnt weights theta in `context`.
-  ConstVectorView weights(const Context& context) const;
-  VectorView mutable_weights(Context& context) const;
+  ConstVectorView weights(const Context& context) const override;
+  VectorView mutable_weights(Context& context) const override;
 
  private:
   int num_features_;

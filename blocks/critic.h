@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "cbbg/blocks/weight_learner.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/block_context.h"
 #include "cbbg/framework/context.h"
@@ -52,14 +53,16 @@ struct CriticParams {
 ///
 /// Discrete state: weights w (n, persistent); per trial: trace z (n), previous_features
 /// phi(s_{t-1}) (n), has_previous (1).
-class Critic final : public Block {
+class Critic final : public Block, public WeightLearner {
  public:
   Critic(std::string name, int num_features, const CriticParams& params, double period);
 
-  int num_features() const { return num_features_; }
+  Role learner_role() const override { return Role::kCritic; }
+  const Block& learner_block() const override { return *this; }
+  int num_features() const override { return num_features_; }
   // The learnt weights w in `context`.
-  ConstVectorView weights(const Context& context) const;
-  VectorView mutable_weights(Context& context) const;
+  ConstVectorView weights(const Context& context) const override;
+  VectorView mutable_weights(Context& context) const override;
 
  private:
   // delta_{t-1} from the context at tick t (0 without a previous tick).

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "cbbg/blocks/feature_layout.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/parameters.h"
 
@@ -34,9 +35,12 @@ struct NormaliserParams {
 /// Equations: x = clamp((theta_b / n_theta, theta_b' / n_dtheta), -S, S). Without the clamp
 /// the pitch rate leaves the grid and every feature vanishes. Parameters: n_theta =
 /// normaliser.scale_theta, n_dtheta = normaliser.scale_dtheta, S = normaliser.saturation.
-class Normaliser final : public Block {
+/// Its layout (feature_layout.h): those three, as normaliser.*.
+class Normaliser final : public Block, public DescribesLayout {
  public:
   Normaliser(std::string name, const NormaliserParams& params);
+
+  FeatureLayout layout() const override;
 
  private:
   NormaliserParams params_;

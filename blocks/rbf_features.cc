@@ -49,4 +49,13 @@ int RbfFeatures::num_features() const {
   return m * m;
 }
 
+FeatureLayout RbfFeatures::layout() const {
+  return {{"rbf.centres", params_.centres}, {"rbf.width", {params_.width}}};
+}
+
+std::string RbfFeatures::layout_note() const {
+  return "Weight k belongs to the unit at (rbf.centres[k / m], rbf.centres[k % m]), m = " +
+         std::to_string(params_.centres.size()) + ".";
+}
+
 }  // namespace cbbg::blocks

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "cbbg/blocks/feature_layout.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/parameters.h"
 
@@ -37,13 +38,17 @@ struct RbfParams {
 /// Equations: phi_k(x) = exp(-((x_0 - c_i)^2 + (x_1 - c_j)^2) / (2 b^2)), k = i m + j, for
 /// i, j in [0, m): pitch picks the row i, pitch rate the column j. Since V = w . phi and
 /// a_A = theta . phi, phi is also the gradient of both with respect to their weights.
-/// Parameters: c = rbf.centres (m of them), b = rbf.width.
-class RbfFeatures final : public Block {
+/// Parameters: c = rbf.centres (m of them), b = rbf.width. Its layout (feature_layout.h):
+/// rbf.centres and rbf.width.
+class RbfFeatures final : public Block, public DescribesLayout {
  public:
   RbfFeatures(std::string name, const RbfParams& params);
 
   // m^2, the size of the "features" port.
   int num_features() const;
+
+  FeatureLayout layout() const override;
+  std::string layout_note() const override;
 
  private:
   RbfParams params_;

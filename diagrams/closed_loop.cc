@@ -144,27 +144,41 @@ const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& meas
   return telemetry.output_port("y");
 }
 
-// Sets `slot` to `found`, refusing a second learner of the same kind.
-template <typename B>
-void keep_learner(const B*& slot, const B* found, const Diagram& controller, const char* kind) {
+std::string path_of(const blocks::WeightLearner& learner) { return learner.learner_block().path(); }
+std::string path_of(const Block& block) { return block.path(); }
+
+// Sets `slot` to `found` (the block `block`), refusing a second learner of the same kind.
+template <typename L>
+void keep_learner(const L*& slot, const L* found, const Block& block, const Diagram& controller,
+                  const char* kind) {
   if (slot != nullptr) {
     throw std::invalid_argument("controller '" + controller.name() + "' has two " + kind + "s ('" +
-                                slot->path() + "' and '" + found->path() +
+                                path_of(*slot) + "' and '" + block.path() +
                                 "'); a closed loop keeps the weights of one");
   }
   slot = found;
 }
 
-void find_learners(const Diagram& diagram, const Diagram& controller, LearnerBlocks& found) {
+// The controller's learners and, in the order its blocks were built, the layout its blocks
+// describe (blocks/feature_layout.h).
+void survey_controller(const Diagram& diagram, const Diagram& controller, ClosedLoop& loop) {
+  LearnerBlocks& found = loop.learner;
   for (const auto& block : diagram.blocks()) {
+    if (const auto* shaping = dynamic_cast<const blocks::DescribesLayout*>(block.get())) {
+      const blocks::FeatureLayout entries = shaping->layout();
+      loop.layout.insert(loop.layout.end(), entries.begin(), entries.end());
+      if (std::string note = shaping->layout_note(); !note.empty()) {
+        loop.layout_notes.push_back(std::move(note));
+      }
+    }
     if (block->is_diagram()) {
-      find_learners(static_cast<const Diagram&>(*block), controller, found);
-    } else if (const auto* critic = dynamic_cast<const blocks::Critic*>(block.get())) {
-      keep_learner(found.critic, critic, controller, "critic");
-    } else if (const auto* actor = dynamic_cast<const blocks::Actor*>(block.get())) {
-      keep_learner(found.actor, actor, controller, "actor");
+      survey_controller(static_cast<const Diagram&>(*block), controller, loop);
+    } else if (const auto* learner = dynamic_cast<const blocks::WeightLearner*>(block.get())) {
+      const bool critic = learner->learner_role() == blocks::WeightLearner::Role::kCritic;
+      keep_learner(critic ? found.critic : found.actor, learner, *block, controller,
+                   critic ? "critic" : "actor");
     } else if (const auto* tropism = dynamic_cast<const blocks::Tropism*>(block.get())) {
-      keep_learner(found.tropism, tropism, controller, "tropism");
+      keep_learner(found.tropism, tropism, *block, controller, "tropism");
     }
   }
 }
@@ -198,7 +212,7 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   const Diagram& brain = builder.add(std::move(controller));
   loop.plant = &robot;
   loop.controller = &brain;
-  find_learners(brain, brain, loop.learner);
+  survey_controller(brain, brain, loop);
 
   builder.connect(robot.state_output(), sensors.input_port("plant_state"));
   const OutputPort& measured = sensors.output_port("measured");

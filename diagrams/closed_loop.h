@@ -13,10 +13,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
-#include "cbbg/blocks/critic.h"
+#include "cbbg/blocks/feature_layout.h"
 #include "cbbg/blocks/torque_push.h"
 #include "cbbg/blocks/tropism.h"
+#include "cbbg/blocks/weight_learner.h"
 #include "cbbg/diagrams/cbbg_controller.h"
 #include "cbbg/diagrams/telemetry.h"
 #include "cbbg/framework/diagram.h"
@@ -25,10 +27,11 @@
 namespace cbbg::diagrams {
 
 // The learning blocks the protocols read and write (weights files, exp2's annealing of k1),
-// found by their type anywhere in the controller; null where it has none.
+// found anywhere in the controller: its critic and actor by their interface
+// (blocks::WeightLearner, a user's own too), its tropism by type; null where it has none.
 struct LearnerBlocks {
-  const blocks::Critic* critic = nullptr;
-  const blocks::Actor* actor = nullptr;
+  const blocks::WeightLearner* critic = nullptr;
+  const blocks::WeightLearner* actor = nullptr;
   const blocks::Tropism* tropism = nullptr;  // null without exploration
   bool learns() const { return actor != nullptr; }
 };
@@ -38,6 +41,10 @@ struct ClosedLoop {
   const plant::RobotPlant* plant = nullptr;
   const OutputPort* telemetry = nullptr;  // kTelemetrySize signals, TelemetryIndex order
   LearnerBlocks learner;
+  // What the controller's blocks say gives its features their meaning (normaliser.*, rbf.*
+  // for the presets), in the order they were built, and their notes for a weights file.
+  blocks::FeatureLayout layout;
+  std::vector<std::string> layout_notes;
   const Diagram* controller = nullptr;  // kControllerDiagnostics' comment: its ports
   double accuracy = 1e-6;               // the simulator's (plant.accuracy)
   double wheel_radius = 0.15;           // plant.wheel_radius, m: wheel angles to distance

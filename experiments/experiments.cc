@@ -64,7 +64,7 @@ void keep_weights(LearntWeights weights, SeedRun& run) {
 void finish_run(const config::Parameters& p, const diagrams::Arm& arm,
                 const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run) {
   if (loop.learner.learns()) {
-    keep_weights(learnt_weights(loop, context, p, provenance(p, run)), run);
+    keep_weights(learnt_weights(loop, context, provenance(p, run)), run);
   }
   evaluate_run(p, arm, loop.learner.learns(), run);
 }
@@ -139,7 +139,7 @@ void run_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
       run.failures_before_success = failures;
     }
     if (has_actor) {
-      const LearntWeights weights = learnt_weights(loop, runner.context(), p, provenance(p, run));
+      const LearntWeights weights = learnt_weights(loop, runner.context(), provenance(p, run));
       record.actor_alone_passed =
           weights.actor.allFinite() && actor_alone_balances(p, arm, weights, run.seed);
     }
@@ -190,7 +190,7 @@ void run_annealing(const config::Parameters& p, const diagrams::Arm& coordinated
     }
   }
   if (!run.succeeded) run.failures_before_success = static_cast<int>(run.trials.size());
-  keep_weights(learnt_weights(later_loop, later.context(), p, provenance(p, run)), run);
+  keep_weights(learnt_weights(later_loop, later.context(), provenance(p, run)), run);
 }
 
 std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {

@@ -3,36 +3,27 @@
 #include <stdexcept>
 #include <string>
 
-#include "cbbg/config/parameters.h"
-
 namespace cbbg::experiments {
 
-int LearntWeights::num_features() const {
-  return static_cast<int>(centres.size() * centres.size());
-}
+int LearntWeights::num_features() const { return static_cast<int>(actor.size()); }
 
 bool LearntWeights::operator==(const LearntWeights& other) const {
   auto same = [](const Vector& a, const Vector& b) {
     return a.size() == b.size() && (a.size() == 0 || (a.array() == b.array()).all());
   };
-  return centres == other.centres && width == other.width &&
-         normaliser.scale_theta == other.normaliser.scale_theta &&
-         normaliser.scale_dtheta == other.normaliser.scale_dtheta &&
-         normaliser.saturation == other.normaliser.saturation && same(actor, other.actor) &&
-         same(critic, other.critic) && provenance == other.provenance;
+  return layout == other.layout && same(actor, other.actor) && same(critic, other.critic) &&
+         provenance == other.provenance;
 }
 
 LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& context,
-                             const config::Parameters& parameters,
                              const WeightsProvenance& provenance) {
   if (loop.learner.actor == nullptr || loop.learner.critic == nullptr) {
     throw std::invalid_argument("diagram '" + loop.diagram->name() +
                                 "' has no critic and actor: it learns no weights");
   }
   LearntWeights weights;
-  weights.centres = parameters.rbf.centres;
-  weights.width = parameters.rbf.width;
-  weights.normaliser = parameters.normaliser;
+  weights.layout = loop.layout;
+  weights.layout_notes = loop.layout_notes;
   weights.actor = loop.learner.actor->weights(context);
   weights.critic = loop.learner.critic->weights(context);
   weights.provenance = provenance;
@@ -44,6 +35,12 @@ void load_learnt_weights(const diagrams::ClosedLoop& loop, Context& context,
   if (loop.learner.actor == nullptr) {
     throw std::invalid_argument("diagram '" + loop.diagram->name() +
                                 "' has no actor to load weights into");
+  }
+  if (const blocks::LayoutDifference difference =
+          blocks::first_difference(weights.layout, loop.layout);
+      !difference.empty()) {
+    throw std::invalid_argument("the weights were made for " + difference.first + "; diagram '" +
+                                loop.diagram->name() + "' has " + difference.second);
   }
   auto check = [&loop](const char* name, Eigen::Index size, int features) {
     if (size != features) {

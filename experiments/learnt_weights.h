@@ -1,13 +1,12 @@
 #pragma once
 // What a learning arm has learnt: the critic's and the actor's weights with the feature
 // layout they were learnt on and where they come from; read from and written into a closed
-// loop's context. results/weights_file.h keeps them in files.
+// loop's context. store/weights_file.h keeps them in files.
 
 #include <string>
 #include <vector>
 
-#include "cbbg/blocks/normaliser.h"
-#include "cbbg/config/parameters.h"
+#include "cbbg/blocks/feature_layout.h"
 #include "cbbg/diagrams/closed_loop.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/types.h"
@@ -24,30 +23,30 @@ struct WeightsProvenance {
 };
 
 // The weights of the critic (V = w . phi) and the actor (a_A = theta . phi), and the layout
-// that gives phi its meaning: the normaliser's scales and the RBF grid. Weights are only
-// meaningful with the same layout (store::check_layout).
+// that gives phi its meaning, as the loop's blocks describe it (blocks/feature_layout.h: the
+// normaliser's scales and the RBF grid for the presets, a user's features block's own).
+// Weights are only meaningful in a loop of the same layout (store::check_layout).
 struct LearntWeights {
-  std::vector<double> centres;          // rbf.centres
-  double width = 0.0;                   // rbf.width
-  blocks::NormaliserParams normaliser;  // normaliser.*
-  Vector actor;                         // theta, centres.size()^2 of them
-  Vector critic;                        // w, as many
+  blocks::FeatureLayout layout;
+  std::vector<std::string> layout_notes;  // the blocks' notes, for a reader of the file
+  Vector actor;                           // theta, one per feature
+  Vector critic;                          // w, as many
   WeightsProvenance provenance;
 
-  // The feature count of the layout: centres.size() squared.
+  // The feature count: the actor's weights.
   int num_features() const;
+  // The same layout, weights and provenance (the notes are a reader's help only).
   bool operator==(const LearntWeights& other) const;
 };
 
-// The weights `loop` has learnt in `context`, with the layout of `parameters` (which built
-// `loop`). Throws std::invalid_argument when the loop has no critic and actor.
+// The weights `loop` has learnt in `context`, with the loop's layout. Throws
+// std::invalid_argument when the loop has no critic and actor.
 LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& context,
-                             const config::Parameters& parameters,
                              const WeightsProvenance& provenance);
 
 // Sets the actor's weights in `context`, and the critic's where the loop has one. Throws
-// std::invalid_argument when the loop has no actor or the feature counts differ;
-// store::check_layout first for a user's message.
+// std::invalid_argument when the loop has no actor, or its layout or feature counts differ
+// from the weights'; store::check_layout first for a user's message.
 void load_learnt_weights(const diagrams::ClosedLoop& loop, Context& context,
                          const LearntWeights& weights);
 

@@ -124,7 +124,8 @@ void TrialRunner::check_learning_signals(double time, const double* values) cons
   const bool value_ok = !checks_value_ || std::isfinite(values[kTelemetryValue]);
   const bool temperature_ok = !checks_temperature_ || std::isfinite(values[kTelemetryTemperature]);
   if (value_ok && temperature_ok) return;
-  const Block& block = value_ok ? static_cast<const Block&>(*learner.tropism) : *learner.critic;
+  const Block& block =
+      value_ok ? static_cast<const Block&>(*learner.tropism) : learner.critic->learner_block();
   throw SimulationError("block '" + block.path() +
                         "': " + (value_ok ? "the temperature T" : "the value V") +
                         " stopped being finite at t = " + format_number(time) + " s");

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <system_error>
 
-#include "cbbg/config/parameters.h"
+#include "cbbg/config/config.h"
 #include "cbbg/store/files.h"
 #include "cbbg/store/output_guard.h"
 
@@ -27,14 +27,6 @@ std::string format_header() {
 std::string format_number(double value) {
   char buffer[32];
   return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
-}
-
-std::string format_list(const std::vector<double>& values) {
-  std::string text = "[";
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    text += (i == 0 ? "" : ", ") + format_number(values[i]);
-  }
-  return text + "]";
 }
 
 bool is_one_word(const std::string& text) {
@@ -110,6 +102,27 @@ class Reader {
       if (!line->text.empty() && line->text.front() != '#') return line;
     }
     return std::nullopt;
+  }
+
+  // The comments up to the next significant line, each without its '#' and one space; that
+  // line stays to be read.
+  std::vector<std::string> comments() {
+    std::vector<std::string> found;
+    while (true) {
+      const std::size_t position = position_;
+      const int number = line_number_;
+      const auto line = next_raw();
+      if (!line) return found;
+      if (line->text.empty()) continue;
+      if (line->text.front() != '#') {
+        position_ = position;
+        line_number_ = number;
+        return found;
+      }
+      std::string_view note = line->text.substr(1);
+      if (!note.empty() && note.front() == ' ') note.remove_prefix(1);
+      found.emplace_back(note);
+    }
   }
 
   // The next significant line, which must exist: `expected` says what it should hold.
@@ -222,6 +235,37 @@ Vector read_weights(Reader& reader, const std::string& name, long long features)
   return weights;
 }
 
+// A bound far above any real layout keeps the weight count an int and the file's size sane.
+constexpr long long kMaxFeatures = 1000000;
+
+// A layout key: one word with a dot inside ("rbf.width"), as blocks/feature_layout.h keys.
+bool is_layout_key(std::string_view word) {
+  const auto dot = word.find('.');
+  return dot != std::string_view::npos && dot > 0 && word.back() != '.' &&
+         word.find_first_of("#") == std::string_view::npos;
+}
+
+// "key v1 v2 ...": one entry of the layout its blocks described.
+blocks::LayoutEntry read_layout_entry(const Reader& reader, const Line& line,
+                                      const blocks::FeatureLayout& before) {
+  const std::string key(line.words[0]);
+  if (line.words.size() < 2 || !is_layout_key(key)) {
+    reader.fail(line,
+                "expected a layout line 'kind.parameter <numbers>' or 'features <count>', "
+                "got '" +
+                    shown(line.text) + "'");
+  }
+  for (const blocks::LayoutEntry& entry : before) {
+    if (entry.key == key) reader.fail(line, key + " appears twice");
+  }
+  blocks::LayoutEntry entry{key, {}};
+  for (std::size_t i = 1; i < line.words.size(); ++i) {
+    const std::string what = line.words.size() == 2 ? key : key + "[" + std::to_string(i - 1) + "]";
+    entry.values.push_back(reader.number(line, line.words[i], what));
+  }
+  return entry;
+}
+
 LearntWeights parse(const std::filesystem::path& path, std::string_view text) {
   Reader reader(path, text);
   check_format_line(reader, reader.next_raw());
@@ -236,44 +280,22 @@ LearntWeights parse(const std::filesystem::path& path, std::string_view text) {
   }
   provenance.plant = std::string(reader.keyed("plant.kind", "<plant kind>"));
 
-  auto positive = [&reader](std::string_view key) {
-    const double value = reader.keyed_number(key);
-    if (!(value > 0.0)) {
-      reader.fail(reader.last(), std::string(key) + " must be > 0; got " + format_number(value));
-    }
-    return value;
-  };
-  weights.normaliser.scale_theta = positive("normaliser.scale_theta");
-  weights.normaliser.scale_dtheta = positive("normaliser.scale_dtheta");
-  weights.normaliser.saturation = positive("normaliser.saturation");
-
-  const Line centres = reader.expect("'rbf.centres <numbers>'");
-  if (centres.words.size() < 2 || centres.words[0] != "rbf.centres") {
-    reader.fail(centres, "expected 'rbf.centres <numbers>', got '" + shown(centres.text) + "'");
+  // The layout, line by line, up to the feature count.
+  const std::string expected = "a layout line 'kind.parameter <numbers>' or 'features <count>'";
+  Line line = reader.expect(expected);
+  while (line.words[0] != "features") {
+    weights.layout.push_back(read_layout_entry(reader, line, weights.layout));
+    line = reader.expect(expected);
   }
-  for (std::size_t i = 1; i < centres.words.size(); ++i) {
-    weights.centres.push_back(
-        reader.number(centres, centres.words[i], "rbf.centres[" + std::to_string(i - 1) + "]"));
-    if (i > 1 && !(weights.centres[i - 1] > weights.centres[i - 2])) {
-      reader.fail(centres, "rbf.centres must be strictly increasing; got " +
-                               format_number(weights.centres[i - 2]) + " then " +
-                               format_number(weights.centres[i - 1]));
-    }
+  if (line.words.size() != 2) {
+    reader.fail(line, "expected 'features <count>', got '" + shown(line.text) + "'");
   }
-  // A bound far above any real grid keeps the weight count an int and the file's size sane.
-  constexpr std::size_t kMaxCentres = 1000;
-  if (weights.centres.size() > kMaxCentres) {
-    reader.fail(centres, "rbf.centres has " + std::to_string(weights.centres.size()) +
-                             " values; at most " + std::to_string(kMaxCentres) + " are allowed");
+  const long long features = reader.integer(line, line.words[1], "features");
+  if (features < 1 || features > kMaxFeatures) {
+    reader.fail(line, "features must be from 1 to " + std::to_string(kMaxFeatures) + "; got " +
+                          std::to_string(features));
   }
-  weights.width = positive("rbf.width");
-
-  const long long features = reader.keyed_integer("features");
-  if (features != weights.num_features()) {
-    reader.fail(reader.last(), "features is " + std::to_string(features) + ", but " +
-                                   std::to_string(weights.centres.size()) + " rbf.centres make " +
-                                   std::to_string(weights.num_features()));
-  }
+  weights.layout_notes = reader.comments();  // the blocks' notes, kept for a copy of the file
   weights.actor = read_weights(reader, "actor", features);
   weights.critic = read_weights(reader, "critic", features);
   if (const auto extra = reader.next()) {
@@ -282,26 +304,35 @@ LearntWeights parse(const std::filesystem::path& path, std::string_view text) {
   return weights;
 }
 
+void check_finite(const std::string& name, const std::vector<double>& values) {
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (!std::isfinite(values[k])) {
+      throw std::invalid_argument("save_weights: " + name + " [" + std::to_string(k) + "] is " +
+                                  format_number(values[k]) + "; numbers must be finite");
+    }
+  }
+}
+
 void check_savable(const LearntWeights& weights) {
   auto fail = [](const std::string& what) { throw std::invalid_argument("save_weights: " + what); };
-  if (weights.centres.empty()) fail("the weights have no rbf.centres");
+  if (weights.actor.size() == 0) fail("the weights have no features");
   if (!is_one_word(weights.provenance.arm) || !is_one_word(weights.provenance.plant)) {
     fail("arm '" + weights.provenance.arm + "' and plant '" + weights.provenance.plant +
          "' must be single words");
   }
-  for (const auto& [name, vector] : {std::pair<const char*, const Vector*>{"actor", &weights.actor},
-                                     {"critic", &weights.critic}}) {
-    if (vector->size() != weights.num_features()) {
-      fail(std::string(name) + " has " + std::to_string(vector->size()) +
-           " weights; the layout has " + std::to_string(weights.num_features()) + " features");
-    }
-    for (Eigen::Index k = 0; k < vector->size(); ++k) {
-      if (!std::isfinite((*vector)[k])) {
-        fail(std::string(name) + " weight [" + std::to_string(k) + "] is " +
-             format_number((*vector)[k]) + "; numbers must be finite");
-      }
-    }
+  if (weights.critic.size() != weights.actor.size()) {
+    fail("critic has " + std::to_string(weights.critic.size()) + " weights; the actor has " +
+         std::to_string(weights.actor.size()));
   }
+  for (const blocks::LayoutEntry& entry : weights.layout) {
+    if (!is_layout_key(entry.key) || !is_one_word(entry.key) || entry.values.empty()) {
+      fail("layout entry '" + entry.key +
+           "' must be one word 'kind.parameter' with at least one number");
+    }
+    check_finite(entry.key, entry.values);
+  }
+  check_finite("actor weight", {weights.actor.begin(), weights.actor.end()});
+  check_finite("critic weight", {weights.critic.begin(), weights.critic.end()});
 }
 
 std::string format_weights(const LearntWeights& weights) {
@@ -317,35 +348,19 @@ std::string format_weights(const LearntWeights& weights) {
   line("seed", std::to_string(provenance.seed));
   line("trials", std::to_string(provenance.trials));
   line("plant.kind", provenance.plant);
-  line("normaliser.scale_theta", format_number(weights.normaliser.scale_theta));
-  line("normaliser.scale_dtheta", format_number(weights.normaliser.scale_dtheta));
-  line("normaliser.saturation", format_number(weights.normaliser.saturation));
-  text.append("rbf.centres");
-  for (const double centre : weights.centres) text.append(" ").append(format_number(centre));
-  text.append("\n");
-  line("rbf.width", format_number(weights.width));
+  for (const blocks::LayoutEntry& entry : weights.layout) {
+    text.append(entry.key);
+    for (const double value : entry.values) text.append(" ").append(format_number(value));
+    text.append("\n");
+  }
   line("features", std::to_string(weights.num_features()));
-  text.append("# Weight k belongs to the unit at (rbf.centres[k / m], rbf.centres[k % m]), m = ")
-      .append(std::to_string(weights.centres.size()))
-      .append(".\n");
+  for (const std::string& note : weights.layout_notes) text.append("# ").append(note).append("\n");
   for (const auto& [name, vector] : {std::pair<const char*, const Vector*>{"actor", &weights.actor},
                                      {"critic", &weights.critic}}) {
     line(name, std::to_string(vector->size()));
     for (const double weight : *vector) text.append(format_number(weight)).append("\n");
   }
   return text;
-}
-
-std::string layout_text(const std::vector<double>& centres, double width) {
-  const std::size_t m = centres.size();
-  return "rbf.centres " + format_list(centres) + " and rbf.width " + format_number(width) + " (" +
-         std::to_string(m * m) + " features)";
-}
-
-std::string normaliser_text(const blocks::NormaliserParams& normaliser) {
-  return "normaliser.scale_theta " + format_number(normaliser.scale_theta) +
-         ", normaliser.scale_dtheta " + format_number(normaliser.scale_dtheta) +
-         " and normaliser.saturation " + format_number(normaliser.saturation);
 }
 
 }  // namespace
@@ -363,22 +378,12 @@ LearntWeights load_weights(const std::filesystem::path& path) {
   return parse(path, text);
 }
 
-void check_layout(const LearntWeights& weights, const config::Parameters& parameters,
+void check_layout(const LearntWeights& weights, const blocks::FeatureLayout& layout,
                   const std::filesystem::path& source) {
-  const std::vector<double>& centres = parameters.rbf.centres;
-  const double width = parameters.rbf.width;
-  const std::string file = "weights file '" + source.string() + "' was made for ";
-  if (weights.centres != centres || weights.width != width) {
-    throw config::ConfigError(file + layout_text(weights.centres, weights.width) +
-                              "; this config has " + layout_text(centres, width));
-  }
-  const blocks::NormaliserParams& normaliser = parameters.normaliser;
-  if (weights.normaliser.scale_theta != normaliser.scale_theta ||
-      weights.normaliser.scale_dtheta != normaliser.scale_dtheta ||
-      weights.normaliser.saturation != normaliser.saturation) {
-    throw config::ConfigError(file + normaliser_text(weights.normaliser) + "; this config has " +
-                              normaliser_text(normaliser));
-  }
+  const blocks::LayoutDifference difference = blocks::first_difference(weights.layout, layout);
+  if (difference.empty()) return;
+  throw config::ConfigError("weights file '" + source.string() + "' was made for " +
+                            difference.first + "; this diagram has " + difference.second);
 }
 
 }  // namespace cbbg::store

@@ -21,9 +21,9 @@ using experiments::LearntWeights;
 // Writes `weights` to `path` in the text format, every number in the shortest text that
 // reads back to the same double. Writes a temporary file beside `path` and renames it, so
 // `path` is never half-written; creates missing parent directories. Throws
-// std::invalid_argument for weights the format cannot hold (a weight count that does not
-// match the layout, a provenance word with spaces), config::ConfigError when `path` holds
-// anything but a weights file (a file of the user's, a FIFO: never replaced), and
+// std::invalid_argument for weights the format cannot hold (critic and actor counts that
+// differ, a provenance word with spaces, a non-finite number), config::ConfigError when `path`
+// holds anything but a weights file (a file of the user's, a FIFO: never replaced), and
 // std::runtime_error when writing fails.
 void save_weights(const std::filesystem::path& path, const LearntWeights& weights);
 
@@ -32,9 +32,10 @@ void save_weights(const std::filesystem::path& path, const LearntWeights& weight
 // file, the line where it applies, and what is wrong.
 LearntWeights load_weights(const std::filesystem::path& path);
 
-// Throws config::ConfigError, naming `source` and both layouts, unless the weights were made
-// for the normaliser and RBF grid of `config` (the same numbers, bit for bit).
-void check_layout(const LearntWeights& weights, const config::Parameters& parameters,
+// Throws config::ConfigError, naming `source` and where the layouts first differ, unless the
+// weights were made for `layout` (a closed loop's: diagrams::ClosedLoop::layout), the same
+// keys and numbers, bit for bit.
+void check_layout(const LearntWeights& weights, const blocks::FeatureLayout& layout,
                   const std::filesystem::path& source);
 
 }  // namespace cbbg::store

@@ -21,6 +21,7 @@
 #include "cbbg/framework/block_context.h"
 #include "cbbg/framework/diagram_builder.h"
 #include "cbbg/framework/primitives/constant_source.h"
+#include "cbbg/framework/primitives/selector.h"
 #include "tests/diagrams/pitch_supervisor.h"
 
 namespace cbbg::diagrams {
@@ -197,6 +198,69 @@ TEST(ControllerInterface, AHandBuiltLearningControllerHasItsLearnersFound) {
       experiments::run_exp1(quick_parameters(), {make_arm("half", half_and_half)});
   ASSERT_TRUE(results.run(0, 0).weights.has_value());
   EXPECT_GT(results.run(0, 0).weights->actor.norm(), 0.0);
+}
+
+// A user's own learner: a weight per feature of its input, its output their dot product.
+// It learns nothing itself (a policy found by another method, say), but it answers to the
+// protocols as the library's critic and actor do.
+class DotProduct final : public Block, public blocks::WeightLearner {
+ public:
+  DotProduct(std::string name, Role role) : Block(std::move(name)), role_(role) {
+    const InputPort& features = declare_input_port("features", kFeatures);
+    weights_ =
+        declare_discrete_state("weights", Vector::Zero(kFeatures), StateLifetime::kPersistent);
+    declare_output_port("y", 1,
+                        [this, &features](const BlockContext& context, VectorRef y) {
+                          y[0] = weights_.of(context.discrete_state()).dot(context.input(features));
+                        },
+                        {&features});
+  }
+  Role learner_role() const override { return role_; }
+  const Block& learner_block() const override { return *this; }
+  int num_features() const override { return kFeatures; }
+  ConstVectorView weights(const Context& context) const override {
+    return {context.discrete_state(*this).data() + weights_.offset, kFeatures};
+  }
+  VectorView mutable_weights(Context& context) const override {
+    return {context.discrete_state(*this).data() + weights_.offset, kFeatures};
+  }
+
+ private:
+  static constexpr int kFeatures = 2;  // theta_b, theta_b'
+  Role role_;
+  StatePart weights_;
+};
+
+// The measured pitch and pitch rate, the features of DotProduct.
+std::unique_ptr<Diagram> dot_product_controller(const config::Parameters&) {
+  DiagramBuilder builder("controller");
+  auto& pitch = builder.emplace<Selector>(
+      "pitch", blocks::kMeasuredSize,
+      std::vector<int>{blocks::kMeasuredThetaB, blocks::kMeasuredThetaBDot});
+  const Block& actor = builder.emplace<DotProduct>("policy", blocks::WeightLearner::Role::kActor);
+  const Block& critic = builder.emplace<DotProduct>("value", blocks::WeightLearner::Role::kCritic);
+  builder.export_input(pitch.input_port("u"), "measured");
+  builder.connect(pitch.output_port("y"), actor.input_port("features"));
+  builder.connect(pitch.output_port("y"), critic.input_port("features"));
+  builder.export_output(actor.output_port("y"), "action");
+  builder.export_output(critic.output_port("y"), "value");
+  return builder.build();
+}
+
+TEST(ControllerInterface, AUsersLearnersAreFoundAndTheirWeightsKept) {
+  const ClosedLoop loop = build_closed_loop("dot", quick_parameters(), dot_product_controller({}));
+  ASSERT_TRUE(loop.learner.learns());
+  EXPECT_EQ(loop.learner.actor->learner_block().name(), "policy");
+  EXPECT_EQ(loop.learner.critic->learner_block().name(), "value");
+  experiments::LearntWeights pd;
+  pd.actor = Vector{{40.0, 8.0}};  // the weights of a PD law
+  pd.critic = Vector{{-1.0, 0.0}};
+  experiments::TrialRunner runner(loop, 1, 0.01);
+  experiments::load_learnt_weights(loop, runner.context(), pd);
+  EXPECT_EQ(runner.run_trial(0.1744, 5.0).status, experiments::TrialStatus::kSuccess);
+  const experiments::LearntWeights kept = experiments::learnt_weights(loop, runner.context(), {});
+  EXPECT_EQ(kept.actor, pd.actor);
+  EXPECT_EQ(kept.critic, pd.critic);
 }
 
 // A controller the closed loop cannot feed, or whose learners are ambiguous, is refused.

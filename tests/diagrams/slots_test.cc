@@ -1,20 +1,27 @@
 // A user's own block in each slot, from user code only: a supervisor, a feature approximator
-// feeding critic and actor, and a plant. Each runs through the protocols as a preset does.
+// feeding critic and actor (one with a layout of its own, filed with its weights), and a
+// plant. Each runs through the protocols as a preset does.
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "cbbg/blocks/measured_signals.h"
 #include "cbbg/diagrams/presets.h"
 #include "cbbg/experiments/experiments.h"
 #include "cbbg/framework/block_context.h"
+#include "cbbg/store/weights_file.h"
 #include "tests/diagrams/pitch_supervisor.h"
+#include "tests/support/scratch_directory.h"
 
 namespace cbbg::diagrams {
 namespace {
+
+using ::testing::ThrowsMessage;
 
 config::Config quick_config() {
   config::Config config;
@@ -104,6 +111,67 @@ TEST(Slots, AUsersFeaturesFeedCriticAndActor) {
   runner.run_trial(0.1744, 2.0);
   EXPECT_GT(loop.learner.critic->weights(runner.context()).norm(), 0.0);
   EXPECT_GT(loop.learner.actor->weights(runner.context()).norm(), 0.0);
+}
+
+// Features of the user's with a layout of their own: one-hot tiles, n x n over the grid
+// [-3, 3]^2 the normaliser maps to. Its layout (tiles.per_axis) is filed with the weights.
+class Tiles final : public Block, public blocks::DescribesLayout {
+ public:
+  Tiles(std::string name, int per_axis) : Block(std::move(name)), per_axis_(per_axis) {
+    const InputPort& x = declare_input_port("x", 2);
+    declare_output_port("features", per_axis * per_axis,
+                        [&x, per_axis](const BlockContext& context, VectorRef phi) {
+                          auto tile = [per_axis](double v) {
+                            const int i = static_cast<int>((v + 3.0) / 6.0 * per_axis);
+                            return std::clamp(i, 0, per_axis - 1);
+                          };
+                          const auto state = context.input(x);
+                          phi.setZero();
+                          phi[tile(state[0]) * per_axis + tile(state[1])] = 1.0;
+                        },
+                        {&x});
+  }
+  blocks::FeatureLayout layout() const override {
+    return {{"tiles.per_axis", {static_cast<double>(per_axis_)}}};
+  }
+
+ private:
+  int per_axis_;
+};
+
+Arm tiles_arm(int per_axis) {
+  ControllerOptions options = preset("cbbg").options;
+  options.slots.features = [per_axis](const std::string& name, const config::Parameters&) {
+    return std::make_unique<Tiles>(name, per_axis);
+  };
+  return make_arm("cbbg_tiles", options);
+}
+
+TEST(Slots, AUsersFeaturesKeepTheirWeightsWithTheirOwnLayout) {
+  const experiments::ExperimentResults results =
+      experiments::run_exp1(config::read_parameters(quick_config()), {tiles_arm(6)});
+  const experiments::SeedRun& run = results.run(0, 0);
+  ASSERT_TRUE(run.weights.has_value());
+  EXPECT_EQ(run.weights->num_features(), 36);
+  EXPECT_FALSE(run.evaluation.empty());  // its learnt actor, with the same tiles, evaluated
+  EXPECT_EQ(run.weights->layout.back(), (blocks::LayoutEntry{"tiles.per_axis", {6}}));
+
+  // Filed, read back, and loaded only where the tiles are the same.
+  const cbbg::testing::ScratchDirectory scratch;
+  store::save_weights(scratch.path() / "w.txt", *run.weights);
+  const experiments::LearntWeights loaded = store::load_weights(scratch.path() / "w.txt");
+  EXPECT_TRUE(loaded == *run.weights);
+  const config::Parameters parameters = config::read_parameters(quick_config());
+  EXPECT_NO_THROW(store::check_layout(loaded, tiles_arm(6).policy(parameters).layout, "w.txt"));
+  EXPECT_THAT(
+      [&] { store::check_layout(loaded, tiles_arm(4).policy(parameters).layout, "w.txt"); },
+      ThrowsMessage<config::ConfigError>(
+          "weights file 'w.txt' was made for tiles.per_axis 6; this diagram has tiles.per_axis 4"));
+  EXPECT_THAT(
+      [&] { store::check_layout(loaded, preset_arm("cbbg").policy(parameters).layout, "w.txt"); },
+      ThrowsMessage<config::ConfigError>(
+          "weights file 'w.txt' was made for tiles.per_axis 6; this diagram has rbf.centres "
+          "[-3, -2, -1, 0, 1, 2, 3]"));
 }
 
 TEST(Slots, AUsersPlantTakesTheRobotsPlace) {

@@ -156,7 +156,7 @@ TEST(ClosedLoop, AStartedTrialResetsPerTrialStateAndKeepsTheWeights) {
   Context& context = runner.context();
   const Vector learnt = loop.learner.actor->weights(context);
   EXPECT_GT(learnt.norm(), 0.0);
-  const auto& critic = *loop.learner.critic;
+  const Block& critic = loop.learner.critic->learner_block();
   EXPECT_GT(critic.discrete_state_part("trace").of(context.discrete_state(critic)).norm(), 0.0);
   loop.start_trial(context, 0.1);
   EXPECT_EQ(loop.learner.actor->weights(context), learnt);

@@ -57,8 +57,7 @@ const LearntWeights& bg_only_weights() {
           TrialStatus::kSuccess;
     }
     EXPECT_TRUE(balanced) << "bg_only did not balance within 30 trials";
-    return learnt_weights(learner, runner.context(), config::read_parameters(config),
-                          {"bg_only", 1, trials, "analytic"});
+    return learnt_weights(learner, runner.context(), {"bg_only", 1, trials, "analytic"});
   }();
   return weights;
 }
@@ -190,7 +189,8 @@ TEST(PolicyEvaluation, RefusesWeightsOfAnotherGrid) {
   config.set("rbf.centres=[-1, 0, 1]");
   EXPECT_THAT(([&] { evaluate(config, bg_only_weights(), from({0.1})); }),
               ::testing::ThrowsMessage<std::invalid_argument>(
-                  "the weights have 49 actor weights; diagram 'learnt_actor' has 9 features"));
+                  "the weights were made for rbf.centres [-3, -2, -1, 0, 1, 2, 3]; diagram "
+                  "'learnt_actor' has rbf.centres [-1, 0, 1]"));
   EXPECT_THAT(
       ([&] { evaluate(analytic_config(), bg_only_weights(), from({})); }),
       ::testing::ThrowsMessage<std::invalid_argument>("evaluation angles: at least one is needed"));
@@ -257,9 +257,8 @@ TEST_F(EvalCommand, BadWeightsOrConfigExitTwoWithOneLine) {
   bad = options();
   bad.sets.push_back("rbf.centres=[-2, -1, 0, 1, 2]");
   EXPECT_EQ(refused(bad), "cbbg: error: weights file '" + weights_file_.string() +
-                              "' was made for rbf.centres [-3, -2, -1, 0, 1, 2, 3] and rbf.width "
-                              "0.5 (49 features); this config has rbf.centres [-2, -1, 0, 1, 2] "
-                              "and rbf.width 0.5 (25 features)\n");
+                              "' was made for rbf.centres [-3, -2, -1, 0, 1, 2, 3]; this diagram "
+                              "has rbf.centres [-2, -1, 0, 1, 2]\n");
   bad = options();
   bad.sets.push_back("critic.gama=0.5");
   EXPECT_THAT(refused(bad), HasSubstr("unknown key 'critic.gama'; did you mean 'critic.gamma'?"));

@@ -110,10 +110,18 @@ bool same_bits(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
+// The presets' layout at the defaults, as their closed loops describe it.
+blocks::FeatureLayout default_layout() {
+  return {{"normaliser.scale_theta", {0.05817764}},
+          {"normaliser.scale_dtheta", {0.05817764}},
+          {"normaliser.saturation", {3}},
+          {"rbf.centres", {-3, -2, -1, 0, 1, 2, 3}},
+          {"rbf.width", {0.5}}};
+}
+
 LearntWeights default_layout_weights() {
   LearntWeights weights;
-  weights.centres = {-3, -2, -1, 0, 1, 2, 3};
-  weights.width = 0.5;
+  weights.layout = default_layout();
   weights.actor = Vector::Zero(49);
   weights.critic = Vector::Zero(49);
   return weights;
@@ -122,10 +130,11 @@ LearntWeights default_layout_weights() {
 TEST_F(WeightsFile, ReadsAFileWrittenByHand) {
   const LearntWeights weights = load_weights(write("w.txt", small_file()));
   EXPECT_EQ(weights.provenance, (WeightsProvenance{"bg_only", 7, 3, "analytic"}));
-  EXPECT_EQ(weights.centres, (std::vector<double>{-1, 0, 1}));
-  EXPECT_EQ(weights.width, 0.5);
-  EXPECT_EQ(weights.normaliser.scale_theta, 0.05817764);
-  EXPECT_EQ(weights.normaliser.saturation, 3.0);
+  EXPECT_EQ(weights.layout, (blocks::FeatureLayout{{"normaliser.scale_theta", {0.05817764}},
+                                                   {"normaliser.scale_dtheta", {0.05817764}},
+                                                   {"normaliser.saturation", {3}},
+                                                   {"rbf.centres", {-1, 0, 1}},
+                                                   {"rbf.width", {0.5}}}));
   ASSERT_EQ(weights.actor.size(), 9);
   ASSERT_EQ(weights.critic.size(), 9);
   EXPECT_EQ(weights.actor[0], 0.5);
@@ -135,10 +144,10 @@ TEST_F(WeightsFile, ReadsAFileWrittenByHand) {
 
 TEST_F(WeightsFile, SaveThenLoadGivesEveryDoubleBackBitForBit) {
   LearntWeights weights;
-  weights.centres = {-3.0, -1.0 / 3.0, 0.1, 0.2 + 0.1, 2.0 / 3.0, 1e-300, 7.25};
-  std::sort(weights.centres.begin(), weights.centres.end());
-  weights.width = 0.1 + 0.2;
-  weights.normaliser = {3.14159265358979 / 54.0, 1.0 / 7.0, 2.9999999999999996};
+  weights.layout = {{"rbf.centres", {-3.0, -1.0 / 3.0, 0.1, 0.2 + 0.1, 2.0 / 3.0, 1e-300, 7.25}},
+                    {"rbf.width", {0.1 + 0.2}},
+                    {"mine.scales", {3.14159265358979 / 54.0, 1.0 / 7.0, 2.9999999999999996}}};
+  weights.layout_notes = {"a note for a reader"};
   weights.provenance = {"cbbg_weighted", 123456789012LL, 42, "simbody"};
   // Awkward values first, then random bit patterns (every finite double is allowed).
   const double awkward[] = {-0.0,  5e-324,    -2.2250738585072014e-308, 1.7976931348623157e308,
@@ -162,14 +171,15 @@ TEST_F(WeightsFile, SaveThenLoadGivesEveryDoubleBackBitForBit) {
   save_weights(path, weights);
   const LearntWeights loaded = load_weights(path);
   EXPECT_EQ(loaded.provenance, weights.provenance);
-  ASSERT_EQ(loaded.centres.size(), weights.centres.size());
-  for (std::size_t i = 0; i < weights.centres.size(); ++i) {
-    EXPECT_TRUE(same_bits(loaded.centres[i], weights.centres[i])) << "centre " << i;
+  ASSERT_EQ(loaded.layout.size(), weights.layout.size());
+  for (std::size_t e = 0; e < weights.layout.size(); ++e) {
+    EXPECT_EQ(loaded.layout[e].key, weights.layout[e].key);
+    ASSERT_EQ(loaded.layout[e].values.size(), weights.layout[e].values.size());
+    for (std::size_t i = 0; i < weights.layout[e].values.size(); ++i) {
+      EXPECT_TRUE(same_bits(loaded.layout[e].values[i], weights.layout[e].values[i]))
+          << weights.layout[e].key << " " << i;
+    }
   }
-  EXPECT_TRUE(same_bits(loaded.width, weights.width));
-  EXPECT_TRUE(same_bits(loaded.normaliser.scale_theta, weights.normaliser.scale_theta));
-  EXPECT_TRUE(same_bits(loaded.normaliser.scale_dtheta, weights.normaliser.scale_dtheta));
-  EXPECT_TRUE(same_bits(loaded.normaliser.saturation, weights.normaliser.saturation));
   ASSERT_EQ(loaded.actor.size(), 49);
   ASSERT_EQ(loaded.critic.size(), 49);
   for (int k = 0; k < 49; ++k) {
@@ -180,6 +190,7 @@ TEST_F(WeightsFile, SaveThenLoadGivesEveryDoubleBackBitForBit) {
 
   const std::string text = read_text(path);
   EXPECT_EQ(text.substr(0, text.find('\n')), "cbbg-weights 1");
+  EXPECT_THAT(text, HasSubstr("\nfeatures 49\n# a note for a reader\nactor 49\n"));
   EXPECT_THAT(text, HasSubstr("\n-0\n5e-324\n-2.2250738585072014e-308\n1.7976931348623157e+308\n"
                               "0.1\n0.3333333333333333\n"));
 }
@@ -222,7 +233,15 @@ TEST_F(WeightsFile, SavingRefusesWhatTheFormatCannotHold) {
   };
   LearntWeights weights = default_layout_weights();
   weights.actor = Vector::Zero(48);
-  EXPECT_EQ(save_error(weights), "save_weights: actor has 48 weights; the layout has 49 features");
+  EXPECT_EQ(save_error(weights), "save_weights: critic has 49 weights; the actor has 48");
+  weights = default_layout_weights();
+  weights.layout.push_back({"no_dot", {1}});
+  EXPECT_EQ(save_error(weights),
+            "save_weights: layout entry 'no_dot' must be one word 'kind.parameter' with at least "
+            "one number");
+  weights = default_layout_weights();
+  weights.layout[3].values[1] = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(save_error(weights), "save_weights: rbf.centres [1] is inf; numbers must be finite");
   weights = default_layout_weights();
   weights.critic[5] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(save_error(weights), "save_weights: critic weight [5] is nan; numbers must be finite");
@@ -280,18 +299,16 @@ TEST_F(WeightsFile, MalformedLinesAreNamedWithTheirNumber) {
             prefix() + "line 5: trials must be >= 0; got -1");
   EXPECT_EQ(load_error(with_line(file, 11, "rbf.width wide")),
             prefix() + "line 11: rbf.width 'wide' is not a number");
-  EXPECT_EQ(load_error(with_line(file, 11, "rbf.width -0.5")),
-            prefix() + "line 11: rbf.width must be > 0; got -0.5");
-  EXPECT_EQ(load_error(with_line(file, 7, "normaliser.scale_theta 0")),
-            prefix() + "line 7: normaliser.scale_theta must be > 0; got 0");
-  EXPECT_EQ(load_error(with_line(file, 10, "rbf.centres -1 1 0")),
-            prefix() + "line 10: rbf.centres must be strictly increasing; got 1 then 0");
+  // The layout's numbers mean something only to the blocks that describe them: loading
+  // compares them with a loop's (check_layout), and the file checks their form alone.
   EXPECT_EQ(load_error(with_line(file, 10, "centres -1 0 1")),
-            prefix() + "line 10: expected 'rbf.centres <numbers>', got 'centres -1 0 1'");
-  std::string huge_grid = "rbf.centres";
-  for (int i = 0; i <= 1000; ++i) huge_grid.append(" ").append(std::to_string(i));
-  EXPECT_EQ(load_error(with_line(file, 10, huge_grid)),
-            prefix() + "line 10: rbf.centres has 1001 values; at most 1000 are allowed");
+            prefix() +
+                "line 10: expected a layout line 'kind.parameter <numbers>' or 'features "
+                "<count>', got 'centres -1 0 1'");
+  EXPECT_EQ(load_error(with_line(file, 10, "rbf.width 0.5")),
+            prefix() + "line 11: rbf.width appears twice");
+  EXPECT_EQ(load_error(with_line(file, 12, "features 2000000")),
+            prefix() + "line 12: features must be from 1 to 1000000; got 2000000");
   EXPECT_EQ(load_error(with_line(file, 15, "1 2")),
             prefix() + "line 15: expected actor weight [1] alone on its line, got '1 2'");
   // Blank lines and comments are skipped but counted.
@@ -314,7 +331,7 @@ TEST_F(WeightsFile, NonFiniteNumbersAreRefused) {
 TEST_F(WeightsFile, WrongCountsAndMissingLinesAreNamed) {
   const std::string file = small_file();
   EXPECT_EQ(load_error(with_line(file, 12, "features 8")),
-            prefix() + "line 12: features is 8, but 3 rbf.centres make 9");
+            prefix() + "line 13: actor has 9 weights, but features is 8");
   EXPECT_EQ(load_error(with_line(file, 13, "actor 8")),
             prefix() + "line 13: actor has 8 weights, but features is 9");
   EXPECT_EQ(load_error(first_lines(file, 27)),
@@ -322,51 +339,39 @@ TEST_F(WeightsFile, WrongCountsAndMissingLinesAreNamed) {
   EXPECT_EQ(load_error(first_lines(file, 22)),
             prefix() + "ends after line 22; expected 'critic <count>'");
   EXPECT_EQ(load_error(first_lines(file, 6)),
-            prefix() + "ends after line 6; expected 'normaliser.scale_theta <number>'");
+            prefix() +
+                "ends after line 6; expected a layout line 'kind.parameter <numbers>' or "
+                "'features <count>'");
   EXPECT_EQ(load_error(file + "\n# fine\n1.5\n"),
             prefix() + "line 35: unexpected '1.5' after the critic weights");
 }
 
-TEST_F(WeightsFile, LayoutMismatchNamesBothLayouts) {
+TEST_F(WeightsFile, LayoutMismatchNamesWhereTheLayoutsDiffer) {
   const LearntWeights weights = default_layout_weights();
-  config::Config config;
-  EXPECT_NO_THROW(check_layout(weights, config::read_parameters(config), "w.txt"));
-
-  config.set("rbf.centres=[-2, -1, 0, 1, 2]");
-  try {
-    check_layout(weights, config::read_parameters(config), "w.txt");
-    FAIL() << "accepted another grid";
-  } catch (const config::ConfigError& error) {
-    EXPECT_EQ(std::string(error.what()),
-              "weights file 'w.txt' was made for rbf.centres [-3, -2, -1, 0, 1, 2, 3] and "
-              "rbf.width 0.5 (49 features); this config has rbf.centres [-2, -1, 0, 1, 2] and "
-              "rbf.width 0.5 (25 features)");
-  }
-  config = config::Config();
-  config.set("rbf.width=0.75");
-  EXPECT_THROW(
-      {
-        try {
-          check_layout(weights, config::read_parameters(config), "w.txt");
-        } catch (const config::ConfigError& error) {
-          EXPECT_THAT(error.what(), HasSubstr("this config has rbf.centres [-3, -2, -1, 0, 1, 2, "
-                                              "3] and rbf.width 0.75 (49 features)"));
-          throw;
-        }
-      },
-      config::ConfigError);
-  config = config::Config();
-  config.set("normaliser.scale_theta=0.1");
-  try {
-    check_layout(weights, config::read_parameters(config), "w.txt");
-    FAIL() << "accepted another normaliser";
-  } catch (const config::ConfigError& error) {
-    EXPECT_EQ(std::string(error.what()),
-              "weights file 'w.txt' was made for normaliser.scale_theta 0.05817764, "
-              "normaliser.scale_dtheta 0.05817764 and normaliser.saturation 3; this config has "
-              "normaliser.scale_theta 0.1, normaliser.scale_dtheta 0.05817764 and "
-              "normaliser.saturation 3");
-  }
+  EXPECT_NO_THROW(check_layout(weights, default_layout(), "w.txt"));
+  blocks::FeatureLayout other = default_layout();
+  other[3].values = {-2, -1, 0, 1, 2};
+  EXPECT_THAT([&] { check_layout(weights, other, "w.txt"); },
+              ::testing::ThrowsMessage<config::ConfigError>(
+                  "weights file 'w.txt' was made for rbf.centres [-3, -2, -1, 0, 1, 2, 3]; this "
+                  "diagram has rbf.centres [-2, -1, 0, 1, 2]"));
+  other = default_layout();
+  other[0].values = {0.1};
+  EXPECT_THAT([&] { check_layout(weights, other, "w.txt"); },
+              ::testing::ThrowsMessage<config::ConfigError>(
+                  "weights file 'w.txt' was made for normaliser.scale_theta 0.05817764; this "
+                  "diagram has normaliser.scale_theta 0.1"));
+  // A user's features block describes another layout altogether.
+  other = {default_layout()[0], default_layout()[1], default_layout()[2], {"tiles.tilings", {4}}};
+  EXPECT_THAT([&] { check_layout(weights, other, "w.txt"); },
+              ::testing::ThrowsMessage<config::ConfigError>(
+                  "weights file 'w.txt' was made for rbf.centres [-3, -2, -1, 0, 1, 2, 3]; this "
+                  "diagram has tiles.tilings 4"));
+  other.pop_back();
+  EXPECT_THAT([&] { check_layout(weights, other, "w.txt"); },
+              ::testing::ThrowsMessage<config::ConfigError>(
+                  "weights file 'w.txt' was made for rbf.centres [-3, -2, -1, 0, 1, 2, 3]; this "
+                  "diagram has no rbf.centres"));
 }
 
 TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
@@ -379,11 +384,10 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
     learner.learner.actor->mutable_weights(*learnt)[k] = 0.5 * k;
     learner.learner.critic->mutable_weights(*learnt)[k] = -1.0 * k;
   }
-  const LearntWeights weights = learnt_weights(learner, *learnt, config::read_parameters(config),
-                                               {"bg_only", 4, 9, "analytic"});
-  EXPECT_EQ(weights.centres, (std::vector<double>{-1, 0, 1}));
-  EXPECT_EQ(weights.width, 0.5);
-  EXPECT_EQ(weights.normaliser.scale_dtheta, 0.05817764);
+  const LearntWeights weights = learnt_weights(learner, *learnt, {"bg_only", 4, 9, "analytic"});
+  EXPECT_EQ(weights.layout, learner.layout);  // what the loop's blocks describe
+  EXPECT_EQ(weights.layout[3], (blocks::LayoutEntry{"rbf.centres", {-1, 0, 1}}));
+  EXPECT_EQ(weights.layout[1], (blocks::LayoutEntry{"normaliser.scale_dtheta", {0.05817764}}));
   EXPECT_EQ(weights.actor[4], 2.0);
   EXPECT_EQ(weights.critic[8], -8.0);
   EXPECT_EQ(weights.provenance.trials, 9);
@@ -402,14 +406,12 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
     FAIL() << "loaded 9 weights into 49 features";
   } catch (const std::invalid_argument& error) {
     EXPECT_EQ(std::string(error.what()),
-              "the weights have 9 actor weights; diagram 'cbbg' has 49 features");
+              "the weights were made for rbf.centres [-1, 0, 1]; diagram 'cbbg' has rbf.centres "
+              "[-3, -2, -1, 0, 1, 2, 3]");
   }
   const ClosedLoop supervisor = build_preset("pd_only", config::read_parameters(config));
   auto supervisor_context = supervisor.diagram->create_context(1);
-  EXPECT_THAT(([&] {
-                learnt_weights(supervisor, *supervisor_context, config::read_parameters(config),
-                               {});
-              }),
+  EXPECT_THAT(([&] { learnt_weights(supervisor, *supervisor_context, {}); }),
               ::testing::ThrowsMessage<std::invalid_argument>(
                   "diagram 'pd_only' has no critic and actor: it learns no weights"));
 }

@@ -1,0 +1,44 @@
+#pragma once
+// What gives learnt weights their meaning: the parameters of the blocks between the measured
+// state and the features (a normaliser's scales, an RBF grid, a user's tiling). Such a block
+// describes its own layout; a closed loop gathers them (diagrams::ClosedLoop::layout), and
+// weights files record it and are loaded only into a loop of the same layout.
+
+#include <string>
+#include <vector>
+
+namespace cbbg::blocks {
+
+// One named list of numbers: "rbf.centres" -> [-3, ..., 3]. Keys are one word, the block's
+// kind, a dot and the parameter ("normaliser.scale_theta").
+struct LayoutEntry {
+  std::string key;
+  std::vector<double> values;
+  bool operator==(const LayoutEntry&) const = default;
+};
+using FeatureLayout = std::vector<LayoutEntry>;
+
+// Implemented by a block (besides Block) whose parameters shape the features.
+class DescribesLayout {
+ public:
+  virtual ~DescribesLayout() = default;
+  // Its entries, in a fixed order.
+  virtual FeatureLayout layout() const = 0;
+  // One line a weights file may carry as a comment to help a reader (which feature a weight
+  // belongs to); "" for none.
+  virtual std::string layout_note() const { return ""; }
+};
+
+// "rbf.centres [-1, 0, 1] and rbf.width 0.5": a layout in messages; "no layout" when empty.
+std::string layout_text(const FeatureLayout& layout);
+
+// Where two layouts first differ, in words: {"rbf.width 0.5", "rbf.width 0.7"}, or
+// {"tiles.tilings 4", "no tiles.tilings"}; two empty texts when they are the same.
+struct LayoutDifference {
+  std::string first;
+  std::string second;
+  bool empty() const { return first.empty() && second.empty(); }
+};
+LayoutDifference first_difference(const FeatureLayout& first, const FeatureLayout& second);
+
+}  // namespace cbbg::blocks
