@@ -197,7 +197,6 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   check_controller_ports(*controller);
   ClosedLoop loop;
   loop.accuracy = p.plant.robot.accuracy;
-  loop.wheel_radius = p.plant.robot.wheel_radius;
   const double period = p.trial.period;
   DiagramBuilder builder(std::move(name));
   std::unique_ptr<plant::RobotPlant> made =
@@ -211,6 +210,7 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   auto& reward = builder.emplace<blocks::Reward>("reward", p.reward, period);
   const Diagram& brain = builder.add(std::move(controller));
   loop.plant = &robot;
+  loop.wheel_radius = robot.wheel_radius();
   loop.controller = &brain;
   survey_controller(brain, brain, loop);
 

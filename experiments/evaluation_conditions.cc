@@ -66,6 +66,24 @@ void check_evaluation_conditions(const config::Parameters& training) {
   }
 }
 
+bool changes_robot(const config::EvaluationParams& evaluation) {
+  return evaluation.body_mass_scale != 1.0 || evaluation.com_height_scale != 1.0;
+}
+
+void check_plant_takes_conditions(const config::EvaluationParams& evaluation,
+                                  const plant::RobotPlant& plant) {
+  if (plant.built_from_robot_params()) return;
+  for (const auto& [key, scale] :
+       {std::pair{"evaluation.body_mass_scale", evaluation.body_mass_scale},
+        std::pair{"evaluation.com_height_scale", evaluation.com_height_scale}}) {
+    if (scale == 1.0) continue;
+    throw config::ConfigError(std::string(key) + " is " + format_number(scale) + ", but plant '" +
+                              plant.path() +
+                              "' is not built from plant.* and would be evaluated unchanged; keep "
+                              "it at 1 for this plant, or give the plant the change itself");
+  }
+}
+
 std::string describe_conditions(const config::EvaluationParams& evaluation) {
   std::string words;
   auto add = [&words](const std::string& part) {

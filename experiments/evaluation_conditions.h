@@ -19,6 +19,7 @@
 #include <string>
 
 #include "cbbg/config/parameters.h"
+#include "cbbg/plant/robot_plant.h"
 
 namespace cbbg::experiments {
 
@@ -30,6 +31,16 @@ config::Parameters evaluation_parameters(const config::Parameters& training);
 // (a scale of 1e308 makes an infinite mass). Throws config::ConfigError naming the evaluation
 // key and the value it makes.
 void check_evaluation_conditions(const config::Parameters& training);
+
+// Whether `evaluation` changes the robot: a body mass or CoM height scale other than 1 (the
+// noise and the push reach any plant, through the sensors and the wheels).
+bool changes_robot(const config::EvaluationParams& evaluation);
+
+// Throws config::ConfigError when `evaluation` changes the robot and `plant` is not built from the
+// robot parameters (plant::RobotPlant::built_from_robot_params), which would leave the change
+// unseen.
+void check_plant_takes_conditions(const config::EvaluationParams& evaluation,
+                                  const plant::RobotPlant& plant);
 
 // The perturbations of `evaluation` in words ("body mass x1.3, pitch noise 0.02"), or "" at
 // their defaults.

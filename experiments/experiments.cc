@@ -220,6 +220,12 @@ ExperimentResults run_per_arm(const char* experiment, ArmProtocol protocol,
       }
     }
   }
+  // Before any training: every arm's plant sees the robot its evaluation changes.
+  for (const auto& arm : arms) {
+    if (changes_robot(p.evaluation)) {
+      check_plant_takes_conditions(p.evaluation, *arm.learner(p).plant);
+    }
+  }
   // Tasks are arm-major: the arm of a run is found by its name.
   auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
     for (const auto& arm : arms) {

@@ -183,12 +183,28 @@ TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
   const ClosedLoop supervised =
       build_preset("pd_only", config::read_parameters(quick_config()), pendulum);
   experiments::TrialRunner runner(supervised, 1, 0.01);
-  EXPECT_EQ(runner.run_trial(0.1744, 5.0).status, experiments::TrialStatus::kSuccess);
+  const experiments::TrialOutcome balanced = runner.run_trial(0.1744, 8.0);  // past 5 s
+  EXPECT_EQ(balanced.status, experiments::TrialStatus::kSuccess);
+  // It does not say its wheels' radius (the config's is the two-wheeler's): no speed.
+  EXPECT_TRUE(std::isnan(supervised.wheel_radius));
+  EXPECT_TRUE(std::isfinite(balanced.pitch_rms));  // the span after the settle time exists
+  EXPECT_TRUE(std::isnan(balanced.mean_forward_speed));
+  EXPECT_EQ(build_preset("pd_only", config::read_parameters(quick_config())).wheel_radius, 0.15);
   const experiments::ExperimentResults results = experiments::run_exp1(
       config::read_parameters(quick_config()), {preset_arm("bg_only", pendulum)});
   EXPECT_EQ(results.runs.size(), 2u);
   EXPECT_GT(results.runs[0].trials.size(), 0u);
   EXPECT_EQ(results.runs[0].trials.front().outcome.status, experiments::TrialStatus::kFailed);
+  // Its evaluation on a changed robot would leave it unchanged: refused before any training.
+  config::Parameters heavier = config::read_parameters(quick_config());
+  heavier.evaluation.body_mass_scale = 1.3;
+  EXPECT_THAT(
+      [&] { experiments::run_exp1(heavier, {preset_arm("bg_only", pendulum)}); },
+      ThrowsMessage<config::ConfigError>(
+          "evaluation.body_mass_scale is 1.3, but plant 'bg_only/plant' is not built from "
+          "plant.* and would be evaluated unchanged; keep it at 1 for this plant, or give the "
+          "plant the change itself"));
+  EXPECT_NO_THROW(experiments::run_exp1(heavier, {preset_arm("pd_only")}));  // the robot's plant
 }
 
 }  // namespace
