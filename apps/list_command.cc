@@ -7,7 +7,7 @@
 #include "cbbg/apps/commands.h"
 #include "cbbg/config/config.h"
 #include "cbbg/diagrams/presets.h"
-#include "cbbg/experiments/experiments.h"
+#include "cbbg/experiments/run_names.h"
 
 namespace cbbg::app {
 namespace {

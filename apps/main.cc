@@ -12,7 +12,7 @@
 #include "cbbg/apps/errors.h"
 #include "cbbg/apps/eval_command.h"
 #include "cbbg/diagrams/presets.h"
-#include "cbbg/experiments/experiments.h"
+#include "cbbg/experiments/run_names.h"
 
 namespace {
 

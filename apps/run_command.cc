@@ -16,6 +16,7 @@
 #include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/experiments/evaluation_conditions.h"
 #include "cbbg/experiments/experiments.h"
+#include "cbbg/experiments/run_names.h"
 #include "cbbg/store/output_guard.h"
 #include "cbbg/store/results_writer.h"
 #include "cbbg/store/run_directory.h"

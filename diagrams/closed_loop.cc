@@ -4,7 +4,6 @@
 #include <stdexcept>
 
 #include "cbbg/blocks/failure_detector.h"
-#include "cbbg/blocks/measured_signals.h"
 #include "cbbg/blocks/reward.h"
 #include "cbbg/blocks/sensors.h"
 #include "cbbg/config/parameters.h"
@@ -65,50 +64,6 @@ void wire_actuation(DiagramBuilder& builder, double period, const OutputPort& ac
   builder.connect(wheel_torques.output_port("y"), robot.torque_input());
 }
 
-void check_port_size(const Diagram& controller, const char* kind, const char* name, int size,
-                     int wanted) {
-  if (size == wanted) return;
-  throw std::invalid_argument("controller '" + controller.name() + "': its " + kind + " \"" + name +
-                              "\" has size " + std::to_string(size) + "; it must be " +
-                              std::to_string(wanted));
-}
-
-// The ports the closed loop feeds and reads (kControllerDiagnostics' comment), and no other
-// input: an input left unfed would read nothing.
-void check_controller_ports(const Diagram& controller) {
-  const OutputPort* action = controller.find_output_port("action");
-  if (action == nullptr || action->size() != 1) {
-    throw std::invalid_argument("controller '" + controller.name() +
-                                "' must have an output \"action\" of size 1; its outputs are: " +
-                                controller.output_port_names());
-  }
-  const InputPort* measured = controller.find_input_port("measured");
-  if (measured == nullptr) {
-    throw std::invalid_argument("controller '" + controller.name() +
-                                "' must have an input \"measured\" of size 6; its inputs are: " +
-                                controller.input_port_names());
-  }
-  for (int i = 0; i < controller.num_input_ports(); ++i) {
-    const InputPort& input = controller.input_port(i);
-    const std::string& name = input.name();
-    if (name == "measured") {
-      check_port_size(controller, "input", "measured", input.size(), blocks::kMeasuredSize);
-    } else if (name == "reward" || name == "failed") {
-      check_port_size(controller, "input", name.c_str(), input.size(), 1);
-    } else {
-      throw std::invalid_argument(
-          "controller '" + controller.name() + "' has an input \"" + name +
-          "\" the closed loop does not feed; it feeds \"measured\" (6), \"reward\" (1) and "
-          "\"failed\" (1)");
-    }
-  }
-  for (const char* name : kControllerDiagnostics) {
-    if (const OutputPort* output = controller.find_output_port(name)) {
-      check_port_size(controller, "output", name, output->size(), 1);
-    }
-  }
-}
-
 // The controller's output `name`, or a NaN source for a diagnostic it does not have.
 const OutputPort& diagnostic(DiagramBuilder& builder, const Diagram& controller, const char* name) {
   if (const OutputPort* output = controller.find_output_port(name)) return *output;
@@ -144,45 +99,6 @@ const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& meas
   return telemetry.output_port("y");
 }
 
-std::string path_of(const blocks::WeightLearner& learner) { return learner.learner_block().path(); }
-std::string path_of(const Block& block) { return block.path(); }
-
-// Sets `slot` to `found` (the block `block`), refusing a second learner of the same kind.
-template <typename L>
-void keep_learner(const L*& slot, const L* found, const Block& block, const Diagram& controller,
-                  const char* kind) {
-  if (slot != nullptr) {
-    throw std::invalid_argument("controller '" + controller.name() + "' has two " + kind + "s ('" +
-                                path_of(*slot) + "' and '" + block.path() +
-                                "'); a closed loop keeps the weights of one");
-  }
-  slot = found;
-}
-
-// The controller's learners and, in the order its blocks were built, the layout its blocks
-// describe (blocks/feature_layout.h).
-void survey_controller(const Diagram& diagram, const Diagram& controller, ClosedLoop& loop) {
-  LearnerBlocks& found = loop.learner;
-  for (const auto& block : diagram.blocks()) {
-    if (const auto* shaping = dynamic_cast<const blocks::DescribesLayout*>(block.get())) {
-      const blocks::FeatureLayout entries = shaping->layout();
-      loop.layout.insert(loop.layout.end(), entries.begin(), entries.end());
-      if (std::string note = shaping->layout_note(); !note.empty()) {
-        loop.layout_notes.push_back(std::move(note));
-      }
-    }
-    if (block->is_diagram()) {
-      survey_controller(static_cast<const Diagram&>(*block), controller, loop);
-    } else if (const auto* learner = dynamic_cast<const blocks::WeightLearner*>(block.get())) {
-      const bool critic = learner->learner_role() == blocks::WeightLearner::Role::kCritic;
-      keep_learner(critic ? found.critic : found.actor, learner, *block, controller,
-                   critic ? "critic" : "actor");
-    } else if (const auto* tropism = dynamic_cast<const blocks::Tropism*>(block.get())) {
-      keep_learner(found.tropism, tropism, *block, controller, "tropism");
-    }
-  }
-}
-
 }  // namespace
 
 void ClosedLoop::start_trial(Context& context, double theta0) const {
@@ -212,7 +128,10 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   loop.plant = &robot;
   loop.wheel_radius = robot.wheel_radius();
   loop.controller = &brain;
-  survey_controller(brain, brain, loop);
+  ControllerSurvey survey = survey_controller(brain);
+  loop.learner = survey.learner;
+  loop.layout = std::move(survey.layout);
+  loop.layout_notes = std::move(survey.layout_notes);
 
   builder.connect(robot.state_output(), sensors.input_port("plant_state"));
   const OutputPort& measured = sensors.output_port("measured");

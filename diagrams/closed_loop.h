@@ -15,26 +15,14 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/blocks/feature_layout.h"
 #include "cbbg/blocks/torque_push.h"
-#include "cbbg/blocks/tropism.h"
-#include "cbbg/blocks/weight_learner.h"
 #include "cbbg/diagrams/cbbg_controller.h"
+#include "cbbg/diagrams/controller_ports.h"
 #include "cbbg/diagrams/telemetry.h"
 #include "cbbg/framework/diagram.h"
 #include "cbbg/plant/robot_plant.h"
 
 namespace cbbg::diagrams {
-
-// The learning blocks the protocols read and write (weights files, exp2's annealing of k1),
-// found anywhere in the controller: its critic and actor by their interface
-// (blocks::WeightLearner, a user's own too), its tropism by type; null where it has none.
-struct LearnerBlocks {
-  const blocks::WeightLearner* critic = nullptr;
-  const blocks::WeightLearner* actor = nullptr;
-  const blocks::Tropism* tropism = nullptr;  // null without exploration
-  bool learns() const { return actor != nullptr; }
-};
 
 struct ClosedLoop {
   std::unique_ptr<Diagram> diagram;
@@ -72,15 +60,8 @@ struct ClosedLoopOptions {
   std::optional<blocks::PushParams> push{};
 };
 
-// What the closed loop feeds a controller, and what it reads of it. Required: input
-// "measured" (6, blocks/measured_signals.h) and output "action" (1). Optional: inputs
-// "reward" and "failed" (1 each: a learner's), and any of the diagnostic outputs (1 each),
-// which the telemetry records (NaN for those it lacks).
-inline constexpr const char* kControllerDiagnostics[] = {
-    "supervisor_action", "actor_action", "exploration_action", "omega", "value", "td_error",
-    "temperature",       "entropy"};
-
-// Wires `controller` (any diagram with the ports above; CbbgController is one) into the
+// Wires `controller` (any diagram with the ports of controller_ports.h; CbbgController is
+// one) into the
 // closed loop named `name`. Its learners (blocks::Critic, blocks::Actor, blocks::Tropism)
 // are found wherever they sit in it. Throws std::invalid_argument when the controller's or
 // the plant's ports do not fit, naming them, or the controller has two learners of a kind.

@@ -49,21 +49,6 @@ ExperimentResults run_exp3(const config::Parameters& parameters,
 ExperimentResults run_exp2(const config::Parameters& parameters, const diagrams::Arm& coordinated,
                            const diagrams::Arm& operant, const ExperimentOptions& options = {});
 
-// A protocol `experiment` may name, and what it measures (`cbbg list`).
-struct ProtocolName {
-  std::string name;
-  std::string meaning;
-};
-// exp1, exp2, exp3: the one list of the protocols' names.
-const std::vector<ProtocolName>& protocol_names();
-
-// Before any work: `experiment` names a protocol or an arm preset, and every entry of `arms`
-// an arm preset (diagrams::arm_names). Each throws config::ConfigError naming the key, what
-// is allowed and what was given. A library run of its own arms needs no such names.
-void check_experiment_name(const std::string& experiment);
-void check_arm_names(const std::vector<std::string>& arms);
-void check_run_names(const config::RunParams& run);
-
 // The preset names `run.experiment` runs: exp1's and exp3's `arms`, exp2's cbbg, or the one
 // preset `experiment` names.
 std::vector<std::string> experiment_arms(const config::RunParams& run);

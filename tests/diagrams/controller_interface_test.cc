@@ -247,6 +247,31 @@ std::unique_ptr<Diagram> dot_product_controller(const config::Parameters&) {
   return builder.build();
 }
 
+TEST(ControllerInterface, TwoLearnersOfAKindAreRefused) {
+  auto two_actors = [](const config::Parameters&) {
+    DiagramBuilder builder("controller");
+    auto& pitch = builder.emplace<Selector>(
+        "pitch", blocks::kMeasuredSize,
+        std::vector<int>{blocks::kMeasuredThetaB, blocks::kMeasuredThetaBDot});
+    const Block& first = builder.emplace<DotProduct>("first", blocks::WeightLearner::Role::kActor);
+    const Block& second =
+        builder.emplace<DotProduct>("second", blocks::WeightLearner::Role::kActor);
+    auto& mixer = builder.emplace<blocks::Mixer>("mixer");
+    builder.export_input(pitch.input_port("u"), "measured");
+    builder.connect(pitch.output_port("y"), first.input_port("features"));
+    builder.connect(pitch.output_port("y"), second.input_port("features"));
+    builder.connect(first.output_port("y"), mixer.input_port("supervisor_action"));
+    builder.connect(second.output_port("y"), mixer.input_port("exploration_action"));
+    builder.fix_input(mixer.input_port("omega"), Vector::Constant(1, 0.5));
+    builder.export_output(mixer.output_port("action"), "action");
+    return builder.build();
+  };
+  EXPECT_THAT([&] { build_closed_loop("two", quick_parameters(), two_actors({})); },
+              ThrowsMessage<std::invalid_argument>(
+                  "controller 'controller' has two actors ('two/controller/first' and "
+                  "'two/controller/second'); a closed loop keeps the weights of one"));
+}
+
 TEST(ControllerInterface, AUsersLearnersAreFoundAndTheirWeightsKept) {
   const ClosedLoop loop = build_closed_loop("dot", quick_parameters(), dot_product_controller({}));
   ASSERT_TRUE(loop.learner.learns());

@@ -1,4 +1,5 @@
 #include "cbbg/experiments/experiments.h"
+#include "cbbg/experiments/run_names.h"
 
 #include <algorithm>
 #include <cmath>

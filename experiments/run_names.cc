@@ -1,0 +1,58 @@
+#include "cbbg/experiments/run_names.h"
+
+#include <algorithm>
+
+#include "cbbg/diagrams/presets.h"
+
+namespace cbbg::experiments {
+namespace {
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+}  // namespace
+
+const std::vector<ProtocolName>& protocol_names() {
+  static const std::vector<ProtocolName> names{
+      {"exp1", "per arm and seed: trials until the first success (paper Fig. 11)"},
+      {"exp2", "one cbbg trial, then omega = 1 with the annealing schedule (paper Figs. 12-14)"},
+      {"exp3",
+       "per arm and seed: trials until the learnt actor alone balances from every "
+       "exp3.angles (skill acquisition)"},
+  };
+  return names;
+}
+
+void check_experiment_name(const std::string& experiment) {
+  std::vector<std::string> names;
+  for (const auto& protocol : protocol_names()) names.push_back(protocol.name);
+  for (const auto& arm : diagrams::arm_names()) names.push_back(arm);
+  if (!contains(names, experiment)) {
+    throw config::ConfigError("experiment must be one of " + joined(names) + "; got '" +
+                              experiment + "'");
+  }
+}
+
+void check_arm_names(const std::vector<std::string>& arms) {
+  const std::vector<std::string> names = diagrams::arm_names();
+  for (std::size_t i = 0; i < arms.size(); ++i) {
+    if (!contains(names, arms[i])) {
+      throw config::ConfigError("arms[" + std::to_string(i) + "] must be one of " + joined(names) +
+                                "; got '" + arms[i] + "'");
+    }
+  }
+}
+
+void check_run_names(const config::RunParams& run) {
+  check_experiment_name(run.experiment);
+  check_arm_names(run.arms);
+}
+
+}  // namespace cbbg::experiments
