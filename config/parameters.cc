@@ -83,13 +83,4 @@ Parameters read_parameters(const Config& config) {
   return parameters;
 }
 
-const Value& OwnSections::at(std::string_view key) const {
-  const auto found = values.find(key);
-  if (found == values.end()) {
-    throw std::logic_error("no registered section declares the key '" + std::string(key) +
-                           "'; register_section before making the config");
-  }
-  return found->second;
-}
-
 }  // namespace cbbg::config
