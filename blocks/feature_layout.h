@@ -5,6 +5,8 @@
 // weights files record it and are loaded only into a loop of the same layout.
 
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace cbbg::blocks {
@@ -17,6 +19,11 @@ struct LayoutEntry {
   bool operator==(const LayoutEntry&) const = default;
 };
 using FeatureLayout = std::vector<LayoutEntry>;
+
+// The layout of a params struct: every number it declares (framework/parameters.h), keyed
+// "<Params::kSection>.<key>" in declaration order, so the keys are the config's own.
+template <typename Params>
+FeatureLayout declared_layout(const Params& params);
 
 // Implemented by a block (besides Block) whose parameters shape the features.
 class DescribesLayout {
@@ -40,5 +47,55 @@ struct LayoutDifference {
   bool empty() const { return first.empty() && second.empty(); }
 };
 LayoutDifference first_difference(const FeatureLayout& first, const FeatureLayout& second);
+
+namespace detail {
+
+// The archive of declared_layout: numbers become entries; words and names are not layout.
+class LayoutCollector {
+ public:
+  LayoutCollector(std::string prefix, FeatureLayout& layout)
+      : prefix_(std::move(prefix)), layout_(layout) {}
+
+  template <typename Bounds>
+  void number(std::string_view key, const double& value, std::string_view, const Bounds&) {
+    layout_.push_back({prefix_ + std::string(key), {value}});
+  }
+  template <typename Bounds>
+  void integer(std::string_view key, const long long& value, std::string_view, const Bounds&) {
+    layout_.push_back({prefix_ + std::string(key), {static_cast<double>(value)}});
+  }
+  template <typename List, typename Bounds>
+  void numbers(std::string_view key, const List& values, std::string_view, const Bounds&) {
+    layout_.push_back({prefix_ + std::string(key), {values.begin(), values.end()}});
+  }
+  template <typename... Ignored>
+  void text(Ignored&&...) {}
+  template <typename... Ignored>
+  void choice(Ignored&&...) {}
+  template <typename... Ignored>
+  void names(Ignored&&...) {}
+  template <typename... Ignored>
+  void annealing(Ignored&&...) {}
+  template <typename Params>
+  void section(std::string_view name, Params& params) {
+    LayoutCollector inner(prefix_ + std::string(name) + ".", layout_);
+    params.describe(inner);
+  }
+
+ private:
+  std::string prefix_;
+  FeatureLayout& layout_;
+};
+
+}  // namespace detail
+
+template <typename Params>
+FeatureLayout declared_layout(const Params& params) {
+  FeatureLayout layout;
+  Params copy = params;  // describe() is one member for reading and writing alike
+  detail::LayoutCollector collector(std::string(Params::kSection) + ".", layout);
+  copy.describe(collector);
+  return layout;
+}
 
 }  // namespace cbbg::blocks

@@ -25,10 +25,6 @@ Normaliser::Normaliser(std::string name, const NormaliserParams& params)
       {&measured}, "normalised (theta_b, theta_b'), saturated to the grid");
 }
 
-FeatureLayout Normaliser::layout() const {
-  return {{"normaliser.scale_theta", {params_.scale_theta}},
-          {"normaliser.scale_dtheta", {params_.scale_dtheta}},
-          {"normaliser.saturation", {params_.saturation}}};
-}
+FeatureLayout Normaliser::layout() const { return declared_layout(params_); }
 
 }  // namespace cbbg::blocks

@@ -49,9 +49,7 @@ int RbfFeatures::num_features() const {
   return m * m;
 }
 
-FeatureLayout RbfFeatures::layout() const {
-  return {{"rbf.centres", params_.centres}, {"rbf.width", {params_.width}}};
-}
+FeatureLayout RbfFeatures::layout() const { return declared_layout(params_); }
 
 std::string RbfFeatures::layout_note() const {
   return "Weight k belongs to the unit at (rbf.centres[k / m], rbf.centres[k % m]), m = " +

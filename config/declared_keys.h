@@ -18,6 +18,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "cbbg/config/config.h"
@@ -88,8 +89,9 @@ class KeyCollector {
   std::vector<KeySpec>& keys_;
 };
 
-// The archive that fills a params struct from a Config or OwnSections (`Source`), whose
-// values were checked against the same declarations as they arrived.
+// The archive that fills a params struct from a Config or OwnSections (`Source`: anything
+// with value(key)), whose values were checked against the same declarations as they
+// arrived.
 template <class Source>
 class KeyReader {
  public:
@@ -97,37 +99,37 @@ class KeyReader {
       : config_(config), prefix_(std::move(prefix)) {}
 
   void number(std::string_view key, double& value, std::string_view, const Bounds&) {
-    value = config_.number(path(key));
+    value = read<double>(key);
   }
   void integer(std::string_view key, long long& value, std::string_view, const Bounds&) {
-    value = config_.integer(path(key));
+    value = read<long long>(key);
   }
   void numbers(std::string_view key, std::vector<double>& values, std::string_view, const Bounds&) {
-    values = config_.numbers(path(key));
+    values = read<std::vector<double>>(key);
   }
   template <std::size_t N>
   void numbers(std::string_view key, std::array<double, N>& values, std::string_view,
                const Bounds&) {
-    const std::vector<double>& read = config_.numbers(path(key));
-    for (std::size_t i = 0; i < N && i < read.size(); ++i) values[i] = read[i];
+    const auto& list = read<std::vector<double>>(key);
+    for (std::size_t i = 0; i < N && i < list.size(); ++i) values[i] = list[i];
   }
   void text(std::string_view key, std::string& value, std::string_view,
             const std::vector<std::string>&) {
-    value = config_.text(path(key));
+    value = read<std::string>(key);
   }
   template <typename T>
   void choice(std::string_view key, T& value, std::string_view, const Choices<T>& choices) {
-    const std::string& word = config_.text(path(key));
+    const std::string& word = read<std::string>(key);
     for (const Choice<T>& choice : choices) {
       if (word == choice.word) value = choice.value;
     }
   }
   void names(std::string_view key, std::vector<std::string>& values, std::string_view,
              const std::vector<std::string>&) {
-    values = config_.names(path(key));
+    values = read<std::vector<std::string>>(key);
   }
   void annealing(std::string_view key, std::vector<AnnealingStep>& steps, std::string_view) {
-    steps = config_.annealing(path(key));
+    steps = read<std::vector<AnnealingStep>>(key);
   }
   template <typename Params>
   void section(std::string_view name, Params& params) {
@@ -137,6 +139,11 @@ class KeyReader {
 
  private:
   std::string path(std::string_view key) const { return prefix_ + std::string(key); }
+  // The value of `key`, of the kind its declaration gave it.
+  template <typename T>
+  const T& read(std::string_view key) const {
+    return std::get<T>(config_.value(path(key)));
+  }
 
   const Source& config_;
   std::string prefix_;

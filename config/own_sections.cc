@@ -4,7 +4,7 @@
 
 namespace cbbg::config {
 
-const Value& OwnSections::at(std::string_view key) const {
+const Value& OwnSections::value(std::string_view key) const {
   const auto found = values.find(key);
   if (found == values.end()) {
     throw std::logic_error("no registered section declares the key '" + std::string(key) +

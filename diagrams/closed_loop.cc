@@ -64,14 +64,29 @@ void wire_actuation(DiagramBuilder& builder, double period, const OutputPort& ac
   builder.connect(wheel_torques.output_port("y"), robot.torque_input());
 }
 
-// The controller's output `name`, or a NaN source for a diagnostic it does not have.
-const OutputPort& diagnostic(DiagramBuilder& builder, const Diagram& controller, const char* name) {
-  if (const OutputPort* output = controller.find_output_port(name)) return *output;
-  return builder
-      .emplace<ConstantSource>(std::string("no_") + name,
-                               Vector::Constant(1, std::numeric_limits<double>::quiet_NaN()))
-      .output_port("y");
-}
+// The controller's diagnostic outputs, and one NaN source for all those it does not have.
+class Diagnostics {
+ public:
+  Diagnostics(DiagramBuilder& builder, const Diagram& controller)
+      : builder_(builder), controller_(controller) {}
+
+  const OutputPort& operator()(const std::string& name) {
+    if (const OutputPort* output = controller_.find_output_port(name)) return *output;
+    if (missing_ == nullptr) {
+      missing_ =
+          &builder_
+               .emplace<ConstantSource>(
+                   "no_diagnostics", Vector::Constant(1, std::numeric_limits<double>::quiet_NaN()))
+               .output_port("y");
+    }
+    return *missing_;
+  }
+
+ private:
+  DiagramBuilder& builder_;
+  const Diagram& controller_;
+  const OutputPort* missing_ = nullptr;
+};
 
 // The multiplexer of telemetry.h's signals.
 const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& measured,
@@ -91,11 +106,12 @@ const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& meas
   builder.connect(robot.state_output(), pose.input_port("u"));
   builder.connect(pose.output_port("y"), telemetry.input_port("pose"));
   builder.connect(measured, telemetry.input_port("measured"));
+  Diagnostics diagnostic(builder, controller);
   for (const auto& name : from_controller) {
-    builder.connect(diagnostic(builder, controller, name.c_str()), telemetry.input_port(name));
+    builder.connect(diagnostic(name), telemetry.input_port(name));
   }
   builder.connect(reward, telemetry.input_port("reward"));
-  builder.connect(diagnostic(builder, controller, "entropy"), telemetry.input_port("entropy"));
+  builder.connect(diagnostic("entropy"), telemetry.input_port("entropy"));
   return telemetry.output_port("y");
 }
 
@@ -126,7 +142,6 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   auto& reward = builder.emplace<blocks::Reward>("reward", p.reward, period);
   const Diagram& brain = builder.add(std::move(controller));
   loop.plant = &robot;
-  loop.wheel_radius = robot.wheel_radius();
   loop.controller = &brain;
   ControllerSurvey survey = survey_controller(brain);
   loop.learner = survey.learner;

@@ -35,7 +35,6 @@ struct ClosedLoop {
   std::vector<std::string> layout_notes;
   const Diagram* controller = nullptr;  // kControllerDiagnostics' comment: its ports
   double accuracy = 1e-6;               // the simulator's (plant.accuracy)
-  double wheel_radius = 0.15;           // the plant's (RobotPlant::wheel_radius), m
 
   // Whether the controller has the diagnostic output `name` (the telemetry's is NaN if not).
   bool outputs(const char* name) const {

@@ -33,22 +33,32 @@ void check_blocks(const config::Parameters& p) {
   blocks::FailureDetectorParams{p.trial.failure_angle}.validate();
 }
 
+// The blocks' invariants and the rules across sections, as the config's errors.
+void check_invariants(const config::Parameters& parameters) {
+  try {
+    check_blocks(parameters);
+  } catch (const std::invalid_argument& error) {
+    throw config::ConfigError(error.what());
+  }
+  parameters.check_across_sections();
+}
+
 }  // namespace
 
 config::Parameters validated_parameters(const config::Config& config) {
+  // Each value was checked against its declaration as it arrived in the config.
   const config::Parameters parameters = config::read_parameters(config);
-  validate_parameters(parameters);
+  check_invariants(parameters);
   return parameters;
 }
 
 void validate_parameters(const config::Parameters& parameters) {
   try {
     check_declared(parameters, "");
-    check_blocks(parameters);
   } catch (const std::invalid_argument& error) {
     throw config::ConfigError(error.what());
   }
-  parameters.check_across_sections();
+  check_invariants(parameters);
 }
 
 }  // namespace cbbg::diagrams

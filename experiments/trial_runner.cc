@@ -115,8 +115,8 @@ void TrialRunner::finish_oscillation(TrialOutcome& outcome) const {
   const double mean = o.pitch_sum / n;
   outcome.pitch_rms = std::sqrt(std::max(0.0, o.pitch_square_sum / n - mean * mean));
   outcome.pitch_peak_to_peak = o.pitch_max - o.pitch_min;
-  outcome.mean_forward_speed =
-      loop_->wheel_radius * (o.last_wheels - o.first_wheels) / (o.last_time - o.first_time);
+  outcome.mean_forward_speed = loop_->plant->wheel_radius() * (o.last_wheels - o.first_wheels) /
+                               (o.last_time - o.first_time);
 }
 
 void TrialRunner::check_learning_signals(double time, const double* values) const {

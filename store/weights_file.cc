@@ -239,10 +239,9 @@ Vector read_weights(Reader& reader, const std::string& name, long long features)
 constexpr long long kMaxFeatures = 1000000;
 
 // A layout key: one word with a dot inside ("rbf.width"), as blocks/feature_layout.h keys.
-bool is_layout_key(std::string_view word) {
+bool is_layout_key(const std::string& word) {
   const auto dot = word.find('.');
-  return dot != std::string_view::npos && dot > 0 && word.back() != '.' &&
-         word.find_first_of("#") == std::string_view::npos;
+  return is_one_word(word) && dot != std::string::npos && dot > 0 && word.back() != '.';
 }
 
 // "key v1 v2 ...": one entry of the layout its blocks described.
@@ -325,7 +324,7 @@ void check_savable(const LearntWeights& weights) {
          std::to_string(weights.actor.size()));
   }
   for (const blocks::LayoutEntry& entry : weights.layout) {
-    if (!is_layout_key(entry.key) || !is_one_word(entry.key) || entry.values.empty()) {
+    if (!is_layout_key(entry.key) || entry.values.empty()) {
       fail("layout entry '" + entry.key +
            "' must be one word 'kind.parameter' with at least one number");
     }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -22,20 +23,14 @@
 #include "cbbg/framework/diagram_builder.h"
 #include "cbbg/framework/primitives/constant_source.h"
 #include "cbbg/framework/primitives/selector.h"
-#include "tests/diagrams/pitch_supervisor.h"
+#include "tests/diagrams/slot_fixtures.h"
 
 namespace cbbg::diagrams {
 namespace {
 
+using testing::PitchSupervisor;
+using testing::quick_parameters;
 using ::testing::ThrowsMessage;
-
-config::Parameters quick_parameters() {
-  config::Config config;
-  config.set("plant.kind=analytic");
-  config.set("seeds=2");
-  config.set("log.decimation=0");
-  return config::read_parameters(config);
-}
 
 // The telemetry's omega over one trial of `loop` from 0.1744 rad, `seconds` long.
 std::vector<double> omega_over_a_trial(const ClosedLoop& loop, double seconds) {
@@ -122,8 +117,6 @@ TEST(ControllerInterface, EachLearnerFreezesAlone) {
   EXPECT_GT(learning_critic.norm(), 0.0);
   EXPECT_EQ(frozen_actor.norm(), 0.0);
 }
-
-using testing::PitchSupervisor;
 
 // A controller built by hand: the user's law alone, with no diagnostics at all.
 std::unique_ptr<Diagram> law_alone(const config::Parameters&) {
@@ -231,37 +224,42 @@ class DotProduct final : public Block, public blocks::WeightLearner {
   StatePart weights_;
 };
 
-// The measured pitch and pitch rate, the features of DotProduct.
-std::unique_ptr<Diagram> dot_product_controller(const config::Parameters&) {
-  DiagramBuilder builder("controller");
+using Role = blocks::WeightLearner::Role;
+
+// Two DotProducts of the given names and roles in `builder`'s controller, both fed the
+// measured pitch and pitch rate (the controller's input "measured").
+std::pair<const Block*, const Block*> two_learners(DiagramBuilder& builder, const char* first,
+                                                   Role first_role, const char* second,
+                                                   Role second_role) {
   auto& pitch = builder.emplace<Selector>(
       "pitch", blocks::kMeasuredSize,
       std::vector<int>{blocks::kMeasuredThetaB, blocks::kMeasuredThetaBDot});
-  const Block& actor = builder.emplace<DotProduct>("policy", blocks::WeightLearner::Role::kActor);
-  const Block& critic = builder.emplace<DotProduct>("value", blocks::WeightLearner::Role::kCritic);
+  const Block& one = builder.emplace<DotProduct>(first, first_role);
+  const Block& other = builder.emplace<DotProduct>(second, second_role);
   builder.export_input(pitch.input_port("u"), "measured");
-  builder.connect(pitch.output_port("y"), actor.input_port("features"));
-  builder.connect(pitch.output_port("y"), critic.input_port("features"));
-  builder.export_output(actor.output_port("y"), "action");
-  builder.export_output(critic.output_port("y"), "value");
+  builder.connect(pitch.output_port("y"), one.input_port("features"));
+  builder.connect(pitch.output_port("y"), other.input_port("features"));
+  return {&one, &other};
+}
+
+// A user's actor and critic on the measured pitch and pitch rate.
+std::unique_ptr<Diagram> dot_product_controller(const config::Parameters&) {
+  DiagramBuilder builder("controller");
+  const auto [actor, critic] =
+      two_learners(builder, "policy", Role::kActor, "value", Role::kCritic);
+  builder.export_output(actor->output_port("y"), "action");
+  builder.export_output(critic->output_port("y"), "value");
   return builder.build();
 }
 
 TEST(ControllerInterface, TwoLearnersOfAKindAreRefused) {
   auto two_actors = [](const config::Parameters&) {
     DiagramBuilder builder("controller");
-    auto& pitch = builder.emplace<Selector>(
-        "pitch", blocks::kMeasuredSize,
-        std::vector<int>{blocks::kMeasuredThetaB, blocks::kMeasuredThetaBDot});
-    const Block& first = builder.emplace<DotProduct>("first", blocks::WeightLearner::Role::kActor);
-    const Block& second =
-        builder.emplace<DotProduct>("second", blocks::WeightLearner::Role::kActor);
+    const auto [first, second] =
+        two_learners(builder, "first", Role::kActor, "second", Role::kActor);
     auto& mixer = builder.emplace<blocks::Mixer>("mixer");
-    builder.export_input(pitch.input_port("u"), "measured");
-    builder.connect(pitch.output_port("y"), first.input_port("features"));
-    builder.connect(pitch.output_port("y"), second.input_port("features"));
-    builder.connect(first.output_port("y"), mixer.input_port("supervisor_action"));
-    builder.connect(second.output_port("y"), mixer.input_port("exploration_action"));
+    builder.connect(first->output_port("y"), mixer.input_port("supervisor_action"));
+    builder.connect(second->output_port("y"), mixer.input_port("exploration_action"));
     builder.fix_input(mixer.input_port("omega"), Vector::Constant(1, 0.5));
     builder.export_output(mixer.output_port("action"), "action");
     return builder.build();

@@ -15,7 +15,7 @@
 #include "cbbg/experiments/experiments.h"
 #include "cbbg/framework/block_context.h"
 #include "cbbg/store/weights_file.h"
-#include "tests/diagrams/pitch_supervisor.h"
+#include "tests/diagrams/slot_fixtures.h"
 #include "tests/support/scratch_directory.h"
 
 namespace cbbg::diagrams {
@@ -23,15 +23,8 @@ namespace {
 
 using ::testing::ThrowsMessage;
 
-config::Config quick_config() {
-  config::Config config;
-  config.set("plant.kind=analytic");
-  config.set("seeds=2");
-  config.set("log.decimation=0");
-  return config;
-}
-
 using testing::PitchSupervisor;
+using testing::quick_config;
 
 // Features of the user's: a bias and the two state coordinates, phi = (1, x_0, x_1).
 class LinearFeatures final : public Block {
@@ -186,10 +179,11 @@ TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
   const experiments::TrialOutcome balanced = runner.run_trial(0.1744, 8.0);  // past 5 s
   EXPECT_EQ(balanced.status, experiments::TrialStatus::kSuccess);
   // It does not say its wheels' radius (the config's is the two-wheeler's): no speed.
-  EXPECT_TRUE(std::isnan(supervised.wheel_radius));
+  EXPECT_TRUE(std::isnan(supervised.plant->wheel_radius()));
   EXPECT_TRUE(std::isfinite(balanced.pitch_rms));  // the span after the settle time exists
   EXPECT_TRUE(std::isnan(balanced.mean_forward_speed));
-  EXPECT_EQ(build_preset("pd_only", config::read_parameters(quick_config())).wheel_radius, 0.15);
+  EXPECT_EQ(build_preset("pd_only", config::read_parameters(quick_config())).plant->wheel_radius(),
+            0.15);
   const experiments::ExperimentResults results = experiments::run_exp1(
       config::read_parameters(quick_config()), {preset_arm("bg_only", pendulum)});
   EXPECT_EQ(results.runs.size(), 2u);

@@ -1,15 +1,29 @@
 #pragma once
-// A supervisor of a user's, for the tests of the controller's slots and interface: a PD law
-// on the pitch alone, a_S = 40 theta_b + 8 theta_b'. Input "measured" (6), output "action".
+// What the tests of the controller's slots and interface share: a quick config, and a
+// supervisor of a user's.
 
 #include <string>
 
 #include "cbbg/blocks/measured_signals.h"
+#include "cbbg/config/parameters.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/block_context.h"
 
 namespace cbbg::diagrams::testing {
 
+// The analytic plant keeps these tests quick; two seeds, no steps.csv.
+inline config::Config quick_config() {
+  config::Config config;
+  config.set("plant.kind=analytic");
+  config.set("seeds=2");
+  config.set("log.decimation=0");
+  return config;
+}
+
+inline config::Parameters quick_parameters() { return config::read_parameters(quick_config()); }
+
+// A PD law on the pitch alone, a_S = 40 theta_b + 8 theta_b'. Input "measured" (6), output
+// "action".
 class PitchSupervisor final : public Block {
  public:
   explicit PitchSupervisor(std::string name) : Block(std::move(name)) {
