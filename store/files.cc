@@ -36,6 +36,12 @@ void write_atomically(const std::filesystem::path& path, const std::string& text
 void remove_tree(const std::filesystem::path& path) {
   std::error_code error;
   std::filesystem::remove_all(path, error);
+  // Another cbbg clearing the same stale leftover (two shards starting at once) may have
+  // removed part of it first: gone is what was wanted.
+  std::error_code unknown;
+  if (error == std::errc::no_such_file_or_directory && !std::filesystem::exists(path, unknown)) {
+    return;
+  }
   if (error) {
     throw std::runtime_error("cannot remove " + quoted_path(path) + ": " + error.message());
   }
