@@ -143,6 +143,19 @@ void print_table(const experiments::PolicyEvaluation& evaluation, const config::
   }
 }
 
+// The learnt actor alone of the arm that learnt the weights (a preset's, or one the program
+// registered, with its own features and controller); learnt_actor for an arm it does not know.
+diagrams::ClosedLoopFactory policy_of(const std::string& arm,
+                                      const diagrams::ClosedLoopOptions& loop) {
+  const std::vector<std::string> arms = diagrams::arm_names();
+  if (std::find(arms.begin(), arms.end(), arm) != arms.end()) {
+    diagrams::Arm named = diagrams::named_arm(arm, loop);
+    if (named.policy) return named.policy;
+  }
+  return diagrams::closed_loop_factory(diagrams::kLearntActor,
+                                       diagrams::preset(diagrams::kLearntActor).options, loop);
+}
+
 }  // namespace
 
 int eval_command(const EvalOptions& options) {
@@ -164,8 +177,7 @@ int eval_command(const EvalOptions& options) {
     loop.push = push_from(options);
     parameters = resolve(options);
     weights = store::load_weights(options.weights_file);
-    policy = diagrams::closed_loop_factory(diagrams::kLearntActor,
-                                           diagrams::preset(diagrams::kLearntActor).options, loop);
+    policy = policy_of(weights.provenance.arm, loop);
     store::check_layout(weights, policy(parameters).layout, options.weights_file);
     settings.angles = parameters.evaluation.angles;
     settings.repeats = options.repeats;

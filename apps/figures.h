@@ -40,9 +40,11 @@ std::vector<std::string> own_figure_names(const std::vector<std::string>& arms,
 bool write_run_replays(const std::filesystem::path& directory, const config::Parameters& parameters,
                        const std::string& run_name);
 
-// A file cbbg installs in share/cbbg/ beside the directory of this executable (bin/ when
-// installed, apps/ in the build tree), or the path in the environment variable `override`.
+// A file cbbg installs in share/cbbg/: the path in the environment variable `override`, else
+// share/cbbg/ beside the directory of this executable (bin/ when installed, apps/ in the build
+// tree) when it is there, else the share directory the command line was given (run_cli).
 std::filesystem::path shared_file(const char* override, const char* name);
+void set_share_directory(const std::filesystem::path& share);
 
 // Runs the plotting script on DIR; returns its exit code.
 int run_plot_script(const std::filesystem::path& directory, bool quiet);

@@ -1,5 +1,6 @@
 // cbbg graph: the block diagram of a preset, or of a config's first arm.
 
+#include <algorithm>
 #include <iostream>
 
 #include "cbbg/apps/commands.h"
@@ -21,10 +22,12 @@ int graph_command(const GraphOptions& options) {
     for (const auto& assignment : options.sets) config.set(assignment);
     parameters = diagrams::validated_parameters(config);
     if (diagram.empty()) diagram = experiments::experiment_arms(parameters.run).front();
-    try {
-      diagrams::preset(diagram);
-    } catch (const std::invalid_argument& error) {
-      throw config::ConfigError(std::string("--diagram: ") + error.what());
+    const std::vector<std::string> names = diagrams::diagram_names();
+    if (std::find(names.begin(), names.end(), diagram) == names.end()) {
+      std::string known;
+      for (const std::string& name : names) known += (known.empty() ? "" : ", ") + name;
+      throw config::ConfigError("--diagram: unknown diagram '" + diagram + "'; the diagrams are " +
+                                known);
     }
     if (options.max_depth && *options.max_depth < 0) {
       throw config::ConfigError("--depth must be 0 or more (the nesting levels to expand); got " +

@@ -96,6 +96,9 @@ int list_command(bool keys_markdown) {
   for (const auto& preset : diagrams::presets()) {
     std::printf("  %-15s %s\n", preset.name.c_str(), preset.description.c_str());
   }
+  for (const auto& arm : diagrams::registered_arms()) {  // a user's program's own
+    std::printf("  %-15s %s\n", arm.name.c_str(), arm.description.c_str());
+  }
   std::printf("\nBlocks of the diagrams:\n");
   for (const auto& entry : kBlocks) std::printf("  %-20s %s\n", entry.name, entry.meaning);
   std::printf("\nConfig keys (--set key=value, or a YAML file with --config):\n");

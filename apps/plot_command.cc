@@ -36,11 +36,22 @@ bool is_sweep(const std::filesystem::path& directory) {
 
 }  // namespace
 
+namespace {
+std::filesystem::path& share_directory() {
+  static std::filesystem::path share;
+  return share;
+}
+}  // namespace
+
+void set_share_directory(const std::filesystem::path& share) { share_directory() = share; }
+
 std::filesystem::path shared_file(const char* override, const char* name) {
   if (const char* chosen = std::getenv(override); chosen != nullptr && *chosen) return chosen;
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  return self.parent_path().parent_path() / "share" / "cbbg" / name;
+  const std::filesystem::path beside = self.parent_path().parent_path() / "share" / "cbbg" / name;
+  if (share_directory().empty() || std::filesystem::exists(beside, error)) return beside;
+  return share_directory() / name;
 }
 
 int run_plot_script(const std::filesystem::path& directory, bool quiet) {
@@ -91,8 +102,10 @@ int draw_figures(const std::filesystem::path& directory, const config::Parameter
   const std::vector<std::string> arms = run_arms(directory, parameters.run);
   const std::vector<std::string> presets = diagrams::arm_names();
   if (std::find(presets.begin(), presets.end(), arms.front()) == presets.end()) {
-    spdlog::info("no diagram.svg: arm '{}' is not a preset (draw it with cbbg::to_dot)",
-                 arms.front());
+    spdlog::info(
+        "no diagram.svg: arm '{}' is not a preset nor registered (draw it with "
+        "cbbg::to_dot, or register it: diagrams/arms.h)",
+        arms.front());
   } else {
     try {
       store::Manifest manifest(directory / "figures");
@@ -113,12 +126,15 @@ int draw_figures(const std::filesystem::path& directory, const config::Parameter
 
 void draw_diagram(const std::string& name, const config::Parameters& parameters,
                   const std::filesystem::path& output, const GraphvizOptions& options) {
-  const diagrams::ClosedLoop loop = diagrams::build_preset(name, parameters);
+  const diagrams::ClosedLoop loop = name == diagrams::kLearntActor
+                                        ? diagrams::build_preset(name, parameters)
+                                        : diagrams::named_arm(name).learner(parameters);
   render_dot(to_dot(*loop.diagram, options), output);
 }
 
 std::vector<std::string> telemetry_blocks(const std::string& name) {
-  return {name + "/telemetry", name + "/pose"};
+  return {name + "/telemetry", name + "/pose", name + "/pose_x", name + "/pose_y",
+          name + "/pose_yaw"};
 }
 
 int plot_command(const std::filesystem::path& directory) {

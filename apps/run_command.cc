@@ -68,9 +68,17 @@ void print_annealing_summary(const experiments::ExperimentResults& results) {
   }
 }
 
+// The width of the tables' arm column: 14, or the longest arm name.
+int arm_width(const experiments::ExperimentResults& results) {
+  std::size_t width = 14;
+  for (const std::string& arm : results.arms) width = std::max(width, arm.size());
+  return static_cast<int>(width);
+}
+
 // exp3: per arm, the seeds whose learnt actor alone passed, and the trials it took them.
 void print_skill_summary(const experiments::ExperimentResults& results) {
-  std::printf("%-14s %8s %10s %8s %s\n", "arm", "seeds", "skilled", "median", "range");
+  const int width = arm_width(results);
+  std::printf("%-*s %8s %10s %8s %s\n", width, "arm", "seeds", "skilled", "median", "range");
   for (std::size_t a = 0; a < results.arms.size(); ++a) {
     std::vector<int> trials;
     for (std::size_t s = 0; s < results.seeds.size(); ++s) {
@@ -78,14 +86,14 @@ void print_skill_summary(const experiments::ExperimentResults& results) {
       if (run.trials_to_skill) trials.push_back(*run.trials_to_skill);
     }
     if (trials.empty()) {
-      std::printf("%-14s %8zu %10d %8s %s\n", results.arms[a].c_str(), results.seeds.size(), 0, "-",
-                  "(no seed's actor balanced alone)");
+      std::printf("%-*s %8zu %10d %8s %s\n", width, results.arms[a].c_str(), results.seeds.size(),
+                  0, "-", "(no seed's actor balanced alone)");
       continue;
     }
     std::printf(
-        "%-14s %8zu %10zu %8.1f [%d, %d]  (trials until the actor alone balances; of the "
+        "%-*s %8zu %10zu %8.1f [%d, %d]  (trials until the actor alone balances; of the "
         "seeds that got there)\n",
-        results.arms[a].c_str(), results.seeds.size(), trials.size(), store::median(trials),
+        width, results.arms[a].c_str(), results.seeds.size(), trials.size(), store::median(trials),
         *std::min_element(trials.begin(), trials.end()),
         *std::max_element(trials.begin(), trials.end()));
   }
@@ -96,7 +104,8 @@ void print_summary(const experiments::ExperimentResults& results) {
     print_annealing_summary(results);
     return;
   }
-  std::printf("%-14s %8s %10s %8s %s\n", "arm", "seeds", "succeeded", "median", "range");
+  const int width = arm_width(results);
+  std::printf("%-*s %8s %10s %8s %s\n", width, "arm", "seeds", "succeeded", "median", "range");
   for (std::size_t a = 0; a < results.arms.size(); ++a) {
     int succeeded = 0;
     int low = 1 << 30;
@@ -110,7 +119,7 @@ void print_summary(const experiments::ExperimentResults& results) {
       high = std::max(high, run.failures_before_success);
     }
     const double median = store::median(failures);
-    std::printf("%-14s %8zu %10d %8.1f [%d, %d]  (failures before the first success)\n",
+    std::printf("%-*s %8zu %10d %8.1f [%d, %d]  (failures before the first success)\n", width,
                 results.arms[a].c_str(), results.seeds.size(), succeeded, median, low, high);
   }
   if (results.experiment == "exp3") print_skill_summary(results);
@@ -120,7 +129,7 @@ void print_summary(const experiments::ExperimentResults& results) {
 long long learning_runs(const config::RunParams& run) {
   const std::vector<std::string> arms = experiments::experiment_arms(run);
   const auto learning = std::count_if(arms.begin(), arms.end(), [](const std::string& arm) {
-    return diagrams::preset(arm).options.basal_ganglia;
+    return static_cast<bool>(diagrams::named_arm(arm).policy);
   });
   return learning * run.seeds;
 }
@@ -131,7 +140,7 @@ void check_initial_weights(const experiments::LearntWeights& weights,
                            const config::Parameters& parameters,
                            const std::filesystem::path& file) {
   for (const std::string& name : experiments::experiment_arms(parameters.run)) {
-    const diagrams::ClosedLoop loop = diagrams::preset_arm(name).learner(parameters);
+    const diagrams::ClosedLoop loop = diagrams::named_arm(name).learner(parameters);
     if (loop.learner.learns()) store::check_layout(weights, loop.layout, file);
   }
 }

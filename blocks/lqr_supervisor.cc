@@ -1,6 +1,7 @@
 #include "cbbg/blocks/lqr_supervisor.h"
 
 #include <stdexcept>
+#include <string>
 
 #include "cbbg/blocks/measured_signals.h"
 #include "cbbg/blocks/parameter_checks.h"
@@ -14,9 +15,20 @@ void LqrSupervisorParams::validate() const { check_declared(*this, kSection); }
 
 LqrSupervisor::LqrSupervisor(std::string name, const plant::RobotParams& robot,
                              const LqrSupervisorParams& params)
+    : LqrSupervisor(std::move(name), plant::linearize_planar_upright(robot), params) {}
+
+LqrSupervisor::LqrSupervisor(std::string name, const plant::LinearModel& model,
+                             const LqrSupervisorParams& params)
     : Block(std::move(name)) {
   params.validate();
-  const plant::LinearModel model = plant::linearize_planar_upright(robot);
+  if (model.A.rows() != 4 || model.A.cols() != 4 || model.B.rows() != 4 || model.B.cols() != 1) {
+    throw std::invalid_argument(
+        "block '" + this->name() +
+        "': the plant's linearisation must have 4 states (theta_b, phi, "
+        "theta_b', phi') and 1 input; it has A " +
+        std::to_string(model.A.rows()) + "x" + std::to_string(model.A.cols()) + ", B " +
+        std::to_string(model.B.rows()) + "x" + std::to_string(model.B.cols()));
+  }
   const Eigen::Vector4d q(params.lqr_q[0], params.lqr_q[1], params.lqr_q[2], params.lqr_q[3]);
   const Eigen::MatrixXd Q = q.asDiagonal();
   const Eigen::MatrixXd R = Eigen::MatrixXd::Constant(1, 1, params.lqr_r);

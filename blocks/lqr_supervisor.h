@@ -7,6 +7,7 @@
 
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/parameters.h"
+#include "cbbg/plant/linearization.h"
 #include "cbbg/plant/robot_params.h"
 
 namespace cbbg::blocks {
@@ -39,11 +40,18 @@ struct LqrSupervisorParams {
 /// Equations: x = (theta_b, phi, theta_b', phi') with phi = (phi_l + phi_r) / 2,
 /// a_S = -K x, K = R^-1 B' X, X the stabilising solution of the continuous-time algebraic
 /// Riccati equation A' X + X A - X B R^-1 B' X + Q = 0 (riccati.h) for the robot linearised
-/// upright with both wheels driven alike (plant::linearize_planar_upright), Q = diag(q), R = r.
+/// upright with both wheels driven alike (plant::linearize_planar_upright, or the linearisation
+/// of another plant, 4 states and 1 input in that order), Q = diag(q), R = r.
 /// K is computed once, at construction.
-/// Parameters: plant.* (the robot), q = supervisor.lqr_q, r = supervisor.lqr_r.
+/// Parameters: the plant's linearisation, q = supervisor.lqr_q, r = supervisor.lqr_r.
 class LqrSupervisor final : public Block {
  public:
+  // Designed for `planar`, a plant linearised as plant::linearize_planar_upright is
+  // (x = (theta_b, phi, theta_b', phi'), u = the torque on both wheels): the plant in the loop's
+  // (diagrams/plant_kinds.h).
+  LqrSupervisor(std::string name, const plant::LinearModel& planar,
+                const LqrSupervisorParams& params);
+  // Designed for the two-wheeler `robot`.
   LqrSupervisor(std::string name, const plant::RobotParams& robot,
                 const LqrSupervisorParams& params);
 

@@ -1,30 +1,34 @@
 #include "cbbg/blocks/sensors.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "cbbg/blocks/parameter_checks.h"
 #include "cbbg/framework/block_context.h"
 #include "cbbg/framework/random.h"
-#include "cbbg/plant/plant_ports.h"
 
 namespace cbbg::blocks {
-namespace {
-
-// Plant state index of each measured signal.
-constexpr std::array<int, kMeasuredSize> kPlantIndex = {plant::kThetaB,     plant::kThetaBDot,
-                                                        plant::kPhiLeft,    plant::kPhiRight,
-                                                        plant::kPhiLeftDot, plant::kPhiRightDot};
-
-}  // namespace
 
 void SensorsParams::validate() const { check_declared(*this, kSection); }
 
-Sensors::Sensors(std::string name, const SensorsParams& params, double period)
-    : Block(std::move(name)), params_(params) {
+Sensors::Sensors(std::string name, const SensorsParams& params, double period,
+                 const plant::SignalIndex& signals, int state_size)
+    : Block(std::move(name)),
+      params_(params),
+      plant_index_{signals.pitch,       signals.pitch_rate,      signals.wheel_left,
+                   signals.wheel_right, signals.wheel_left_rate, signals.wheel_right_rate} {
   params_.validate();
   check_period(period);
+  for (const int index : plant_index_) {
+    if (index < 0 || index >= state_size) {
+      throw std::invalid_argument("block '" + this->name() + "': a measured signal's index (" +
+                                  std::to_string(index) + ") lies outside the plant's " +
+                                  std::to_string(state_size) + " signals");
+    }
+  }
   const InputPort& plant_state =
-      declare_input_port("plant_state", plant::kStateSize, "plant state (plant/plant_ports.h)");
+      declare_input_port("plant_state", state_size, "the plant's signals (plant/plant_signals.h)");
   declare_discrete_state("noise", Vector::Zero(kMeasuredSize), StateLifetime::kPerTrial);
   declare_output_port(
       "measured", kMeasuredSize,
@@ -33,7 +37,7 @@ Sensors::Sensors(std::string name, const SensorsParams& params, double period)
         const auto noise = context.discrete_state();
         for (int i = 0; i < kMeasuredSize; ++i) {
           const auto index = static_cast<size_t>(i);
-          double value = state[kPlantIndex[index]] + params_.noise_std[index] * noise[i];
+          double value = state[plant_index_[index]] + params_.noise_std[index] * noise[i];
           const double step = params_.quantisation[index];
           if (step > 0.0) value = step * std::round(value / step);
           measured[i] = value;

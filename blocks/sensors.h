@@ -7,6 +7,8 @@
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/parameters.h"
+#include "cbbg/plant/plant_ports.h"
+#include "cbbg/plant/plant_signals.h"
 
 namespace cbbg::blocks {
 
@@ -35,10 +37,11 @@ struct SensorsParams {
 ///
 /// | port        | dir | size | meaning                                                  |
 /// |-------------|-----|------|----------------------------------------------------------|
-/// | plant_state | in  | 10   | plant state, plant/plant_ports.h                         |
+/// | plant_state | in  | n    | the plant's signals (plant/plant_signals.h)              |
 /// | measured    | out | 6    | theta_b, theta_b', phi_l, phi_r, phi_l', phi_r' (rad, s) |
 ///
-/// Equations, per signal i taken from the plant state x:
+/// Equations, per signal i taken from the plant state x by name (`signals`: where each sits in
+/// the n = `state_size` signals; a plant of one wheel gives it for both sides):
 ///   y_i = Q_i(x_i + sigma_i n_i),   Q_i(v) = q_i round(v / q_i) if q_i > 0, else v,
 /// with n_i a standard normal held in the discrete state: drawn by the initialization update
 /// for the first tick and by each periodic update for the next, from the block's own
@@ -47,13 +50,16 @@ struct SensorsParams {
 /// sensors.noise_std, q = sensors.quantisation (both off by default), the period trial.period.
 class Sensors final : public Block {
  public:
-  Sensors(std::string name, const SensorsParams& params, double period);
+  Sensors(std::string name, const SensorsParams& params, double period,
+          const plant::SignalIndex& signals = plant::two_wheeler_index(),
+          int state_size = plant::kStateSize);
 
  private:
   // Writes fresh noise samples n_i into `noise` (size 6).
   void draw_noise(RandomGenerator& generator, VectorRef noise) const;
 
   SensorsParams params_;
+  std::array<int, kMeasuredSize> plant_index_;  // the plant state's index of each measured signal
 };
 
 }  // namespace cbbg::blocks

@@ -1,6 +1,6 @@
 # Install rules and a CMake package: find_package(cbbg) gives every library as a target
-# (cbbg::framework, plant, blocks, config, diagrams, experiments, store, replay), the `cbbg`
-# command, its plotting script and its replay page; find_package(cbbg COMPONENTS framework)
+# (cbbg::framework, plant, blocks, config, diagrams, experiments, store, replay, and cli: the
+# command line a user's program runs with its own registrations), the `cbbg` command, its plotting script and its replay page; find_package(cbbg COMPONENTS framework)
 # gives the framework alone, needing Eigen only. Headers install under include/cbbg/ with
 # their tree and are included as <cbbg/framework/...>, <cbbg/diagrams/...>, as the sources
 # include them; plant/simbody/ is the plant library's own (its headers include Simbody) and
@@ -8,7 +8,7 @@
 include(CMakePackageConfigHelpers)
 
 set(CBBG_LIBRARIES cbbg_framework cbbg_plant cbbg_blocks cbbg_config cbbg_diagrams
-                   cbbg_experiments cbbg_store cbbg_replay)
+                   cbbg_experiments cbbg_store cbbg_replay cbbg_cli)
 install(TARGETS ${CBBG_LIBRARIES} EXPORT cbbgTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
@@ -16,6 +16,8 @@ foreach(folder framework plant blocks config diagrams experiments store replay)
   install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/${folder}
           FILES_MATCHING PATTERN "*.h" PATTERN "simbody" EXCLUDE PATTERN "node_modules" EXCLUDE)
 endforeach()
+# The command line's one public header (the rest are its own).
+install(FILES apps/cli.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/apps)
 install(TARGETS cbbg RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The command finds its plotting script in share/cbbg/ beside its bin/.
 install(PROGRAMS scripts/plot_results.py DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)

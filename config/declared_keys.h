@@ -212,6 +212,11 @@ std::vector<KeySpec> declared_keys(Params params, std::string_view section) {
 // existed when it was made, and the defaults of the others.
 void register_keys(std::vector<KeySpec> keys);
 
+// One more word the text key `key` allows (a plant kind a user registers for plant.kind),
+// with its meaning appended to the key's. Throws std::invalid_argument for a key that is not
+// a text key with a list of words, or a word it has already.
+void register_choice(std::string_view key, const std::string& word, std::string_view meaning);
+
 // A user's section: its struct's declared keys under `name`.
 template <typename Params>
 void register_section(std::string_view name) {

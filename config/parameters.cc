@@ -1,6 +1,8 @@
 #include "cbbg/config/parameters.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <utility>
 
@@ -37,6 +39,39 @@ void register_keys(std::vector<KeySpec> added) {
     }
   }
   for (KeySpec& key : added) keys().push_back(std::move(key));
+}
+
+namespace {
+// The words users registered, by key.
+std::map<std::string, std::vector<std::string>, std::less<>>& registered_words() {
+  static std::map<std::string, std::vector<std::string>, std::less<>> words;
+  return words;
+}
+}  // namespace
+
+std::vector<std::string> with_registered_words(std::string_view key,
+                                               std::vector<std::string> words) {
+  if (const auto found = registered_words().find(key); found != registered_words().end()) {
+    words.insert(words.end(), found->second.begin(), found->second.end());
+  }
+  return words;
+}
+
+void register_choice(std::string_view key, const std::string& word, std::string_view meaning) {
+  for (KeySpec& spec : keys()) {  // made, if not yet, before the word is registered
+    if (spec.path != key) continue;
+    if (spec.kind != Kind::kText || spec.choices.empty()) {
+      throw std::invalid_argument("config key '" + spec.path + "' takes no list of words");
+    }
+    if (std::find(spec.choices.begin(), spec.choices.end(), word) != spec.choices.end()) {
+      throw std::invalid_argument("config key '" + spec.path + "' allows '" + word + "' already");
+    }
+    registered_words()[spec.path].push_back(word);
+    spec.choices.push_back(word);
+    spec.meaning += " | " + word + (meaning.empty() ? "" : " (" + std::string(meaning) + ")");
+    return;
+  }
+  throw std::invalid_argument("no config key '" + std::string(key) + "'");
 }
 
 void Parameters::check_across_sections() const {

@@ -7,6 +7,7 @@
 
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cbbg/blocks/actor.h"
@@ -56,6 +57,11 @@ struct RunParams {
   }
 };
 
+// `words` and the words registered for the text key `key` since (register_choice,
+// config/declared_keys.h): what a key open to a user's words declares it allows.
+std::vector<std::string> with_registered_words(std::string_view key,
+                                               std::vector<std::string> words);
+
 // plant.*: which plant, and the robot's physical parameters.
 struct PlantSection {
   std::string kind = "simbody";
@@ -64,7 +70,7 @@ struct PlantSection {
   template <class Archive>
   void describe(Archive& a) {
     a.text("kind", kind, "simbody (3-D multibody, reference) | analytic (fast)",
-           {"simbody", "analytic"});
+           with_registered_words("plant.kind", {"simbody", "analytic"}));
     robot.describe(a);
   }
 };

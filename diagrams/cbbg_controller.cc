@@ -9,6 +9,7 @@
 #include "cbbg/blocks/pd_supervisor.h"
 #include "cbbg/blocks/rbf_features.h"
 #include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/diagrams/slot_check.h"
 #include "cbbg/framework/diagram_builder.h"
 #include "cbbg/framework/number_text.h"
@@ -19,7 +20,7 @@ namespace {
 
 std::unique_ptr<Block> configured_supervisor(const std::string& name, const config::Parameters& p) {
   if (p.supervisor.kind == "lqr") {
-    return std::make_unique<blocks::LqrSupervisor>(name, p.plant.robot, p.supervisor.lqr);
+    return std::make_unique<blocks::LqrSupervisor>(name, planar_linearization(p), p.supervisor.lqr);
   }
   return std::make_unique<blocks::PdSupervisor>(name, p.supervisor.pd);
 }

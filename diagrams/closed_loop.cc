@@ -12,32 +12,26 @@
 #include "cbbg/framework/primitives/multiplexer.h"
 #include "cbbg/framework/primitives/selector.h"
 #include "cbbg/framework/primitives/zero_order_hold.h"
-#include "cbbg/plant/analytic_plant.h"
-#include "cbbg/plant/simbody_plant.h"
 
 namespace cbbg::diagrams {
 namespace {
 
-std::unique_ptr<plant::RobotPlant> configured_plant(const std::string& name,
-                                                    const config::Parameters& p) {
-  if (p.plant.kind == "analytic") {
-    return std::make_unique<plant::AnalyticPlant>(name, p.plant.robot, p.trial.theta0);
+// The plant's ports checked, and where its signals sit in its state output.
+plant::SignalIndex check_plant(const plant::RobotPlant& robot) {
+  const InputPort* torque = robot.find_input_port("torque");
+  const OutputPort* state = robot.find_output_port("state");
+  const std::vector<std::string> signals = robot.signals();
+  if (torque == nullptr || torque->size() != plant::kTorqueSize || state == nullptr) {
+    throw std::invalid_argument("plant '" + robot.name() +
+                                "' must have an input \"torque\" of size 2 and an output "
+                                "\"state\" (plant/robot_plant.h)");
   }
-  return std::make_unique<plant::SimbodyPlant>(name, p.plant.robot, p.trial.theta0);
-}
-
-void check_plant_ports(const plant::RobotPlant& robot) {
-  try {
-    if (robot.torque_input().size() == plant::kTorqueSize &&
-        robot.state_output().size() == plant::kStateSize) {
-      return;
-    }
-  } catch (const std::invalid_argument&) {
-    // A missing port: the message below says what a plant needs.
+  if (state->size() != static_cast<int>(signals.size())) {
+    throw std::invalid_argument("plant '" + robot.name() + "' names " +
+                                std::to_string(signals.size()) + " signals, but its output " +
+                                "\"state\" has size " + std::to_string(state->size()));
   }
-  throw std::invalid_argument("plant '" + robot.name() +
-                              "' must have an input \"torque\" of size 2 and an output "
-                              "\"state\" of size 10 (plant/robot_plant.h)");
+  return plant::index_signals(robot.name(), signals);
 }
 
 // The push of push.*, when push.torque is not zero.
@@ -64,7 +58,8 @@ void wire_actuation(DiagramBuilder& builder, double period, const OutputPort& ac
   builder.connect(wheel_torques.output_port("y"), robot.torque_input());
 }
 
-// The controller's diagnostic outputs, and one NaN source for all those it does not have.
+// The controller's diagnostic outputs, and one NaN source for all those it does not have (and
+// for a pose signal the plant does not have).
 class Diagnostics {
  public:
   Diagnostics(DiagramBuilder& builder, const Diagram& controller)
@@ -72,6 +67,11 @@ class Diagnostics {
 
   const OutputPort& operator()(const std::string& name) {
     if (const OutputPort* output = controller_.find_output_port(name)) return *output;
+    return none();
+  }
+
+  // The NaN source.
+  const OutputPort& none() {
     if (missing_ == nullptr) {
       missing_ =
           &builder_
@@ -88,10 +88,37 @@ class Diagnostics {
   const OutputPort* missing_ = nullptr;
 };
 
+// The robot's pose (x, y, yaw) from its state; NaN where the plant has no such signal.
+const OutputPort& wire_pose(DiagramBuilder& builder, const plant::RobotPlant& robot,
+                            const plant::SignalIndex& signals, Diagnostics& missing) {
+  const int size = robot.state_output().size();
+  if (signals.has_pose()) {
+    auto& pose = builder.emplace<Selector>("pose", size,
+                                           std::vector<int>{signals.x, signals.y, signals.yaw});
+    builder.connect(robot.state_output(), pose.input_port("u"));
+    return pose.output_port("y");
+  }
+  auto& pose = builder.emplace<Multiplexer>(
+      "pose", std::vector<Multiplexer::Input>{{"x", 1}, {"y", 1}, {"yaw", 1}});
+  for (const auto& [name, index] :
+       {std::pair{"x", signals.x}, std::pair{"y", signals.y}, std::pair{"yaw", signals.yaw}}) {
+    if (index < 0) {
+      builder.connect(missing.none(), pose.input_port(name));
+      continue;
+    }
+    auto& one =
+        builder.emplace<Selector>(std::string("pose_") + name, size, std::vector<int>{index});
+    builder.connect(robot.state_output(), one.input_port("u"));
+    builder.connect(one.output_port("y"), pose.input_port(name));
+  }
+  return pose.output_port("y");
+}
+
 // The multiplexer of telemetry.h's signals.
 const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& measured,
                                  const Diagram& controller, const OutputPort& reward,
-                                 const plant::RobotPlant& robot) {
+                                 const plant::RobotPlant& robot,
+                                 const plant::SignalIndex& signals) {
   const std::vector<std::string> from_controller{
       "supervisor_action", "actor_action", "exploration_action", "action", "omega", "value",
       "td_error",          "temperature"};
@@ -101,12 +128,9 @@ const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& meas
   inputs.push_back({"entropy", 1});
   inputs.push_back({"pose", 3});
   auto& telemetry = builder.emplace<Multiplexer>("telemetry", inputs);
-  auto& pose = builder.emplace<Selector>("pose", plant::kStateSize,
-                                         std::vector<int>{plant::kX, plant::kY, plant::kYaw});
-  builder.connect(robot.state_output(), pose.input_port("u"));
-  builder.connect(pose.output_port("y"), telemetry.input_port("pose"));
-  builder.connect(measured, telemetry.input_port("measured"));
   Diagnostics diagnostic(builder, controller);
+  builder.connect(wire_pose(builder, robot, signals, diagnostic), telemetry.input_port("pose"));
+  builder.connect(measured, telemetry.input_port("measured"));
   for (const auto& name : from_controller) {
     builder.connect(diagnostic(name), telemetry.input_port(name));
   }
@@ -132,11 +156,13 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   const double period = p.trial.period;
   DiagramBuilder builder(std::move(name));
   std::unique_ptr<plant::RobotPlant> made =
-      options.plant ? options.plant("plant", p) : configured_plant("plant", p);
+      options.plant ? options.plant("plant", p) : plant_kind(p.plant.kind).make("plant", p);
+  loop.plant_of_kind = !options.plant;
   if (!made) throw std::invalid_argument("the plant factory returned null");
-  check_plant_ports(*made);
+  loop.signals = check_plant(*made);
   const plant::RobotPlant& robot = builder.add(std::move(made));
-  auto& sensors = builder.emplace<blocks::Sensors>("sensors", p.sensors, period);
+  auto& sensors = builder.emplace<blocks::Sensors>("sensors", p.sensors, period, loop.signals,
+                                                   robot.state_output().size());
   auto& failure = builder.emplace<blocks::FailureDetector>(
       "failure", blocks::FailureDetectorParams{p.trial.failure_angle}, period);
   auto& reward = builder.emplace<blocks::Reward>("reward", p.reward, period);
@@ -162,7 +188,8 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   }
   wire_actuation(builder, period, brain.output_port("action"), robot,
                  options.push ? options.push : configured_push(p));
-  loop.telemetry = &wire_telemetry(builder, measured, brain, reward.output_port("reward"), robot);
+  loop.telemetry =
+      &wire_telemetry(builder, measured, brain, reward.output_port("reward"), robot, loop.signals);
   loop.diagram = builder.build();
   return loop;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// The closed loop a trial runs: any robot plant (plant/robot_plant.h), the sensors, the task
-// (failure detector and sliding-surface reward), any controller (a CbbgController, or a
+// The closed loop a trial runs: any robot plant (plant/robot_plant.h, plant_kinds.h), the sensors,
+// the task (failure detector and sliding-surface reward), any controller (a CbbgController, or a
 // diagram of the user's with a controller's ports), the zero-order hold on its action, and a
 // telemetry multiplexer of what each tick records (telemetry.h).
 //
@@ -18,6 +18,7 @@
 #include "cbbg/blocks/torque_push.h"
 #include "cbbg/diagrams/cbbg_controller.h"
 #include "cbbg/diagrams/controller_ports.h"
+#include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/diagrams/telemetry.h"
 #include "cbbg/framework/diagram.h"
 #include "cbbg/plant/robot_plant.h"
@@ -27,6 +28,8 @@ namespace cbbg::diagrams {
 struct ClosedLoop {
   std::unique_ptr<Diagram> diagram;
   const plant::RobotPlant* plant = nullptr;
+  plant::SignalIndex signals;  // where the loop found each signal it reads in the plant's state
+  bool plant_of_kind = true;   // built by plant.kind's kind, not ClosedLoopOptions::plant
   const OutputPort* telemetry = nullptr;  // kTelemetrySize signals, TelemetryIndex order
   LearnerBlocks learner;
   // What the controller's blocks say gives its features their meaning (normaliser.*, rbf.*
@@ -47,12 +50,9 @@ struct ClosedLoop {
   void start_trial(Context& context, double theta0) const;
 };
 
-// Makes the plant block named `name` from the run's typed parameters.
-using PlantFactory = std::function<std::unique_ptr<plant::RobotPlant>(
-    const std::string& name, const config::Parameters& parameters)>;
-
 struct ClosedLoopOptions {
-  // Empty: plant.kind's (plant::SimbodyPlant or plant::AnalyticPlant).
+  // Empty: plant.kind's (plant_kinds.h). A plant given here is the arm's own: an evaluation
+  // that changes the robot refuses it (the change reaches a plant through its kind).
   PlantFactory plant{};
   // A torque pulse between the hold and the wheels (cbbg eval --push-*); empty: push.*'s,
   // if push.torque is not zero.
@@ -60,10 +60,10 @@ struct ClosedLoopOptions {
 };
 
 // Wires `controller` (any diagram with the ports of controller_ports.h; CbbgController is
-// one) into the
-// closed loop named `name`. Its learners (blocks::Critic, blocks::Actor, blocks::Tropism)
+// one) into the closed loop named `name`. Its learners (blocks::WeightLearner, blocks::Tropism)
 // are found wherever they sit in it. Throws std::invalid_argument when the controller's or
-// the plant's ports do not fit, naming them, or the controller has two learners of a kind.
+// the plant's ports or signals do not fit, naming them, or the controller has two learners
+// of a kind.
 ClosedLoop build_closed_loop(std::string name, const config::Parameters& parameters,
                              std::unique_ptr<Diagram> controller,
                              const ClosedLoopOptions& options = {});

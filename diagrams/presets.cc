@@ -62,6 +62,14 @@ std::vector<std::string> arm_names() {
   for (const auto& row : presets()) {
     if (row.name != kLearntActor) names.push_back(row.name);
   }
+  for (const ArmName& registered : registered_arms()) names.push_back(registered.name);
+  return names;
+}
+
+std::vector<std::string> diagram_names() {
+  std::vector<std::string> names;
+  for (const auto& row : presets()) names.push_back(row.name);
+  for (const ArmName& registered : registered_arms()) names.push_back(registered.name);
   return names;
 }
 

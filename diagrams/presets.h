@@ -23,6 +23,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cbbg/diagrams/arms.h"
 #include "cbbg/diagrams/cbbg_controller.h"
 #include "cbbg/diagrams/closed_loop.h"
 
@@ -39,8 +40,11 @@ inline constexpr const char* kLearntActor = "learnt_actor";
 // Every preset, in the order above: the one list of the diagrams' names, from which `cbbg
 // list`, the help and the checks of `arms` and `experiment` are made.
 const std::vector<Preset>& presets();
-// The presets' names that are arms (every one but learnt_actor), in the table's order.
+// The names of the arms: the presets' (every one but learnt_actor), in the table's order,
+// then the registered arms' (arms.h).
 std::vector<std::string> arm_names();
+// Every diagram `cbbg graph` draws: the presets (learnt_actor too), then the registered arms.
+std::vector<std::string> diagram_names();
 // The preset named `name`; std::invalid_argument listing the presets for another name.
 const Preset& preset(std::string_view name);
 
@@ -48,14 +52,6 @@ const Preset& preset(std::string_view name);
 // exploration and frozen weights, its slots (normaliser, features) kept, an omega slot
 // dropped.
 ControllerOptions learnt_actor(ControllerOptions options);
-
-// What an experiment compares: a name, the closed loop that learns, and the closed loop of
-// its learnt actor alone (empty for an arm without basal ganglia, which learns nothing).
-struct Arm {
-  std::string name;
-  ClosedLoopFactory learner;
-  ClosedLoopFactory policy;
-};
 
 // The closed loop of preset `name` (learnt_actor included), named after it.
 ClosedLoop build_preset(std::string_view name, const config::Parameters& parameters,

@@ -4,6 +4,7 @@
 
 #include "cbbg/blocks/failure_detector.h"
 #include "cbbg/blocks/lqr_supervisor.h"
+#include "cbbg/diagrams/plant_kinds.h"
 
 namespace cbbg::diagrams {
 namespace {
@@ -21,8 +22,9 @@ void check_blocks(const config::Parameters& p) {
   p.supervisor.pd.validate();
   p.supervisor.lqr.validate();
   // Weights without a stabilising gain show only when the gain is computed.
-  if (p.supervisor.kind == "lqr")
-    blocks::LqrSupervisor("supervisor", p.plant.robot, p.supervisor.lqr);
+  if (p.supervisor.kind == "lqr") {
+    blocks::LqrSupervisor("supervisor", planar_linearization(p), p.supervisor.lqr);
+  }
   p.critic.validate();
   p.actor.validate();
   p.tropism.validate();

@@ -6,42 +6,24 @@
 
 #include "cbbg/blocks/measured_signals.h"
 #include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/framework/number_text.h"
 
 namespace cbbg::experiments {
-namespace {
-
-// `value` times the factor of `scale_key`, refused unless it is a finite number > 0.
-double scaled(double value, double factor, const char* key, const char* scale_key) {
-  const double result = value * factor;
-  if (!std::isfinite(result) || result <= 0.0) {
-    throw config::ConfigError(std::string(scale_key) + " (" + format_number(factor) + ") makes " +
-                              key + " " + format_number(result) +
-                              "; the scaled value must be a finite number > 0");
-  }
-  return result;
-}
-
-void scale_body(plant::RobotParams& robot, double factor) {
-  constexpr const char* kKey = "evaluation.body_mass_scale";
-  robot.body_mass = scaled(robot.body_mass, factor, "plant.body_mass", kKey);
-  robot.body_pitch_inertia =
-      scaled(robot.body_pitch_inertia, factor, "plant.body_pitch_inertia", kKey);
-  robot.body_yaw_inertia = scaled(robot.body_yaw_inertia, factor, "plant.body_yaw_inertia", kKey);
-  robot.body_roll_inertia =
-      scaled(robot.body_roll_inertia, factor, "plant.body_roll_inertia", kKey);
-}
-
-}  // namespace
-
 config::Parameters evaluation_parameters(const config::Parameters& training) {
   config::Parameters p = training;
   const config::EvaluationParams& evaluation = p.evaluation;
-  if (evaluation.body_mass_scale != 1.0) scale_body(p.plant.robot, evaluation.body_mass_scale);
-  if (evaluation.com_height_scale != 1.0) {
-    p.plant.robot.com_height = scaled(p.plant.robot.com_height, evaluation.com_height_scale,
-                                      "plant.com_height", "evaluation.com_height_scale");
+  const diagrams::PlantKind& kind = diagrams::plant_kind(p.plant.kind);
+  for (const auto& [change, factor] :
+       {std::pair{diagrams::RobotChange::kBodyMass, evaluation.body_mass_scale},
+        std::pair{diagrams::RobotChange::kComHeight, evaluation.com_height_scale}}) {
+    if (factor == 1.0) continue;
+    if (!kind.change || !kind.change(p, change, factor)) {
+      throw config::ConfigError(std::string(diagrams::change_key(change)) + " is " +
+                                format_number(factor) + ", but plant.kind '" + kind.name +
+                                "' has no parameter it changes; keep it at 1 for this plant");
+    }
   }
   if (evaluation.noise_std != 0.0) {
     for (const int signal : {blocks::kMeasuredThetaB, blocks::kMeasuredThetaBDot}) {
@@ -71,16 +53,17 @@ bool changes_robot(const config::EvaluationParams& evaluation) {
 }
 
 void check_plant_takes_conditions(const config::EvaluationParams& evaluation,
-                                  const plant::RobotPlant& plant) {
-  if (plant.built_from_robot_params()) return;
+                                  const diagrams::ClosedLoop& loop) {
+  if (loop.plant_of_kind) return;
   for (const auto& [key, scale] :
        {std::pair{"evaluation.body_mass_scale", evaluation.body_mass_scale},
         std::pair{"evaluation.com_height_scale", evaluation.com_height_scale}}) {
     if (scale == 1.0) continue;
     throw config::ConfigError(std::string(key) + " is " + format_number(scale) + ", but plant '" +
-                              plant.path() +
-                              "' is not built from plant.* and would be evaluated unchanged; keep "
-                              "it at 1 for this plant, or give the plant the change itself");
+                              loop.plant->path() +
+                              "' is the arm's own, not plant.kind's, and would be evaluated "
+                              "unchanged; keep it at 1, or register the plant as a kind that "
+                              "applies the change (diagrams/plant_kinds.h)");
   }
 }
 

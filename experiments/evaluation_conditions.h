@@ -3,10 +3,11 @@
 // the training parameters with the evaluation.* perturbations applied, so an evaluation can ask
 // how what was learnt copes with a robot it was not trained on.
 //
-//   evaluation.body_mass_scale   plant.body_mass and the body's three inertias times it (a
-//                                denser body of the same shape)
+//   evaluation.body_mass_scale   the two-wheeler's plant.body_mass and the body's three
+//                                inertias times it (a denser body of the same shape); a
+//                                user's plant kind says what it scales (plant_kinds.h)
 //   evaluation.com_height_scale  plant.com_height times it (the load moved; the body's
-//                                inertias about its own centre of mass kept)
+//                                inertias about its own centre of mass kept), or the kind's
 //   evaluation.noise_std         Gaussian noise of this std added, in quadrature, to
 //                                sensors.noise_std's pitch and pitch rate
 //   evaluation.push_torque       when non-zero, push.* becomes this torque from
@@ -19,12 +20,13 @@
 #include <string>
 
 #include "cbbg/config/parameters.h"
-#include "cbbg/plant/robot_plant.h"
+#include "cbbg/diagrams/closed_loop.h"
 
 namespace cbbg::experiments {
 
-// `training` with its evaluation.* perturbations applied. Throws config::ConfigError naming
-// the evaluation key when a scaled value is not a finite number > 0.
+// `training` with its evaluation.* perturbations applied, the robot's through plant.kind's
+// kind. Throws config::ConfigError naming the evaluation key when a scaled value is not a
+// finite number > 0, or the kind has no parameter the key changes.
 config::Parameters evaluation_parameters(const config::Parameters& training);
 
 // Before any work: the robot and the push the evaluation.* keys make of `training` are valid
@@ -36,11 +38,10 @@ void check_evaluation_conditions(const config::Parameters& training);
 // noise and the push reach any plant, through the sensors and the wheels).
 bool changes_robot(const config::EvaluationParams& evaluation);
 
-// Throws config::ConfigError when `evaluation` changes the robot and `plant` is not built from the
-// robot parameters (plant::RobotPlant::built_from_robot_params), which would leave the change
-// unseen.
+// Throws config::ConfigError when `evaluation` changes the robot and `loop`'s plant is the
+// arm's own (ClosedLoopOptions::plant), not plant.kind's, which applies the change.
 void check_plant_takes_conditions(const config::EvaluationParams& evaluation,
-                                  const plant::RobotPlant& plant);
+                                  const diagrams::ClosedLoop& loop);
 
 // The perturbations of `evaluation` in words ("body mass x1.3, pitch noise 0.02"), or "" at
 // their defaults.

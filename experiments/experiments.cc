@@ -223,7 +223,7 @@ ExperimentResults run_per_arm(const char* experiment, ArmProtocol protocol,
   // Before any training: every arm's plant sees the robot its evaluation changes.
   for (const auto& arm : arms) {
     if (changes_robot(p.evaluation)) {
-      check_plant_takes_conditions(p.evaluation, *arm.learner(p).plant);
+      check_plant_takes_conditions(p.evaluation, arm.learner(p));
     }
   }
   // Tasks are arm-major: the arm of a run is found by its name.
@@ -282,7 +282,7 @@ ExperimentResults run_experiment(const config::Parameters& parameters,
   }
   std::vector<diagrams::Arm> arms;
   for (const auto& name : experiment_arms(parameters.run)) {
-    arms.push_back(diagrams::preset_arm(name));
+    arms.push_back(diagrams::named_arm(name));
   }
   if (experiment == "exp3") return run_exp3(parameters, arms, options);
   ExperimentResults results = run_exp1(parameters, arms, options);

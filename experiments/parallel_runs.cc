@@ -15,16 +15,19 @@
 namespace cbbg::experiments {
 namespace {
 
-// Runs one task, its steps rows into the store's file or into run.steps_csv.
+// Runs one task, its steps rows (after their header line) into the store's file or into
+// run.steps_csv.
 void run_task(const config::Parameters& parameters, std::size_t task, const TaskBody& body,
               const TaskStorage* store, SeedRun& run) {
   std::ofstream file;
   std::ostringstream memory;
+  bool header_pending = true;
   TelemetryOptions telemetry{.keep_in_memory = false,
                              .steps = nullptr,
                              .decimation = parameters.log.decimation,
                              .row_prefix = run.arm + "," + std::to_string(run.seed) + ",",
-                             .settle_time = parameters.trial.settle_time};
+                             .settle_time = parameters.trial.settle_time,
+                             .steps_header_pending = &header_pending};
   if (telemetry.decimation > 0) {
     if (store != nullptr) {
       file.open(store->pending_steps_path(task), std::ios::binary | std::ios::trunc);

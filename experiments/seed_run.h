@@ -37,7 +37,8 @@ struct SeedRun {
   // exp3.angles, and the failed trials before it; unset when max_trials came first.
   std::optional<int> trials_to_skill;
   std::optional<int> failures_to_skill;
-  // steps.csv rows (no header), every log.decimation-th tick, when no TaskStorage keeps them.
+  // steps.csv rows after their header line (steps_csv_header), every log.decimation-th tick,
+  // when no TaskStorage keeps them.
   std::string steps_csv;
   // exp1: the learnt actor evaluated from each of evaluation.angles (empty for an arm that
   // learns nothing).

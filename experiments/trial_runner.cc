@@ -3,33 +3,39 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "cbbg/framework/number_text.h"
-#include "cbbg/plant/plant_ports.h"
 
 namespace cbbg::experiments {
 
 using namespace diagrams;  // the telemetry indices
 namespace {
 
-// steps.csv's signal columns, after arm, seed, trial and t.
-constexpr int kStepsColumns[] = {kTelemetryThetaB,
-                                 kTelemetryThetaBDot,
-                                 kTelemetryPhiLeft,
-                                 kTelemetryPhiRight,
-                                 kTelemetrySupervisorAction,
-                                 kTelemetryActorAction,
-                                 kTelemetryExplorationAction,
-                                 kTelemetryAction,
-                                 kTelemetryOmega,
-                                 kTelemetryValue,
-                                 kTelemetryTdError,
-                                 kTelemetryTemperature,
-                                 kTelemetryReward,
-                                 kTelemetryX,
-                                 kTelemetryY,
-                                 kTelemetryYaw};
+struct StepsColumn {
+  int telemetry;
+  const char* name;
+};
+
+// steps.csv's signal columns, after arm, seed, trial and t; then the pose's, where it exists.
+constexpr StepsColumn kStepsColumns[] = {
+    {kTelemetryThetaB, "theta_b"},        {kTelemetryThetaBDot, "dtheta_b"},
+    {kTelemetryPhiLeft, "phi_l"},         {kTelemetryPhiRight, "phi_r"},
+    {kTelemetrySupervisorAction, "a_S"},  {kTelemetryActorAction, "a_A"},
+    {kTelemetryExplorationAction, "a_E"}, {kTelemetryAction, "a"},
+    {kTelemetryOmega, "omega"},           {kTelemetryValue, "V"},
+    {kTelemetryTdError, "delta"},         {kTelemetryTemperature, "T"},
+    {kTelemetryReward, "reward"}};
+
+// The columns of rows from a plant with `signals`.
+std::vector<StepsColumn> steps_columns(const plant::SignalIndex& signals) {
+  std::vector<StepsColumn> columns(std::begin(kStepsColumns), std::end(kStepsColumns));
+  if (signals.x >= 0) columns.push_back({kTelemetryX, "x"});
+  if (signals.y >= 0) columns.push_back({kTelemetryY, "y"});
+  if (signals.yaw >= 0) columns.push_back({kTelemetryYaw, "yaw"});
+  return columns;
+}
 
 // Writes `value` in its shortest round-trip form, without allocating.
 void write_number(std::ostream& out, double value) {
@@ -52,9 +58,10 @@ const char* to_string(TrialStatus status) {
   return "unknown";
 }
 
-const char* steps_csv_header() {
-  return "arm,seed,trial,t,theta_b,dtheta_b,phi_l,phi_r,a_S,a_A,a_E,a,omega,V,delta,T,reward,x,y,"
-         "yaw\n";
+std::string steps_csv_header(const plant::SignalIndex& signals) {
+  std::string header = "arm,seed,trial,t";
+  for (const StepsColumn& column : steps_columns(signals)) header += std::string(",") + column.name;
+  return header + "\n";
 }
 
 TrialRunner::TrialRunner(const diagrams::ClosedLoop& loop, std::uint64_t seed, double period,
@@ -66,6 +73,14 @@ TrialRunner::TrialRunner(const diagrams::ClosedLoop& loop, std::uint64_t seed, d
       options_(std::move(telemetry)),
       checks_value_(loop.learner.critic != nullptr && loop.outputs("value")),
       checks_temperature_(loop.learner.tropism != nullptr && loop.outputs("temperature")) {
+  for (const StepsColumn& column : steps_columns(loop.signals)) {
+    steps_columns_.push_back(column.telemetry);
+  }
+  if (options_.steps != nullptr && options_.steps_header_pending != nullptr &&
+      *options_.steps_header_pending) {
+    *options_.steps << steps_csv_header(loop.signals);
+    *options_.steps_header_pending = false;
+  }
   telemetry_->keep_in_memory(options_.keep_in_memory);
   telemetry_->set_sink([this](double time, const double* values) { record(time, values); });
 }
@@ -77,7 +92,7 @@ void TrialRunner::record(double time, const double* values) {
     std::ostream& out = *options_.steps;
     out.write(trial_prefix_.data(), static_cast<std::streamsize>(trial_prefix_.size()));
     write_number(out, time);
-    for (const int column : kStepsColumns) {
+    for (const int column : steps_columns_) {
       out.put(',');
       write_number(out, values[column]);
     }
@@ -151,7 +166,7 @@ TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
     const SimulationStatus status = simulator_.advance_to(duration);
     outcome.status = status.terminated ? TrialStatus::kFailed : TrialStatus::kSuccess;
     outcome.final_theta =
-        loop_->diagram->eval_output(context, loop_->plant->state_output())[plant::kThetaB];
+        loop_->diagram->eval_output(context, loop_->plant->state_output())[loop_->signals.pitch];
   } catch (const SimulationError& error) {
     outcome.status = TrialStatus::kDiverged;
     outcome.message = error.what();

@@ -8,9 +8,11 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "cbbg/diagrams/closed_loop.h"
 #include "cbbg/framework/simulator.h"
+#include "cbbg/plant/plant_signals.h"
 
 namespace cbbg::experiments {
 
@@ -42,10 +44,14 @@ struct TelemetryOptions {
   std::string row_prefix;
   // Where a trial's oscillation statistics start (trial.settle_time), s.
   double settle_time = 5.0;
+  // When set and true, the runner first writes its rows' header line to `steps` (and sets it
+  // false, so the runners of one task that share the stream write one header).
+  bool* steps_header_pending = nullptr;
 };
 
-// The header of steps.csv.
-const char* steps_csv_header();
+// The header line of steps.csv rows from a plant with `signals`: arm, seed, trial, t, the
+// signals every loop has, then x, y and yaw where the plant has them.
+std::string steps_csv_header(const plant::SignalIndex& signals = plant::two_wheeler_index());
 
 class TrialRunner {
  public:
@@ -74,6 +80,7 @@ class TrialRunner {
   SignalLog* telemetry_;
   double period_;
   TelemetryOptions options_;
+  std::vector<int> steps_columns_;  // the telemetry's columns in steps.csv, after t
   // Whether the controller outputs a learner's value and temperature to check (a user's
   // controller may keep them inside).
   bool checks_value_;

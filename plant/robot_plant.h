@@ -1,26 +1,29 @@
 #pragma once
 // The interface every robot plant offers the closed loop (diagrams/closed_loop.h): torque in,
-// state out, and a reset to an initial pitch at the start of each trial. The Simbody and the
-// analytic plant implement it; so can a user's own plant.
+// named signals out, and a reset to an initial pitch at the start of each trial. The Simbody
+// and the analytic plant implement it; so can a user's own plant (a cart-pole, say).
 
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/plant/plant_ports.h"
+#include "cbbg/plant/plant_signals.h"
 
 namespace cbbg::plant {
 
-/// RobotPlant: a two-wheeled robot as a block.
+/// RobotPlant: a robot balanced through wheel torque, as a block.
 ///
-/// | port   | dir | size | meaning                                                    |
-/// |--------|-----|------|------------------------------------------------------------|
-/// | torque | in  | 2    | tau_l, tau_r: motor torques body -> wheel, N m             |
-/// | state  | out | 10   | the state of plant_ports.h (pitch first, then wheels, pose) |
+/// | port   | dir | size | meaning                                                       |
+/// |--------|-----|------|---------------------------------------------------------------|
+/// | torque | in  | 2    | tau_l, tau_r: motor torques body -> wheel, N m                |
+/// | state  | out | n    | the signals signals() names (two-wheeler: plant_ports.h's 10) |
 ///
-/// A subclass declares both ports with these names and sizes (the closed loop checks them)
-/// and implements reset.
+/// A subclass declares both ports with these names, names its state output's signals when
+/// they are not the two-wheeler's (plant_signals.h says which the loop needs), and implements
+/// reset. The closed loop checks the ports and the names.
 class RobotPlant : public Block {
  public:
   const InputPort& torque_input() const { return input_port("torque"); }
@@ -30,11 +33,8 @@ class RobotPlant : public Block {
   // context of the root diagram). Only rewrites this block's state.
   virtual void reset(Context& context, double initial_pitch) const = 0;
 
-  // Whether the plant is built from the robot parameters (plant.*, robot_params.h), as the
-  // Simbody and the analytic plant are. An evaluation on a changed robot
-  // (evaluation.body_mass_scale, evaluation.com_height_scale) changes those parameters, so
-  // it reaches only such a plant, and refuses a plant that would not see it.
-  virtual bool built_from_robot_params() const { return false; }
+  // The name of each entry of the state output, in order: the two-wheeler's by default.
+  virtual std::vector<std::string> signals() const { return two_wheeler_signals(); }
 
   // The wheels' radius, m: what turns wheel angles into distance (a trial's mean forward
   // speed). NaN, the default, for a plant that does not say; those figures are then NaN.

@@ -49,7 +49,6 @@ class SimbodyPlant final : public RobotPlant {
   // Puts the robot at theta_b = initial_pitch (trial.theta0), everything else zero. Only
   // rewrites this block's state in `context` (a context of the root diagram).
   void reset(Context& context, double initial_pitch) const override;
-  bool built_from_robot_params() const override { return true; }
   double wheel_radius() const override { return params_.wheel_radius; }
   // Sets the whole state from a vector in the output layout (plant_ports.h); the yaw rate
   // is not read: it follows from the wheel rates.

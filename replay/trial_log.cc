@@ -32,11 +32,12 @@ class CsvFile {
     for (std::size_t i = 0; i < names.size(); ++i) columns_[std::string(names[i])] = i;
   }
 
+  bool has(const std::string& name) const { return columns_.contains(name); }
+
   std::size_t column(const std::string& name) const {
     const auto found = columns_.find(name);
     if (found == columns_.end()) {
-      throw InputError(path_.string() + ": no column '" + name +
-                       "' (a replay needs it; runs logged by an older cbbg lack the pose)");
+      throw InputError(path_.string() + ": no column '" + name + "' (a replay needs it)");
     }
     return found->second;
   }
@@ -119,8 +120,14 @@ std::vector<TrialLog> read_trial_logs(const std::filesystem::path& steps_csv,
   const std::size_t arm = file.column("arm");
   const std::size_t seed = file.column("seed");
   const std::size_t trial = file.column("trial");
+  // A pose signal the plant does not have (or an older cbbg did not log) is absent: 0.
+  constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
   std::size_t columns[TrialLog::kColumns];
-  for (int c = 0; c < TrialLog::kColumns; ++c) columns[c] = file.column(TrialLog::kColumnNames[c]);
+  for (int c = 0; c < TrialLog::kColumns; ++c) {
+    const std::string name = TrialLog::kColumnNames[c];
+    const bool pose = name == "x" || name == "y" || name == "yaw";
+    columns[c] = pose && !file.has(name) ? kAbsent : file.column(name);
+  }
 
   std::vector<TrialLog> logs(wanted.size());
   std::map<Key, std::size_t> index;
@@ -134,7 +141,8 @@ std::vector<TrialLog> read_trial_logs(const std::filesystem::path& steps_csv,
     if (found == index.end()) continue;
     TrialLog& log = logs[found->second];
     for (int c = 0; c < TrialLog::kColumns; ++c) {
-      log.column(c).push_back(file.number(fields[columns[c]], TrialLog::kColumnNames[c]));
+      log.column(c).push_back(
+          columns[c] == kAbsent ? 0.0 : file.number(fields[columns[c]], TrialLog::kColumnNames[c]));
     }
   }
   for (TrialLog& log : logs) {

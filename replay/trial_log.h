@@ -31,7 +31,9 @@ struct TrialEntry {
   std::string status;  // success | failed | diverged
 };
 
-// One trial's ticks, from steps.csv. Ticks end at the last one whose pose is finite.
+// One trial's ticks, from steps.csv. Ticks end at the last one whose pose is finite. A pose
+// signal the plant lacks (x, y or yaw; a cart-pole has no y nor yaw) is 0: the replay shows
+// the robot where it has no pose, and moving only as far as it has one.
 struct TrialLog {
   TrialEntry entry;
   std::vector<double> t, theta_b, phi_l, phi_r, x, y, yaw, a;
@@ -54,9 +56,8 @@ struct TrialLog {
 std::vector<TrialEntry> read_trial_entries(const std::filesystem::path& trials_csv);
 
 // The ticks of each wanted trial from steps.csv, in one pass, in the order of `wanted`.
-// Throws InputError naming the file: missing, without a column the page needs (a log written
-// before the pose was recorded lacks x, y and yaw), malformed, or without rows for a wanted
-// trial.
+// Throws InputError naming the file: missing, without a column the page needs (x, y and yaw
+// may be absent), malformed, or without rows for a wanted trial.
 std::vector<TrialLog> read_trial_logs(const std::filesystem::path& steps_csv,
                                       const std::vector<TrialEntry>& wanted);
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs the built project into a scratch prefix, builds examples/ against it as a user's
-# own project would (find_package(cbbg)), and runs both examples: the framework alone, and a
+# own project would (find_package(cbbg)), and runs the examples: the framework alone; a
 # user's supervisor through experiment 1 against the cbbg preset, writing a results directory,
-# then sweeping the supervisor's own keys over a 2 x 2 grid.
+# then sweeping the supervisor's own keys over a 2 x 2 grid; and the cart-pole project through
+# every command (test_cartpole_project.sh).
 # Also runs the installed `cbbg` command, which must find its plotting script by itself.
 #   test_find_package.sh BUILD_DIR
 set -euo pipefail
@@ -103,4 +104,6 @@ if strings "$scratch/prefix/bin/cbbg" | grep -q "$root"; then
   echo "the installed cbbg names the source tree $root" >&2
   exit 1
 fi
+# A whole project of the user's (examples/cartpole) through every command, as installed.
+"$root/scripts/test_cartpole_project.sh" "$scratch/example/cartpole" "$scratch/cartpole"
 echo "find_package example: ok"

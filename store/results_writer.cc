@@ -156,6 +156,59 @@ std::string paired_json(const ExperimentResults& results, const config::Config& 
   return json.str();
 }
 
+// A task's steps rows start with their header line; a task stored by the previous release,
+// without one, has the two-wheeler's. The first line of task `task`'s rows, "" without rows.
+std::string first_steps_line(const SeedRun& run, const TaskStore* store, std::size_t task) {
+  if (store == nullptr) return run.steps_csv.substr(0, run.steps_csv.find('\n'));
+  std::ifstream rows(store->steps_path(task), std::ios::binary);
+  if (!rows) throw std::runtime_error("missing '" + store->steps_path(task).string() + "'");
+  std::string line;
+  std::getline(rows, line);
+  return line;
+}
+
+bool is_steps_header(const std::string& line) { return line.starts_with("arm,seed,trial,t,"); }
+
+// The header line the rows after `first_line` have, "" for no rows.
+std::string steps_header_of(const std::string& first_line) {
+  if (first_line.empty()) return "";
+  return is_steps_header(first_line) ? first_line + "\n" : steps_csv_header();
+}
+
+// steps.csv: one header, then every task's rows in task order. Throws std::runtime_error
+// when two tasks' plants give different signals (their rows would not share columns).
+void write_steps_csv(const ExperimentResults& results, const std::filesystem::path& path,
+                     const TaskStore* store) {
+  std::vector<bool> has_header(results.runs.size());
+  std::string header;
+  for (std::size_t task = 0; task < results.runs.size(); ++task) {
+    const std::string first = first_steps_line(results.runs[task], store, task);
+    has_header[task] = is_steps_header(first);
+    const std::string own = steps_header_of(first);
+    if (header.empty()) header = own;
+    if (!own.empty() && own != header) {
+      throw std::runtime_error(
+          "cannot write '" + path.string() + "': the arms' plants give different signals (" +
+          header.substr(0, header.size() - 1) + " against " + own.substr(0, own.size() - 1) + ")");
+    }
+  }
+  std::ofstream steps(path, std::ios::binary | std::ios::trunc);
+  steps << (header.empty() ? steps_csv_header() : header);
+  for (std::size_t task = 0; task < results.runs.size(); ++task) {
+    if (store == nullptr) {
+      const std::string& text = results.runs[task].steps_csv;
+      const std::size_t skip = has_header[task] ? text.find('\n') + 1 : 0;
+      steps.write(text.data() + skip, static_cast<std::streamsize>(text.size() - skip));
+      continue;
+    }
+    std::ifstream rows(store->steps_path(task), std::ios::binary);
+    std::string skipped;
+    if (has_header[task]) std::getline(rows, skipped);
+    if (rows.peek() != std::ifstream::traits_type::eof()) steps << rows.rdbuf();
+  }
+  if (!steps) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
 }  // namespace
 
 double median(std::vector<int> values) {
@@ -275,19 +328,7 @@ void write_result_files(const ExperimentResults& results, const config::Config& 
     }
   }
   if (config::read_parameters(config).log.decimation <= 0) return;
-  const std::filesystem::path path = directory / "steps.csv";
-  std::ofstream steps(path, std::ios::binary | std::ios::trunc);
-  steps << steps_csv_header();
-  for (std::size_t task = 0; task < results.runs.size(); ++task) {
-    if (store == nullptr) {
-      steps << results.runs[task].steps_csv;
-      continue;
-    }
-    std::ifstream rows(store->steps_path(task), std::ios::binary);
-    if (!rows) throw std::runtime_error("missing '" + store->steps_path(task).string() + "'");
-    if (rows.peek() != std::ifstream::traits_type::eof()) steps << rows.rdbuf();
-  }
-  if (!steps) throw std::runtime_error("cannot write '" + path.string() + "'");
+  write_steps_csv(results, directory / "steps.csv", store);
 }
 
 }  // namespace cbbg::store

@@ -15,7 +15,6 @@
 namespace cbbg::store {
 
 using experiments::EvaluationRecord;
-using experiments::steps_csv_header;
 using experiments::to_string;
 using experiments::TrialOutcome;
 using experiments::TrialRecord;

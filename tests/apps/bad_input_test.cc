@@ -125,7 +125,7 @@ std::vector<BadInput> bad_inputs() {
       {quick + "--config {S}/malformed.yaml", "malformed YAML at line"},
       {quick + "--config {S}/list.yaml", "a config is a map of keys"},
       // graph.
-      {"graph --diagram nope -o {S}/x.dot", "--diagram: unknown diagram 'nope'; the presets are"},
+      {"graph --diagram nope -o {S}/x.dot", "--diagram: unknown diagram 'nope'; the diagrams are"},
       {graph + "-o {S}/x.pdf", "unknown extension '.pdf'"},
       {graph + "-o {S}/mine", "-o '{S}/mine' is a directory; give a file path"},
       {graph + "-o {S}/none/x.dot", "the directory '{S}/none' does not exist"},

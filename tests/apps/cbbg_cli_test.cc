@@ -214,7 +214,7 @@ TEST_F(CbbgCommand, GraphDrawsANamedDiagram) {
   const Outcome unknown = cbbg("graph --diagram nope -o " + dot.string());
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_EQ(unknown.output,
-            "cbbg: error: --diagram: unknown diagram 'nope'; the presets are cbbg, cbbg_weighted, "
+            "cbbg: error: --diagram: unknown diagram 'nope'; the diagrams are cbbg, cbbg_weighted, "
             "bg_only, cb_only, pd_only, learnt_actor\n");
   const Outcome format = cbbg("graph --diagram cbbg -o " + (scratch_ / "x.pdf").string());
   EXPECT_EQ(format.exit_code, 2);

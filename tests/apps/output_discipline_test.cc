@@ -109,7 +109,8 @@ TEST_F(OutputDiscipline, PlotDrawsNoPresetDiagramForAUsersArm) {
   }
   const Outcome plotted = run("plot " + out);
   EXPECT_EQ(plotted.exit_code, 0) << plotted.output;
-  EXPECT_THAT(plotted.output, HasSubstr("no diagram.svg: arm 'my_arm' is not a preset"));
+  EXPECT_THAT(plotted.output,
+              HasSubstr("no diagram.svg: arm 'my_arm' is not a preset nor registered"));
   EXPECT_FALSE(fs::exists(out + "/figures/diagram.svg"));
   EXPECT_TRUE(fs::exists(out + "/figures/replay_my_arm.html"));
 }

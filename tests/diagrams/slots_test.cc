@@ -51,16 +51,16 @@ class PendulumRobot final : public plant::RobotPlant {
       const double tau = context.input(torque).sum();
       d << x[1], 24.5 * x[0] - tau / 2.0, x[3], tau;
     });
-    declare_output_port("state", plant::kStateSize,
+    // Its own signals, in its own order: one wheel, no pose.
+    declare_output_port("state", 4,
                         [](const BlockContext& context, VectorRef y) {
                           const auto x = context.continuous_state();
-                          y.setZero();
-                          y[plant::kThetaB] = x[0];
-                          y[plant::kThetaBDot] = x[1];
-                          y[plant::kPhiLeft] = y[plant::kPhiRight] = x[2];
-                          y[plant::kPhiLeftDot] = y[plant::kPhiRightDot] = x[3];
+                          y << x[2], x[0], x[3], x[1];
                         },
                         {});
+  }
+  std::vector<std::string> signals() const override {
+    return {"wheel", "pitch", "wheel_rate", "pitch_rate"};
   }
   void reset(Context& context, double initial_pitch) const override {
     auto x = context.continuous_state(*this);
@@ -184,6 +184,15 @@ TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
   EXPECT_TRUE(std::isnan(balanced.mean_forward_speed));
   EXPECT_EQ(build_preset("pd_only", config::read_parameters(quick_config())).plant->wheel_radius(),
             0.15);
+  // Its signals by name: the loop measures its pitch and wheel, and it has no pose.
+  auto context = supervised.diagram->create_context(1);
+  supervised.start_trial(*context, 0.05);
+  const auto telemetry = supervised.diagram->eval_output(*context, *supervised.telemetry);
+  EXPECT_EQ(telemetry[kTelemetryThetaB], 0.05);
+  EXPECT_EQ(telemetry[kTelemetryPhiLeft], 0.0);
+  EXPECT_TRUE(std::isnan(telemetry[kTelemetryX]) && std::isnan(telemetry[kTelemetryYaw]));
+  EXPECT_EQ(experiments::steps_csv_header(supervised.signals),
+            "arm,seed,trial,t,theta_b,dtheta_b,phi_l,phi_r,a_S,a_A,a_E,a,omega,V,delta,T,reward\n");
   const experiments::ExperimentResults results = experiments::run_exp1(
       config::read_parameters(quick_config()), {preset_arm("bg_only", pendulum)});
   EXPECT_EQ(results.runs.size(), 2u);
@@ -195,9 +204,9 @@ TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
   EXPECT_THAT(
       [&] { experiments::run_exp1(heavier, {preset_arm("bg_only", pendulum)}); },
       ThrowsMessage<config::ConfigError>(
-          "evaluation.body_mass_scale is 1.3, but plant 'bg_only/plant' is not built from "
-          "plant.* and would be evaluated unchanged; keep it at 1 for this plant, or give the "
-          "plant the change itself"));
+          "evaluation.body_mass_scale is 1.3, but plant 'bg_only/plant' is the arm's own, not "
+          "plant.kind's, and would be evaluated unchanged; keep it at 1, or register the plant "
+          "as a kind that applies the change (diagrams/plant_kinds.h)"));
   EXPECT_NO_THROW(experiments::run_exp1(heavier, {preset_arm("pd_only")}));  // the robot's plant
 }
 

@@ -184,7 +184,53 @@ TEST(ClosedLoop, RefusesAPlantWithoutTheRobotPorts) {
       },
       ThrowsMessage<std::invalid_argument>(
           "plant 'plant' must have an input \"torque\" of size 2 and an output \"state\" "
-          "of size 10 (plant/robot_plant.h)"));
+          "(plant/robot_plant.h)"));
+}
+
+// A plant whose state output has `size` entries named `names`.
+class NamedSignalsPlant final : public plant::RobotPlant {
+ public:
+  NamedSignalsPlant(std::string name, int size, std::vector<std::string> names)
+      : RobotPlant(std::move(name)), names_(std::move(names)) {
+    declare_input_port("torque", plant::kTorqueSize);
+    declare_output_port("state", size, [](const BlockContext&, VectorRef y) { y.setZero(); }, {});
+  }
+  std::vector<std::string> signals() const override { return names_; }
+  void reset(Context&, double) const override {}
+
+ private:
+  std::vector<std::string> names_;
+};
+
+TEST(ClosedLoop, RefusesAPlantWhoseSignalsDoNotFit) {
+  auto loop_with = [](int size, std::vector<std::string> names) {
+    ClosedLoopOptions options;
+    options.plant = [=](const std::string& name, const config::Parameters&) {
+      return std::make_unique<NamedSignalsPlant>(name, size, names);
+    };
+    closed_loop_factory("named", ControllerOptions{},
+                        options)(config::read_parameters(analytic_config()));
+  };
+  EXPECT_THAT(
+      [&] {
+        loop_with(3, {"pitch", "pitch_rate"});
+      },
+      ThrowsMessage<std::invalid_argument>(
+          "plant 'plant' names 2 signals, but its output \"state\" has size 3"));
+  EXPECT_THAT(
+      [&] {
+        loop_with(3, {"pitch", "pitch_rate", "wheel"});
+      },
+      ThrowsMessage<std::invalid_argument>(
+          "plant 'plant' has no signal 'wheel_left_rate' (or 'wheel_rate') in its state output; "
+          "a plant names pitch, pitch_rate, wheel_left, wheel_right, wheel_left_rate and "
+          "wheel_right_rate (or wheel and wheel_rate) (plant/plant_signals.h)"));
+  EXPECT_THAT(
+      [&] {
+        loop_with(4, {"pitch", "pitch_rate", "wheel", "pitch"});
+      },
+      ThrowsMessage<std::invalid_argument>("plant 'plant' names its signal 'pitch' twice"));
+  EXPECT_NO_THROW(loop_with(5, {"wheel_rate", "pitch", "extra", "wheel", "pitch_rate"}));
 }
 
 TEST(ParamsFromConfig, PlantSimbodyIntegratorChoosesTheIntegrator) {

@@ -69,12 +69,24 @@ TEST_F(TrialLogs, AMalformedRowIsNamedByFileAndLine) {
                                         ": cannot be read (is this a results directory?)"));
 }
 
-TEST_F(TrialLogs, StepsWithoutThePoseAreRefusedByColumn) {
-  const fs::path path = write("steps.csv", "arm,seed,trial,t,theta_b,phi_l,phi_r,a\n");
+TEST_F(TrialLogs, StepsWithoutAColumnThePageNeedsAreRefusedByColumn) {
+  const fs::path path = write("steps.csv", "arm,seed,trial,t,theta_b,phi_l,a\n");
   EXPECT_THAT([&] { read_trial_logs(path, {entry("cbbg", 1, 1, "success")}); },
-              ThrowsMessage<InputError>(path.string() +
-                                        ": no column 'x' (a replay needs it; runs logged by an "
-                                        "older cbbg lack the pose)"));
+              ThrowsMessage<InputError>(path.string() + ": no column 'phi_r' (a replay needs it)"));
+}
+
+TEST_F(TrialLogs, APoseSignalThePlantLacksIsZero) {
+  // A cart-pole's log: x, but no y nor yaw.
+  const fs::path path = write("steps.csv",
+                              "arm,seed,trial,t,theta_b,phi_l,phi_r,a,x\n"
+                              "cbbg,1,1,0,0.1,0,0,0.5,0.25\n"
+                              "cbbg,1,1,0.01,0.09,0.1,0.1,0.4,0.5\n");
+  const std::vector<TrialLog> logs = read_trial_logs(path, {entry("cbbg", 1, 1, "success")});
+  ASSERT_EQ(logs.size(), 1U);
+  EXPECT_EQ(logs[0].x, (std::vector<double>{0.25, 0.5}));
+  EXPECT_EQ(logs[0].y, (std::vector<double>{0.0, 0.0}));
+  EXPECT_EQ(logs[0].yaw, (std::vector<double>{0.0, 0.0}));
+  EXPECT_EQ(logs[0].theta_b, (std::vector<double>{0.1, 0.09}));
 }
 
 TEST_F(TrialLogs, ReadsTheWantedTrialsInTheWantedOrder) {

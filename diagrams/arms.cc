@@ -1,0 +1,70 @@
+#include "cbbg/diagrams/arms.h"
+
+#include <functional>
+#include <stdexcept>
+
+#include "cbbg/config/config.h"
+#include "cbbg/diagrams/presets.h"
+
+namespace cbbg::diagrams {
+namespace {
+
+struct RegisteredArm {
+  ArmName name;
+  std::function<Arm(const ClosedLoopOptions&)> make;
+};
+
+std::vector<RegisteredArm>& registry() {
+  static std::vector<RegisteredArm> arms;
+  return arms;
+}
+
+void add(std::string name, std::string description,
+         std::function<Arm(const ClosedLoopOptions&)> make) {
+  if (!config::is_name(name)) {
+    throw std::invalid_argument("arm '" + name + "': a name is letters, digits, '_', '-' and '.'");
+  }
+  for (const std::string& taken : arm_names()) {
+    if (taken == name) throw std::invalid_argument("arm '" + name + "' is registered twice");
+  }
+  if (name == kLearntActor) {
+    throw std::invalid_argument("arm '" + name + "': the name is the learnt actor's");
+  }
+  registry().push_back({{std::move(name), std::move(description)}, std::move(make)});
+}
+
+}  // namespace
+
+void register_arm(std::string name, std::string description, ControllerOptions options) {
+  options.validate();
+  add(name, std::move(description),
+      [name, options](const ClosedLoopOptions& loop) { return make_arm(name, options, loop); });
+}
+
+void register_arm(std::string name, std::string description, ControllerFactory learner,
+                  ControllerFactory policy) {
+  if (!learner) throw std::invalid_argument("arm '" + name + "' has no controller factory");
+  add(name, std::move(description), [name, learner, policy](const ClosedLoopOptions& loop) {
+    return make_arm(name, learner, policy, loop);
+  });
+}
+
+std::vector<ArmName> registered_arms() {
+  std::vector<ArmName> names;
+  for (const RegisteredArm& arm : registry()) names.push_back(arm.name);
+  return names;
+}
+
+Arm named_arm(std::string_view name, const ClosedLoopOptions& loop) {
+  for (const RegisteredArm& arm : registry()) {
+    if (arm.name.name == name) return arm.make(loop);
+  }
+  for (const std::string& preset_name : arm_names()) {
+    if (preset_name == name) return preset_arm(name, loop);
+  }
+  std::string known;
+  for (const std::string& arm : arm_names()) known += (known.empty() ? "" : ", ") + arm;
+  throw std::invalid_argument("unknown arm '" + std::string(name) + "'; the arms are " + known);
+}
+
+}  // namespace cbbg::diagrams

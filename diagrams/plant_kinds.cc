@@ -1,0 +1,104 @@
+#include "cbbg/diagrams/plant_kinds.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "cbbg/config/declared_keys.h"
+#include "cbbg/framework/number_text.h"
+#include "cbbg/plant/analytic_plant.h"
+#include "cbbg/plant/simbody_plant.h"
+
+namespace cbbg::diagrams {
+namespace {
+
+// `value` times `factor`, refused unless it is a finite number > 0.
+double scaled(double value, double factor, const char* key, RobotChange change) {
+  const double result = value * factor;
+  if (!std::isfinite(result) || result <= 0.0) {
+    throw config::ConfigError(std::string(change_key(change)) + " (" + format_number(factor) +
+                              ") makes " + key + " " + format_number(result) +
+                              "; the scaled value must be a finite number > 0");
+  }
+  return result;
+}
+
+// The two-wheeler's plant.*: a denser body of the same shape, or its centre of mass moved.
+bool change_two_wheeler(config::Parameters& p, RobotChange change, double factor) {
+  plant::RobotParams& robot = p.plant.robot;
+  if (change == RobotChange::kComHeight) {
+    robot.com_height = scaled(robot.com_height, factor, "plant.com_height", change);
+    return true;
+  }
+  robot.body_mass = scaled(robot.body_mass, factor, "plant.body_mass", change);
+  robot.body_pitch_inertia =
+      scaled(robot.body_pitch_inertia, factor, "plant.body_pitch_inertia", change);
+  robot.body_yaw_inertia = scaled(robot.body_yaw_inertia, factor, "plant.body_yaw_inertia", change);
+  robot.body_roll_inertia =
+      scaled(robot.body_roll_inertia, factor, "plant.body_roll_inertia", change);
+  return true;
+}
+
+plant::LinearModel linearize_two_wheeler(const config::Parameters& p) {
+  return plant::linearize_planar_upright(p.plant.robot);
+}
+
+std::vector<PlantKind>& kinds() {
+  static std::vector<PlantKind> all{
+      {"simbody", "3-D multibody, reference",
+       [](const std::string& name, const config::Parameters& p) {
+         return std::make_unique<plant::SimbodyPlant>(name, p.plant.robot, p.trial.theta0);
+       },
+       change_two_wheeler, linearize_two_wheeler},
+      {"analytic", "fast",
+       [](const std::string& name, const config::Parameters& p) {
+         return std::make_unique<plant::AnalyticPlant>(name, p.plant.robot, p.trial.theta0);
+       },
+       change_two_wheeler, linearize_two_wheeler}};
+  return all;
+}
+
+}  // namespace
+
+const char* change_key(RobotChange change) {
+  return change == RobotChange::kBodyMass ? "evaluation.body_mass_scale"
+                                          : "evaluation.com_height_scale";
+}
+
+void register_plant_kind(PlantKind kind) {
+  if (!config::is_name(kind.name)) {
+    throw std::invalid_argument("plant kind '" + kind.name +
+                                "': a name is letters, digits, '_', '-' and '.'");
+  }
+  for (const PlantKind& existing : kinds()) {
+    if (existing.name == kind.name) {
+      throw std::invalid_argument("plant kind '" + kind.name + "' is registered twice");
+    }
+  }
+  if (!kind.make) throw std::invalid_argument("plant kind '" + kind.name + "' has no factory");
+  config::register_choice("plant.kind", kind.name, kind.description);
+  kinds().push_back(std::move(kind));
+}
+
+const std::vector<PlantKind>& plant_kinds() { return kinds(); }
+
+const PlantKind& plant_kind(std::string_view name) {
+  std::string names;
+  for (const PlantKind& kind : kinds()) {
+    if (kind.name == name) return kind;
+    names += (names.empty() ? "" : ", ") + kind.name;
+  }
+  throw std::invalid_argument("no plant kind '" + std::string(name) + "' (there are " + names +
+                              ")");
+}
+
+plant::LinearModel planar_linearization(const config::Parameters& parameters) {
+  const PlantKind& kind = plant_kind(parameters.plant.kind);
+  if (!kind.linearize) {
+    throw std::invalid_argument("plant.kind '" + kind.name +
+                                "' offers no linearisation, which a model-based supervisor "
+                                "(supervisor.kind: lqr) designs from");
+  }
+  return kind.linearize(parameters);
+}
+
+}  // namespace cbbg::diagrams

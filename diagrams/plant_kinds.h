@@ -1,0 +1,67 @@
+#pragma once
+// The kinds of plant `plant.kind` may name: the Simbody and the analytic two-wheeler, and any
+// a user registers. A kind says how to build its plant from the run's parameters, how an
+// evaluation's changed robot (evaluation.body_mass_scale, evaluation.com_height_scale) reaches
+// its parameters, and, if it can, its linearisation for model-based supervisors (LQR).
+//
+//   diagrams::register_plant_kind({
+//       .name = "cartpole", .description = "a pole on a cart driven through its wheel",
+//       .make = [](const std::string& name, const config::Parameters& p) {
+//         return std::make_unique<CartPole>(name, config::read_section<CartPoleParams>(p.own,
+//         "cartpole"));
+//       },
+//       .change = ...,     // scales cartpole.pole_mass for kBodyMass; false for the rest
+//       .linearize = ...,  // optional
+//   });                    // before any Config is made: plant.kind=cartpole is then allowed
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cbbg/config/parameters.h"
+#include "cbbg/plant/linearization.h"
+#include "cbbg/plant/robot_plant.h"
+
+namespace cbbg::diagrams {
+
+// Makes the plant block named `name` from the run's typed parameters.
+using PlantFactory = std::function<std::unique_ptr<plant::RobotPlant>(
+    const std::string& name, const config::Parameters& parameters)>;
+
+// A change of the robot an evaluation asks for, by the factor of its key.
+enum class RobotChange {
+  kBodyMass,   // evaluation.body_mass_scale: a denser body of the same shape
+  kComHeight,  // evaluation.com_height_scale: the load moved up or down
+};
+// "evaluation.body_mass_scale", "evaluation.com_height_scale".
+const char* change_key(RobotChange change);
+
+struct PlantKind {
+  std::string name{};         // plant.kind's word
+  std::string description{};  // for `cbbg list`
+  PlantFactory make{};
+  // Applies `change` by `factor` to the kind's own parameters in `parameters`; false when the
+  // plant has no such parameter (the evaluation is then refused, never silently unchanged).
+  // Throws config::ConfigError for a factor that makes a parameter invalid. Empty: no change.
+  std::function<bool(config::Parameters& parameters, RobotChange change, double factor)> change{};
+  // The plant linearised upright at rest with both wheels driven alike: x = (theta_b, phi,
+  // theta_b', phi'), phi the mean wheel angle, u = the wheel torque. Empty: not offered.
+  std::function<plant::LinearModel(const config::Parameters& parameters)> linearize{};
+};
+
+// Adds `kind` (its name a config::is_name word, new). Register before making any Config, as
+// for a section: plant.kind allows its name from then on. Throws std::invalid_argument.
+void register_plant_kind(PlantKind kind);
+
+// simbody, analytic, then the registered kinds.
+const std::vector<PlantKind>& plant_kinds();
+// The kind named `name`; std::invalid_argument listing the kinds for another name.
+const PlantKind& plant_kind(std::string_view name);
+
+// The linearisation plant.kind's kind offers (PlantKind::linearize) for the run's parameters.
+// Throws std::invalid_argument naming the kind when it offers none.
+plant::LinearModel planar_linearization(const config::Parameters& parameters);
+
+}  // namespace cbbg::diagrams

@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# The cart-pole example (examples/cartpole/), built against the installed package, through
+# every command a user's project needs, with no edit of the library: its plant, supervisor,
+# tile-coded features and arms (a constant-omega and a critic-frozen one) in exp1 and exp3
+# over seeds; a resume after a kill giving the same bytes; a 2-point sweep over its own key;
+# `eval` of its saved weights; `plot` and `replay` of its results; an LQR supervisor designed
+# from the cart-pole's own linearisation.
+#   test_cartpole_project.sh CARTPOLE_PROGRAM SCRATCH_DIR
+set -euo pipefail
+program="$1"
+scratch="$2"
+mkdir -p "$scratch"
+cd "$scratch"
+fail() { echo "cartpole project: $*" >&2; exit 1; }
+quick=(--set plant.kind=cartpole --set seeds=3 --set trial.duration=5 --set max_trials=30
+       --set log.decimation=10 --jobs 2)
+arms='arms=[tiles,tiles_omega_half,tiles_critic_frozen,lean_pd]'
+
+# exp1 over 3 seeds, the user's arms against the user's supervisor alone.
+"$program" run "${quick[@]}" --set "$arms" --out exp1 >exp1.log
+for file in config.yaml summary.json trials.csv evaluation.csv steps.csv figures/failures.png \
+  figures/pitch_tiles_omega_half.png figures/diagram.svg weights/tiles_critic_frozen_seed3.txt; do
+  test -s "exp1/$file" || fail "exp1 has no $file"
+done
+grep -q "^  kind: cartpole$" exp1/config.yaml || fail "config.yaml does not record plant.kind"
+grep -q "^arms: \[tiles, tiles_omega_half, tiles_critic_frozen, lean_pd\]$" exp1/config.yaml ||
+  fail "config.yaml does not record the arms that ran"
+# The cart-pole has x but no y nor yaw: steps.csv has the columns it has.
+head -1 exp1/steps.csv | grep -q ",reward,x$" || fail "steps.csv header: $(head -1 exp1/steps.csv)"
+# Its features are 4 tilings of 6 x 6 tiles: 144 weights, filed with the tiles' layout.
+grep -q "^tiles.tilings 4$" exp1/weights/tiles_seed1.txt || fail "the weights lack the tiles' layout"
+grep -q "^features 144$" exp1/weights/tiles_seed1.txt || fail "the weights are not the tiles' 144"
+
+# exp3 over 2 seeds.
+"$program" run "${quick[@]}" --experiment exp3 --set seeds=2 --set max_trials=10 \
+  --set 'arms=[tiles,tiles_critic_frozen]' --no-figures --out exp3 >exp3.log
+grep -q '"trials_to_skill"' exp3/summary.json || fail "exp3 has no trials to skill"
+
+# Killed after its third task is recorded, resumed: the same bytes as a run never killed.
+"$program" run "${quick[@]}" --set "$arms" --no-figures --out reference >/dev/null
+set +e
+CBBG_FAULT_AT=task:record@3 "$program" run "${quick[@]}" --set "$arms" --no-figures \
+  --out resumed >/dev/null 2>&1
+status=$?
+set -e
+[[ $status == 86 ]] || fail "the killed run exited $status, not at the fault point"
+[[ ! -e resumed ]] || fail "a killed run published its results"
+"$program" run --resume resumed --jobs 2 >/dev/null
+diff -r reference resumed >/dev/null || fail "the resumed run differs from the reference"
+if find . -name '*cbbg-tmp*' | grep -q .; then fail "a temporary file was left"; fi
+
+# A 2-point sweep over the cart-pole's own key.
+"$program" run "${quick[@]}" --set seeds=2 --set 'arms=[tiles,tiles_omega_half]' \
+  --grid cartpole.pole_length=0.4,0.6 --out sweep >/dev/null
+[[ $(grep -c "^00[12],0\.[46],tiles" sweep/sweep.csv) == 4 ]] ||
+  fail "sweep.csv has not its 2 points x 2 arms: $(cat sweep/sweep.csv)"
+
+# eval of its saved weights, rebuilt with the tiles; a changed pole mass reaches the plant,
+# a CoM height change (which the cart-pole does not offer) and other tiles are refused.
+"$program" eval --set plant.kind=cartpole --load-weights exp1/weights/tiles_seed1.txt \
+  --set evaluation.body_mass_scale=1.5 >eval.log
+grep -q "tiles, seed 1.*on the cartpole plant" eval.log || fail "eval: $(cat eval.log)"
+expect_refusal() {  # expected message, then the command
+  local expected="$1"
+  shift
+  set +e
+  local output
+  output="$("$@" 2>&1)"
+  local code=$?
+  set -e
+  [[ $code == 2 && "$output" == *"$expected"* ]] || fail "expected exit 2 and '$expected'; got $code: $output"
+}
+expect_refusal "evaluation.com_height_scale is 0.5, but plant.kind 'cartpole' has no parameter it changes" \
+  "$program" eval --set plant.kind=cartpole --set evaluation.com_height_scale=0.5 \
+  --load-weights exp1/weights/tiles_seed1.txt
+expect_refusal "was made for tiles.per_axis 6; this diagram has tiles.per_axis 5" \
+  "$program" eval --set plant.kind=cartpole --set tiles.per_axis=5 \
+  --load-weights exp1/weights/tiles_seed1.txt
+
+# plot draws its own arms again; replay shows a trial of the cart-pole (no y, no yaw).
+rm exp1/figures/pitch_tiles_omega_half.png
+"$program" plot exp1 >/dev/null
+test -s exp1/figures/pitch_tiles_omega_half.png || fail "plot did not draw tiles_omega_half"
+"$program" replay exp1 --arm tiles_critic_frozen -o replay.html >/dev/null
+test -s replay.html || fail "no replay page"
+
+# An LQR supervisor designed from the plant in the loop: the cart-pole's linearisation.
+"$program" run "${quick[@]}" --set supervisor.kind=lqr --set 'arms=[pd_only]' --no-figures \
+  --out lqr >/dev/null
+grep -q '"num_succeeded": 3' lqr/summary.json || fail "the cart-pole's LQR did not balance it"
+echo "cartpole project: every command worked"
