@@ -49,6 +49,9 @@ namespace cbbg::app {
 
 int run_cli(int argc, char** argv, const std::filesystem::path& share) {
   set_share_directory(share);
+  if (argc > 0 && argv[0] != nullptr && *argv[0] != '\0') {
+    set_program_name(std::filesystem::path(argv[0]).filename().string());
+  }
   CLI::App app{"cbbg: cerebellum-basal-ganglia motor learning on a two-wheeled robot"};
   app.require_subcommand(0, 1);
   std::string log_level = "info";
@@ -162,8 +165,8 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
     // Command-line misuse, like a bad config: one line, exit 2.
-    return report_error(
-        kUserError, std::string(error.what()) + " (cbbg --help lists the commands and options)");
+    return report_error(kUserError, std::string(error.what()) + " (" + program_name() +
+                                        " --help lists the commands and options)");
   }
   if (jobs_option->count() > 0 && !parse_jobs(jobs, run.jobs)) {
     return report_error(kUserError, "--jobs must be an integer from 1 to 1024; got '" + jobs + "'");

@@ -1,5 +1,6 @@
 #pragma once
-// How every subcommand reports what went wrong: one line "cbbg: error: ..." on stderr, exit 2
+// How every subcommand reports what went wrong: one line "cbbg: error: ..." on stderr (a
+// user's program's own name for "cbbg"), exit 2
 // for what the user typed (config::ConfigError), 1 for what the machine refused.
 
 #include <exception>
@@ -13,6 +14,10 @@ inline constexpr int kMachineError = 1;
 
 // Prints the line and returns `exit_code`.
 int report_error(int exit_code, const std::string& message);
+
+// The name the lines start with: "cbbg", or a user's program's own (run_cli sets it).
+const std::string& program_name();
+void set_program_name(std::string name);
 
 // The exception's message in the project's words: a filesystem error names its path and the
 // system's reason ("cannot use 'x': Read-only file system"), not the library's text.

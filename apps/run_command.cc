@@ -288,8 +288,9 @@ int run_command(const RunOptions& options) {
     report_error(kMachineError, describe(error));
     std::error_code ignored;
     if (std::filesystem::exists(run.directory->work(), ignored)) {
-      std::cerr << "cbbg: the finished seeds are kept in '" << run.directory->work().string()
-                << "'; continue with --resume " << run.directory->target().string() << "\n";
+      std::cerr << program_name() << ": the finished seeds are kept in '"
+                << run.directory->work().string() << "'; continue with --resume "
+                << run.directory->target().string() << "\n";
     }
     return kMachineError;
   }

@@ -196,8 +196,8 @@ int sweep_command(const RunOptions& options, const config::Config& base,
   } catch (const std::exception& error) {
     directory->record_failure(describe(error));
     report_error(kMachineError, describe(error));
-    std::cerr << "cbbg: the finished tasks are kept in '" << directory->work().string()
-              << "'; run the same command again to continue\n";
+    std::cerr << program_name() << ": the finished tasks are kept in '"
+              << directory->work().string() << "'; run the same command again to continue\n";
     return kMachineError;
   }
   if (options.shard) {

@@ -68,7 +68,9 @@ expect_refusal() {  # expected message, then the command
   output="$("$@" 2>&1)"
   local code=$?
   set -e
-  [[ $code == 2 && "$output" == *"$expected"* ]] || fail "expected exit 2 and '$expected'; got $code: $output"
+  # One line, under the program's own name.
+  [[ $code == 2 && "$output" == "cartpole: error: "*"$expected"* && $(wc -l <<<"$output") == 1 ]] ||
+    fail "expected exit 2 and one line 'cartpole: error: ...$expected'; got $code: $output"
 }
 expect_refusal "evaluation.com_height_scale is 0.5, but plant.kind 'cartpole' has no parameter it changes" \
   "$program" eval --set plant.kind=cartpole --set evaluation.com_height_scale=0.5 \
