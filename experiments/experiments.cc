@@ -5,17 +5,10 @@
 #include "cbbg/config/parameters.h"
 #include "cbbg/experiments/evaluation_conditions.h"
 #include "cbbg/experiments/policy_evaluation.h"
-#include "cbbg/experiments/run_names.h"
+#include "cbbg/experiments/protocol_kit.h"
 
 namespace cbbg::experiments {
 namespace {
-
-// `parameters` with the root seed `seed`: an evaluation after a seed's training uses its
-// streams.
-config::Parameters with_seed(config::Parameters parameters, long long seed) {
-  parameters.run.seed = seed;
-  return parameters;
-}
 
 // k1 of `trial` under the annealing schedule (steps sorted by from_trial, the first at 1).
 double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial) {
@@ -24,70 +17,6 @@ double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial
     if (step.from_trial <= trial) k1 = step.k1;
   }
   return k1;
-}
-
-// What the run leaves to be tested, from each evaluation angle under the evaluation's
-// conditions (evaluation_conditions.h), with the run's seed: the learnt actor alone (no
-// exploration, no supervisor, frozen), as `cbbg eval` runs it, or the closed loop of an arm
-// that learns nothing (pd_only: the supervisor alone) as it is.
-void evaluate_run(const config::Parameters& training, const diagrams::Arm& arm, bool learns,
-                  SeedRun& run) {
-  const config::Parameters p = with_seed(evaluation_parameters(training), run.seed);
-  EvaluationSettings settings;
-  settings.angles = p.evaluation.angles;
-  PolicyEvaluation evaluation;
-  if (!learns) {
-    evaluation = evaluate_controller(p, arm.learner, settings);
-  } else if (arm.policy && run.weights) {
-    evaluation = evaluate_policy(p, arm.policy, *run.weights, settings);
-  }
-  for (const AngleEvaluation& angle : evaluation.angles) {
-    run.evaluation.push_back({angle.theta0, angle.runs.front()});
-  }
-}
-
-WeightsProvenance provenance(const config::Parameters& p, const SeedRun& run) {
-  return {run.arm, run.seed, static_cast<long long>(run.trials.size()), p.plant.kind};
-}
-
-// Keeps what was learnt, unless it stopped being finite (a diverged learner): then the run
-// says so instead, and nothing evaluates or saves it.
-void keep_weights(LearntWeights weights, SeedRun& run) {
-  if (weights.actor.allFinite() && weights.critic.allFinite()) {
-    run.weights = std::move(weights);
-  } else {
-    run.weights_diverged = true;
-  }
-}
-
-// The end of an exp1 or exp3 run: what was learnt is kept and the run evaluated.
-void finish_run(const config::Parameters& p, const diagrams::Arm& arm,
-                const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run) {
-  if (loop.learner.learns()) {
-    keep_weights(learnt_weights(loop, context, provenance(p, run)), run);
-  }
-  evaluate_run(p, arm, loop.learner.learns(), run);
-}
-
-// One seed of an arm: its learning closed loop and the runner of its trials, started from
-// the initial weights when there are some.
-struct SeedLoop {
-  SeedLoop(const config::Parameters& p, const diagrams::Arm& arm, const TelemetryOptions& telemetry,
-           const LearntWeights* initial_weights, long long seed)
-      : loop(arm.learner(p)),
-        runner(loop, static_cast<std::uint64_t>(seed), p.trial.period, telemetry) {
-    if (initial_weights != nullptr && loop.learner.learns()) {
-      load_learnt_weights(loop, runner.context(), *initial_weights);
-    }
-  }
-  diagrams::ClosedLoop loop;
-  TrialRunner runner;  // runs `loop`: declared after it
-};
-
-// The next trial of exp1's protocol (exp3's too): from trial.theta0, k1 fixed.
-TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial) {
-  return {trial, p.tropism.k1, runner.run_trial(p.trial.theta0, p.trial.duration, trial),
-          std::nullopt};
 }
 
 void run_until_success(const config::Parameters& p, const diagrams::Arm& arm,
@@ -193,54 +122,6 @@ void run_annealing(const config::Parameters& p, const diagrams::Arm& coordinated
   keep_weights(learnt_weights(later_loop, later.context(), provenance(p, run)), run);
 }
 
-std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {
-  std::vector<std::string> names;
-  for (const auto& arm : arms) names.push_back(arm.name);
-  return names;
-}
-
-// One seed of one arm under a protocol (exp1's, exp3's).
-using ArmProtocol = void (*)(const config::Parameters&, const diagrams::Arm&,
-                             const TelemetryOptions&, const LearntWeights*, SeedRun&);
-
-// `protocol` for every (arm, seed), the arms' names unique.
-ExperimentResults run_per_arm(const char* experiment, ArmProtocol protocol,
-                              const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
-                              const ExperimentOptions& options) {
-  for (std::size_t a = 0; a < arms.size(); ++a) {
-    if (!config::is_name(arms[a].name)) {
-      throw std::invalid_argument(std::string(experiment) + ": arm name '" + arms[a].name +
-                                  "' is not a name (" + config::kNameRule +
-                                  "): it names files and columns of the results");
-    }
-    for (std::size_t b = 0; b < a; ++b) {
-      if (arms[a].name == arms[b].name) {
-        throw std::invalid_argument(std::string(experiment) + ": two arms are named '" +
-                                    arms[a].name + "'; an arm's name must be unique");
-      }
-    }
-  }
-  // Before any training: every arm's plant sees the robot its evaluation changes.
-  for (const auto& arm : arms) {
-    if (changes_robot(p.evaluation)) {
-      check_plant_takes_conditions(p.evaluation, arm.learner(p));
-    }
-  }
-  // Tasks are arm-major: the arm of a run is found by its name.
-  auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
-    for (const auto& arm : arms) {
-      if (arm.name == run.arm) {
-        protocol(p, arm, telemetry, options.initial_weights, run);
-        return;
-      }
-    }
-  };
-  ExperimentResults results = run_tasks(p, names_of(arms), body, options);
-  results.experiment = experiment;
-  results.compares_arms = true;
-  return results;
-}
-
 }  // namespace
 
 ExperimentResults run_exp1(const config::Parameters& parameters,
@@ -262,31 +143,6 @@ ExperimentResults run_exp2(const config::Parameters& parameters, const diagrams:
   };
   ExperimentResults results = run_tasks(parameters, {coordinated.name}, body, options);
   results.experiment = "exp2";
-  return results;
-}
-
-std::vector<std::string> experiment_arms(const config::RunParams& run) {
-  const std::string& experiment = run.experiment;
-  if (experiment == "exp1" || experiment == "exp3") return run.arms;
-  if (experiment == "exp2") return {"cbbg"};
-  return {experiment};
-}
-
-ExperimentResults run_experiment(const config::Parameters& parameters,
-                                 const ExperimentOptions& options) {
-  check_run_names(parameters.run);
-  const std::string& experiment = parameters.run.experiment;
-  if (experiment == "exp2") {
-    return run_exp2(parameters, diagrams::preset_arm("cbbg"), diagrams::preset_arm("bg_only"),
-                    options);
-  }
-  std::vector<diagrams::Arm> arms;
-  for (const auto& name : experiment_arms(parameters.run)) {
-    arms.push_back(diagrams::named_arm(name));
-  }
-  if (experiment == "exp3") return run_exp3(parameters, arms, options);
-  ExperimentResults results = run_exp1(parameters, arms, options);
-  results.experiment = experiment;
   return results;
 }
 

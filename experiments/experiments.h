@@ -25,6 +25,8 @@
 #include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/presets.h"
 #include "cbbg/experiments/parallel_runs.h"
+#include "cbbg/experiments/protocol_kit.h"
+#include "cbbg/experiments/protocols.h"
 #include "cbbg/experiments/seed_run.h"
 
 namespace cbbg::experiments {
@@ -48,13 +50,5 @@ ExperimentResults run_exp3(const config::Parameters& parameters,
 // `coordinated.name`.
 ExperimentResults run_exp2(const config::Parameters& parameters, const diagrams::Arm& coordinated,
                            const diagrams::Arm& operant, const ExperimentOptions& options = {});
-
-// The preset names `run.experiment` runs: exp1's and exp3's `arms`, exp2's cbbg, or the one
-// preset `experiment` names.
-std::vector<std::string> experiment_arms(const config::RunParams& run);
-
-// The experiment the parameters name, over the named presets (what `cbbg run` runs).
-ExperimentResults run_experiment(const config::Parameters& parameters,
-                                 const ExperimentOptions& options = {});
 
 }  // namespace cbbg::experiments

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/protocols.h"
 
 namespace cbbg::experiments {
 namespace {
@@ -19,14 +20,9 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
-const std::vector<ProtocolName>& protocol_names() {
-  static const std::vector<ProtocolName> names{
-      {"exp1", "per arm and seed: trials until the first success (paper Fig. 11)"},
-      {"exp2", "one cbbg trial, then omega = 1 with the annealing schedule (paper Figs. 12-14)"},
-      {"exp3",
-       "per arm and seed: trials until the learnt actor alone balances from every "
-       "exp3.angles (skill acquisition)"},
-  };
+std::vector<ProtocolName> protocol_names() {
+  std::vector<ProtocolName> names;
+  for (const Protocol& protocol : protocols()) names.push_back({protocol.name, protocol.meaning});
   return names;
 }
 

@@ -15,8 +15,8 @@ struct ProtocolName {
   std::string name;
   std::string meaning;
 };
-// exp1, exp2, exp3: the one list of the protocols' names.
-const std::vector<ProtocolName>& protocol_names();
+// exp1, exp2, exp3 and the registered protocols (protocols.h), with their meanings.
+std::vector<ProtocolName> protocol_names();
 
 // Before any work: `experiment` names a protocol or an arm preset, and every entry of `arms`
 // an arm preset (diagrams::arm_names). Each throws config::ConfigError naming the key, what

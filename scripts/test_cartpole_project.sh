@@ -3,6 +3,7 @@
 # every command a user's project needs, with no edit of the library: its plant, supervisor,
 # tile-coded features and arms (a constant-omega and a critic-frozen one) in exp1 and exp3
 # over seeds; a resume after a kill giving the same bytes; a 2-point sweep over its own key;
+# its own protocol (a curriculum), resumed and swept too;
 # `eval` of its saved weights; `plot` and `replay` of its results; an LQR supervisor designed
 # from the cart-pole's own linearisation.
 #   test_cartpole_project.sh CARTPOLE_PROGRAM SCRATCH_DIR
@@ -85,6 +86,27 @@ rm exp1/figures/pitch_tiles_omega_half.png
 test -s exp1/figures/pitch_tiles_omega_half.png || fail "plot did not draw tiles_omega_half"
 "$program" replay exp1 --arm tiles_critic_frozen -o replay.html >/dev/null
 test -s replay.html || fail "no replay page"
+
+# Its own protocol, a curriculum, through the same commands: a results directory, a kill
+# and resume to the same bytes, a sweep over the protocol's own key.
+curriculum=(--experiment curriculum --set 'arms=[tiles,lean_pd]' --no-figures)
+listed="$("$program" list)"
+grep -q "^  curriculum " <<<"$listed" || fail "list does not show the curriculum"
+"$program" run "${quick[@]}" "${curriculum[@]}" --out curriculum >/dev/null
+grep -q '"experiment": "curriculum"' curriculum/summary.json || fail "no curriculum results"
+[[ $(grep -c "^tiles,1," curriculum/trials.csv) -ge 2 ]] || fail "the curriculum ran one trial"
+set +e
+CBBG_FAULT_AT=task:record@2 "$program" run "${quick[@]}" "${curriculum[@]}" \
+  --out curriculum_resumed >/dev/null 2>&1
+status=$?
+set -e
+[[ $status == 86 ]] || fail "the killed curriculum exited $status, not at the fault point"
+"$program" run --resume curriculum_resumed --jobs 2 >/dev/null
+diff -r curriculum curriculum_resumed >/dev/null || fail "the resumed curriculum differs"
+"$program" run "${quick[@]}" "${curriculum[@]}" --set seeds=2 \
+  --grid curriculum.first_angle=0.03,0.08 --out curriculum_sweep >/dev/null
+[[ $(grep -c "^00[12],0\.0[38],tiles" curriculum_sweep/sweep.csv) == 2 ]] ||
+  fail "the curriculum's sweep.csv: $(cat curriculum_sweep/sweep.csv)"
 
 # An LQR supervisor designed from the plant in the loop: the cart-pole's linearisation.
 "$program" run "${quick[@]}" --set supervisor.kind=lqr --set 'arms=[pd_only]' --no-figures \

@@ -1,10 +1,12 @@
 // A user's own project on the installed cbbg, with no edit of the library: a cart-pole plant,
-// a supervisor and tile-coded features of its own, and three arms over them. The program is
+// a supervisor and tile-coded features of its own, four arms over them, and a protocol of
+// its own (a curriculum). The program is
 // the `cbbg` command line with these registered, so every command knows them:
 //
 //   cartpole run --set plant.kind=cartpole --set arms=[tiles,tiles_omega_half] --out R
 //   cartpole run ... --grid cartpole.pole_length=0.4,0.6     (a sweep over its own key)
 //   cartpole eval --set plant.kind=cartpole --load-weights R/weights/tiles_seed1.txt
+//   cartpole run --experiment curriculum --set plant.kind=cartpole --out C
 //   cartpole plot R                                          (its arms in the figures)
 //   cartpole list                                            (its keys, kind and arms)
 
@@ -13,6 +15,7 @@
 #include <cbbg/diagrams/presets.h>
 
 #include "cart_pole.h"
+#include "curriculum.h"
 #include "lean_supervisor.h"
 #include "tile_coding.h"
 
@@ -51,6 +54,7 @@ int main(int argc, char** argv) {
   cartpole::register_cart_pole();
   cartpole::register_lean_pd();
   cartpole::register_tiles();
+  cartpole::register_curriculum();
   register_arms();
   return cbbg::app::run_cli(argc, argv);
 }

@@ -1,0 +1,124 @@
+#include "cbbg/experiments/protocol_kit.h"
+
+#include <stdexcept>
+
+#include "cbbg/config/config.h"
+#include "cbbg/experiments/evaluation_conditions.h"
+#include "cbbg/experiments/policy_evaluation.h"
+
+namespace cbbg::experiments {
+namespace {
+
+// What the run leaves to be tested, from each evaluation angle under the evaluation's
+// conditions (evaluation_conditions.h), with the run's seed: the learnt actor alone (no
+// exploration, no supervisor, frozen), as `cbbg eval` runs it, or the closed loop of an arm
+// that learns nothing (pd_only: the supervisor alone) as it is.
+void evaluate_run(const config::Parameters& training, const diagrams::Arm& arm, bool learns,
+                  SeedRun& run) {
+  const config::Parameters p = with_seed(evaluation_parameters(training), run.seed);
+  EvaluationSettings settings;
+  settings.angles = p.evaluation.angles;
+  PolicyEvaluation evaluation;
+  if (!learns) {
+    evaluation = evaluate_controller(p, arm.learner, settings);
+  } else if (arm.policy && run.weights) {
+    evaluation = evaluate_policy(p, arm.policy, *run.weights, settings);
+  }
+  for (const AngleEvaluation& angle : evaluation.angles) {
+    run.evaluation.push_back({angle.theta0, angle.runs.front()});
+  }
+}
+
+std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {
+  std::vector<std::string> names;
+  for (const auto& arm : arms) names.push_back(arm.name);
+  return names;
+}
+
+}  // namespace
+
+// `parameters` with the root seed `seed`: an evaluation after a seed's training uses its
+// streams.
+config::Parameters with_seed(config::Parameters parameters, long long seed) {
+  parameters.run.seed = seed;
+  return parameters;
+}
+
+WeightsProvenance provenance(const config::Parameters& p, const SeedRun& run) {
+  return {run.arm, run.seed, static_cast<long long>(run.trials.size()), p.plant.kind};
+}
+
+// Keeps what was learnt, unless it stopped being finite (a diverged learner): then the run
+// says so instead, and nothing evaluates or saves it.
+void keep_weights(LearntWeights weights, SeedRun& run) {
+  if (weights.actor.allFinite() && weights.critic.allFinite()) {
+    run.weights = std::move(weights);
+  } else {
+    run.weights_diverged = true;
+  }
+}
+
+void finish_run(const config::Parameters& p, const diagrams::Arm& arm,
+                const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run) {
+  if (loop.learner.learns()) {
+    keep_weights(learnt_weights(loop, context, provenance(p, run)), run);
+  }
+  evaluate_run(p, arm, loop.learner.learns(), run);
+}
+
+SeedLoop::SeedLoop(const config::Parameters& p, const diagrams::Arm& arm,
+                   const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
+                   long long seed)
+    : loop(arm.learner(p)),
+      runner(loop, static_cast<std::uint64_t>(seed), p.trial.period, telemetry) {
+  if (initial_weights != nullptr && loop.learner.learns()) {
+    load_learnt_weights(loop, runner.context(), *initial_weights);
+  }
+}
+
+TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial) {
+  return next_trial(p, runner, trial, p.trial.theta0);
+}
+
+TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial, double theta0) {
+  return {trial, p.tropism.k1, runner.run_trial(theta0, p.trial.duration, trial), std::nullopt};
+}
+
+ExperimentResults run_per_arm(const std::string& experiment, const PerSeed& protocol,
+                              const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+                              const ExperimentOptions& options) {
+  for (std::size_t a = 0; a < arms.size(); ++a) {
+    if (!config::is_name(arms[a].name)) {
+      throw std::invalid_argument(experiment + ": arm name '" + arms[a].name + "' is not a name (" +
+                                  config::kNameRule +
+                                  "): it names files and columns of the results");
+    }
+    for (std::size_t b = 0; b < a; ++b) {
+      if (arms[a].name == arms[b].name) {
+        throw std::invalid_argument(experiment + ": two arms are named '" + arms[a].name +
+                                    "'; an arm's name must be unique");
+      }
+    }
+  }
+  // Before any training: every arm's plant sees the robot its evaluation changes.
+  for (const auto& arm : arms) {
+    if (changes_robot(p.evaluation)) {
+      check_plant_takes_conditions(p.evaluation, arm.learner(p));
+    }
+  }
+  // Tasks are arm-major: the arm of a run is found by its name.
+  auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
+    for (const auto& arm : arms) {
+      if (arm.name == run.arm) {
+        protocol(p, arm, telemetry, options.initial_weights, run);
+        return;
+      }
+    }
+  };
+  ExperimentResults results = run_tasks(p, names_of(arms), body, options);
+  results.experiment = experiment;
+  results.compares_arms = true;
+  return results;
+}
+
+}  // namespace cbbg::experiments

@@ -1,0 +1,63 @@
+#pragma once
+// What a protocol is made of: one seed of an arm (its learning loop and the runner of its
+// trials), the next trial from trial.theta0, the end of a run (weights kept, the run
+// evaluated), and the run of a per-seed body for every (arm, seed). exp1 and exp3 are written
+// with these; so is a protocol of the user's (protocols.h registers it by name).
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/arms.h"
+#include "cbbg/experiments/learnt_weights.h"
+#include "cbbg/experiments/parallel_runs.h"
+#include "cbbg/experiments/seed_run.h"
+#include "cbbg/experiments/trial_runner.h"
+
+namespace cbbg::experiments {
+
+// `parameters` with the root seed `seed`: an evaluation after a seed's training uses its
+// streams.
+config::Parameters with_seed(config::Parameters parameters, long long seed);
+
+// Where a run's weights come from: its arm, seed, trials and plant.kind.
+WeightsProvenance provenance(const config::Parameters& p, const SeedRun& run);
+
+// Keeps what was learnt, unless it stopped being finite (a diverged learner): then the run
+// says so instead, and nothing evaluates or saves it.
+void keep_weights(LearntWeights weights, SeedRun& run);
+
+// The end of a run: what was learnt is kept, and the run evaluated from each of
+// evaluation.angles under the evaluation's conditions (its learnt actor alone, or the closed
+// loop of an arm that learns nothing as it is).
+void finish_run(const config::Parameters& p, const diagrams::Arm& arm,
+                const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run);
+
+// One seed of an arm: its learning closed loop and the runner of its trials, started from
+// the initial weights when there are some.
+struct SeedLoop {
+  SeedLoop(const config::Parameters& p, const diagrams::Arm& arm, const TelemetryOptions& telemetry,
+           const LearntWeights* initial_weights, long long seed);
+  diagrams::ClosedLoop loop;
+  TrialRunner runner;  // runs `loop`: declared after it
+};
+
+// The next trial from trial.theta0 (or `theta0`), for trial.duration, k1 fixed.
+TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial);
+TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial, double theta0);
+
+// One seed of one arm under a protocol: fills `run` (its arm and seed set).
+using PerSeed =
+    std::function<void(const config::Parameters&, const diagrams::Arm&, const TelemetryOptions&,
+                       const LearntWeights* initial_weights, SeedRun&)>;
+
+// `per_seed` for every (arm, seed), in options.jobs threads, the results named `protocol`.
+// Throws std::invalid_argument before any work for an arm name that is not a name or is
+// given twice, and config::ConfigError for an evaluation an arm's plant would not see.
+ExperimentResults run_per_arm(const std::string& protocol, const PerSeed& per_seed,
+                              const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+                              const ExperimentOptions& options);
+
+}  // namespace cbbg::experiments

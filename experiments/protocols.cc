@@ -1,0 +1,83 @@
+#include "cbbg/experiments/protocols.h"
+
+#include <stdexcept>
+
+#include "cbbg/experiments/experiments.h"
+#include "cbbg/experiments/run_names.h"
+
+namespace cbbg::experiments {
+namespace {
+
+std::vector<Protocol>& registry() {
+  static std::vector<Protocol> all{
+      {"exp1",
+       "per arm and seed: trials until the first success (paper Fig. 11)",
+       {},
+       [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+          const ExperimentOptions& options) { return run_exp1(p, arms, options); }},
+      {"exp2", "one cbbg trial, then omega = 1 with the annealing schedule (paper Figs. 12-14)",
+       [](const config::RunParams&) { return std::vector<std::string>{"cbbg"}; },
+       [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+          const ExperimentOptions& options) {
+         return run_exp2(p, arms.front(), diagrams::named_arm("bg_only"), options);
+       }},
+      {"exp3",
+       "per arm and seed: trials until the learnt actor alone balances from every "
+       "exp3.angles (skill acquisition)",
+       {},
+       [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+          const ExperimentOptions& options) { return run_exp3(p, arms, options); }},
+  };
+  return all;
+}
+
+}  // namespace
+
+void register_protocol(Protocol protocol) {
+  if (!config::is_name(protocol.name)) {
+    throw std::invalid_argument("protocol '" + protocol.name +
+                                "': a name is letters, digits, '_', '-' and '.'");
+  }
+  if (find_protocol(protocol.name) != nullptr) {
+    throw std::invalid_argument("protocol '" + protocol.name + "' is registered twice");
+  }
+  for (const std::string& arm : diagrams::arm_names()) {
+    if (arm == protocol.name) {
+      throw std::invalid_argument("protocol '" + protocol.name + "': an arm has that name");
+    }
+  }
+  if (!protocol.run) throw std::invalid_argument("protocol '" + protocol.name + "' has no run");
+  registry().push_back(std::move(protocol));
+}
+
+const std::vector<Protocol>& protocols() { return registry(); }
+
+const Protocol* find_protocol(std::string_view name) {
+  for (const Protocol& protocol : registry()) {
+    if (protocol.name == name) return &protocol;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> experiment_arms(const config::RunParams& run) {
+  const Protocol* protocol = find_protocol(run.experiment);
+  if (protocol == nullptr) return {run.experiment};
+  return protocol->arms ? protocol->arms(run) : run.arms;
+}
+
+ExperimentResults run_experiment(const config::Parameters& parameters,
+                                 const ExperimentOptions& options) {
+  check_run_names(parameters.run);
+  std::vector<diagrams::Arm> arms;
+  for (const auto& name : experiment_arms(parameters.run)) {
+    arms.push_back(diagrams::named_arm(name));
+  }
+  if (const Protocol* protocol = find_protocol(parameters.run.experiment)) {
+    return protocol->run(parameters, arms, options);
+  }
+  ExperimentResults results = run_exp1(parameters, arms, options);  // one arm alone
+  results.experiment = parameters.run.experiment;
+  return results;
+}
+
+}  // namespace cbbg::experiments

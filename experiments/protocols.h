@@ -1,0 +1,54 @@
+#pragma once
+// The protocols `experiment` may name: exp1, exp2, exp3, and any a user registers, each a
+// name, what it measures, the arms it runs and how it runs them. `cbbg run` (and a user's
+// program through apps/cli.h) runs whichever the config names; a protocol of the user's is
+// written with protocol_kit.h and gets the results directory, resume, sweeps and merge.
+//
+//   experiments::register_protocol({
+//       .name = "curriculum",
+//       .meaning = "trials from 0.05 rad until a success, then from trial.theta0",
+//       .run = [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+//                 const experiments::ExperimentOptions& options) {
+//         return experiments::run_per_arm("curriculum", curriculum_seed, p, arms, options);
+//       }});
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/arms.h"
+#include "cbbg/experiments/parallel_runs.h"
+#include "cbbg/experiments/seed_run.h"
+
+namespace cbbg::experiments {
+
+struct Protocol {
+  std::string name{};
+  std::string meaning{};  // one line, for `cbbg list` and the help
+  // The arms it runs, by name, from the run's parameters; empty: the `arms` key's.
+  std::function<std::vector<std::string>(const config::RunParams&)> arms{};
+  // Runs it over those arms (diagrams::named_arm of each), its results named after it.
+  std::function<ExperimentResults(const config::Parameters&, const std::vector<diagrams::Arm>&,
+                                  const ExperimentOptions&)>
+      run{};
+};
+
+// Adds `protocol` (its name a config::is_name word no protocol or arm has). Register before
+// running the command line. Throws std::invalid_argument.
+void register_protocol(Protocol protocol);
+
+// exp1, exp2, exp3, then the registered protocols.
+const std::vector<Protocol>& protocols();
+// The protocol named `name`, or nullptr (an arm's name: that arm alone under exp1).
+const Protocol* find_protocol(std::string_view name);
+
+// The arms `run.experiment` runs, by name: its protocol's, or the one arm it names.
+std::vector<std::string> experiment_arms(const config::RunParams& run);
+
+// The experiment the parameters name, over its arms (what `cbbg run` runs).
+ExperimentResults run_experiment(const config::Parameters& parameters,
+                                 const ExperimentOptions& options = {});
+
+}  // namespace cbbg::experiments

@@ -1,0 +1,81 @@
+// Protocols by name: the built-in three and one of the user's, run by run_experiment.
+
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/protocol_kit.h"
+#include "cbbg/experiments/protocols.h"
+#include "cbbg/experiments/run_names.h"
+
+namespace cbbg::experiments {
+namespace {
+
+using ::testing::ThrowsMessage;
+
+// Two trials per seed, whatever happens: from 0.05 rad, then from trial.theta0.
+void two_trials(const config::Parameters& p, const diagrams::Arm& arm,
+                const TelemetryOptions& telemetry, const LearntWeights* initial, SeedRun& run) {
+  SeedLoop seed(p, arm, telemetry, initial, run.seed);
+  run.trials.push_back(next_trial(p, seed.runner, 1, 0.05));
+  run.trials.push_back(next_trial(p, seed.runner, 2));
+  finish_run(p, arm, seed.loop, seed.runner.context(), run);
+}
+
+TEST(Protocols, TheBuiltInThreeComeFirst) {
+  ASSERT_GE(protocols().size(), 3U);
+  EXPECT_EQ(protocols()[0].name, "exp1");
+  EXPECT_EQ(protocols()[1].name, "exp2");
+  EXPECT_EQ(protocols()[2].name, "exp3");
+  config::RunParams run;
+  run.experiment = "exp2";
+  EXPECT_EQ(experiment_arms(run), (std::vector<std::string>{"cbbg"}));
+  run.experiment = "exp3";
+  run.arms = {"bg_only", "pd_only"};
+  EXPECT_EQ(experiment_arms(run), run.arms);
+  run.experiment = "cb_only";  // an arm alone
+  EXPECT_EQ(experiment_arms(run), (std::vector<std::string>{"cb_only"}));
+  EXPECT_EQ(find_protocol("cb_only"), nullptr);
+}
+
+TEST(Protocols, ARegisteredProtocolRunsByItsName) {
+  register_protocol({.name = "two_trials",
+                     .meaning = "two trials per seed",
+                     .run = [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+                               const ExperimentOptions& options) {
+                       return run_per_arm("two_trials", two_trials, p, arms, options);
+                     }});
+  EXPECT_EQ(protocol_names().back().name, "two_trials");
+  EXPECT_NO_THROW(check_experiment_name("two_trials"));
+
+  config::Config config;
+  config.set("plant.kind=analytic");
+  config.set("experiment=two_trials");
+  config.set("arms=[pd_only,bg_only]");
+  config.set("seeds=2");
+  config.set("trial.duration=0.2");
+  config.set("evaluation.angles=[0.1]");
+  const ExperimentResults results = run_experiment(diagrams::validated_parameters(config));
+  EXPECT_EQ(results.experiment, "two_trials");
+  EXPECT_TRUE(results.compares_arms);
+  EXPECT_EQ(results.arms, (std::vector<std::string>{"pd_only", "bg_only"}));
+  ASSERT_EQ(results.runs.size(), 4U);
+  for (const SeedRun& run : results.runs) EXPECT_EQ(run.trials.size(), 2U);
+  EXPECT_EQ(results.run(0, 0).evaluation.size(), 1U);  // finished as exp1's are
+
+  EXPECT_THAT([] { register_protocol({.name = "two_trials", .run = {}}); },
+              ThrowsMessage<std::invalid_argument>("protocol 'two_trials' is registered twice"));
+  EXPECT_THAT([] { register_protocol({.name = "cbbg", .run = {}}); },
+              ThrowsMessage<std::invalid_argument>("protocol 'cbbg': an arm has that name"));
+  EXPECT_THAT([] { register_protocol({.name = "no run", .run = {}}); },
+              ThrowsMessage<std::invalid_argument>(
+                  "protocol 'no run': a name is letters, digits, '_', '-' and '.'"));
+  EXPECT_THAT([] { register_protocol({.name = "norun", .run = {}}); },
+              ThrowsMessage<std::invalid_argument>("protocol 'norun' has no run"));
+}
+
+}  // namespace
+}  // namespace cbbg::experiments
