@@ -100,7 +100,8 @@ void print_skill_summary(const experiments::ExperimentResults& results) {
 }
 
 void print_summary(const experiments::ExperimentResults& results) {
-  if (results.experiment == "exp2") {
+  const experiments::ResultsShape& shape = experiments::results_shape(results.experiment);
+  if (shape.trial_table) {
     print_annealing_summary(results);
     return;
   }
@@ -122,7 +123,7 @@ void print_summary(const experiments::ExperimentResults& results) {
     std::printf("%-*s %8zu %10d %8.1f [%d, %d]  (failures before the first success)\n", width,
                 results.arms[a].c_str(), results.seeds.size(), succeeded, median, low, high);
   }
-  if (results.experiment == "exp3") print_skill_summary(results);
+  if (shape.skill) print_skill_summary(results);
 }
 
 // Learning runs of the experiment: every (arm, seed) of an arm with basal ganglia.

@@ -1,5 +1,6 @@
 #include "cbbg/experiments/protocols.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "cbbg/experiments/experiments.h"
@@ -8,6 +9,13 @@
 namespace cbbg::experiments {
 namespace {
 
+// exp2's figure: the trials that balanced.
+int balanced_trials(const SeedRun& run) {
+  return static_cast<int>(std::count_if(run.trials.begin(), run.trials.end(), [](const auto& t) {
+    return t.outcome.status == TrialStatus::kSuccess;
+  }));
+}
+
 std::vector<Protocol>& registry() {
   static std::vector<Protocol> all{
       {"exp1",
@@ -15,18 +23,26 @@ std::vector<Protocol>& registry() {
        {},
        [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
           const ExperimentOptions& options) { return run_exp1(p, arms, options); }},
-      {"exp2", "one cbbg trial, then omega = 1 with the annealing schedule (paper Figs. 12-14)",
+      {"exp2",
+       "one cbbg trial, then omega = 1 with the annealing schedule (paper Figs. 12-14)",
        [](const config::RunParams&) { return std::vector<std::string>{"cbbg"}; },
        [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
           const ExperimentOptions& options) {
          return run_exp2(p, arms.front(), diagrams::named_arm("bg_only"), options);
-       }},
+       },
+       {.evaluates = false,
+        .paired = false,
+        .oscillation = true,
+        .trial_table = true,
+        .headline = "balanced_trials",
+        .headline_of = balanced_trials}},
       {"exp3",
        "per arm and seed: trials until the learnt actor alone balances from every "
        "exp3.angles (skill acquisition)",
        {},
        [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
-          const ExperimentOptions& options) { return run_exp3(p, arms, options); }},
+          const ExperimentOptions& options) { return run_exp3(p, arms, options); },
+       {.skill = true}},
   };
   return all;
 }
@@ -57,6 +73,16 @@ const Protocol* find_protocol(std::string_view name) {
     if (protocol.name == name) return &protocol;
   }
   return nullptr;
+}
+
+const ResultsShape& results_shape(std::string_view experiment) {
+  static const ResultsShape one_arm;
+  const Protocol* protocol = find_protocol(experiment);
+  return protocol == nullptr ? one_arm : protocol->results;
+}
+
+int headline(const ResultsShape& shape, const SeedRun& run) {
+  return shape.headline_of ? shape.headline_of(run) : run.failures_before_success;
 }
 
 std::vector<std::string> experiment_arms(const config::RunParams& run) {

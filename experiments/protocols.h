@@ -24,6 +24,19 @@
 
 namespace cbbg::experiments {
 
+// What a protocol's results hold, which the generic writers (results directory, sweep.csv,
+// the console) show: exp1's by default.
+struct ResultsShape {
+  bool evaluates = true;     // evaluation.csv: each run evaluated from evaluation.angles
+  bool paired = true;        // summary.json compares the first arm with each other, seed by seed
+  bool skill = false;        // trials to skill (exp3): trials.csv's actor_alone, its summaries
+  bool oscillation = false;  // trials.csv's pitch_rms, pitch_peak_to_peak, mean_forward_speed
+  bool trial_table = false;  // the console shows each trial (k1, T, E, balanced), not failures
+  // sweep.csv's figure of a run, and its column; empty: failures_before_success.
+  std::string headline = "failures_before_success";
+  std::function<int(const SeedRun&)> headline_of{};
+};
+
 struct Protocol {
   std::string name{};
   std::string meaning{};  // one line, for `cbbg list` and the help
@@ -33,6 +46,7 @@ struct Protocol {
   std::function<ExperimentResults(const config::Parameters&, const std::vector<diagrams::Arm>&,
                                   const ExperimentOptions&)>
       run{};
+  ResultsShape results{};
 };
 
 // Adds `protocol` (its name a config::is_name word no protocol or arm has). Register before
@@ -43,6 +57,11 @@ void register_protocol(Protocol protocol);
 const std::vector<Protocol>& protocols();
 // The protocol named `name`, or nullptr (an arm's name: that arm alone under exp1).
 const Protocol* find_protocol(std::string_view name);
+
+// The shape of results named `experiment`: its protocol's, or exp1's (an arm alone).
+const ResultsShape& results_shape(std::string_view experiment);
+// sweep.csv's figure of `run` under `shape`.
+int headline(const ResultsShape& shape, const SeedRun& run);
 
 // The arms `run.experiment` runs, by name: its protocol's, or the one arm it names.
 std::vector<std::string> experiment_arms(const config::RunParams& run);

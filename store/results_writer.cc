@@ -2,6 +2,7 @@
 
 #include "cbbg/config/parameters.h"
 #include "cbbg/experiments/paired_statistics.h"
+#include "cbbg/experiments/protocols.h"
 #include "cbbg/store/fault_point.h"
 #include "cbbg/store/files.h"
 #include "cbbg/store/task_store.h"
@@ -131,11 +132,10 @@ std::vector<double> per_seed(const ExperimentResults& results, std::size_t arm,
 
 // The first arm against every other, seed by seed (common random numbers).
 std::string paired_json(const ExperimentResults& results, const config::Config& config) {
-  if (results.arms.size() < 2 || (results.experiment != "exp1" && results.experiment != "exp3")) {
-    return "";
-  }
+  const experiments::ResultsShape& shape = experiments::results_shape(results.experiment);
+  if (results.arms.size() < 2 || !shape.paired) return "";
   std::vector<std::string> figures{"failures_before_success"};
-  if (results.experiment == "exp3") figures.push_back("trials_to_skill");
+  if (shape.skill) figures.push_back("trials_to_skill");
   const auto max_trials = config::read_parameters(config).run.max_trials;
   std::ostringstream json;
   json << "  \"paired\": [";
@@ -218,8 +218,9 @@ double median(std::vector<int> values) {
 }
 
 std::string trials_csv(const ExperimentResults& results) {
-  const bool skill = results.experiment == "exp3";
-  const bool oscillation = results.experiment == "exp2";
+  const experiments::ResultsShape& shape = experiments::results_shape(results.experiment);
+  const bool skill = shape.skill;
+  const bool oscillation = shape.oscillation;
   std::string csv = "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,final_theta,status";
   if (skill) csv += ",actor_alone";
   if (oscillation) csv += ",pitch_rms,pitch_peak_to_peak,mean_forward_speed";
@@ -292,7 +293,7 @@ std::string summary_json(const ExperimentResults& results, const config::Config&
     json << "      \"min\": " << *std::min_element(failures.begin(), failures.end()) << ",\n";
     json << "      \"max\": " << *std::max_element(failures.begin(), failures.end());
     json << evaluation_json(results, a) << weights_diverged_json(results, a);
-    if (results.experiment == "exp3") json << skill_json(results, a);
+    if (experiments::results_shape(results.experiment).skill) json << skill_json(results, a);
     json << "\n    }";
   }
   json << "\n  },\n" << paired_json(results, config) << "  \"paper\": {";
@@ -318,7 +319,7 @@ void write_result_files(const ExperimentResults& results, const config::Config& 
   write_atomically(directory / "summary.json", summary_json(results, config));
   fault_point("commit:results");  // a kill here leaves half the files: resume rewrites them
   write_atomically(directory / "trials.csv", trials_csv(results));
-  if (results.experiment != "exp2") {
+  if (experiments::results_shape(results.experiment).evaluates) {
     write_atomically(directory / "evaluation.csv", evaluation_csv(results));
   }
   for (const SeedRun& run : results.runs) {

@@ -3,22 +3,12 @@
 #include <algorithm>
 #include <functional>
 
+#include "cbbg/experiments/protocols.h"
 #include "cbbg/framework/number_text.h"
 #include "cbbg/store/results_writer.h"
 #include "cbbg/store/sweep_directory.h"
 
 namespace cbbg::store {
-
-std::string headline_name(const std::string& experiment) {
-  return experiment == "exp2" ? "balanced_trials" : "failures_before_success";
-}
-
-int headline(const std::string& experiment, const experiments::SeedRun& run) {
-  if (experiment != "exp2") return run.failures_before_success;
-  return static_cast<int>(std::count_if(run.trials.begin(), run.trials.end(), [](const auto& t) {
-    return t.outcome.status == experiments::TrialStatus::kSuccess;
-  }));
-}
 
 namespace {
 
@@ -54,10 +44,11 @@ Evaluated evaluated(const experiments::ExperimentResults& point, std::size_t arm
 // The figures of one arm at one grid point, after the point's name and values.
 void append_arm_figures(const experiments::ExperimentResults& point, std::size_t arm,
                         const std::function<void(const std::string&)>& column) {
+  const experiments::ResultsShape& shape = experiments::results_shape(point.experiment);
   std::vector<int> figures;
   int succeeded = 0;
   for (std::size_t s = 0; s < point.seeds.size(); ++s) {
-    figures.push_back(headline(point.experiment, point.run(arm, s)));
+    figures.push_back(experiments::headline(shape, point.run(arm, s)));
     succeeded += point.run(arm, s).succeeded ? 1 : 0;
   }
   column(point.arms[arm]);
@@ -78,7 +69,7 @@ void append_arm_figures(const experiments::ExperimentResults& point, std::size_t
 
 std::string sweep_csv(const config::Sweep& sweep,
                       const std::vector<experiments::ExperimentResults>& results) {
-  const std::string name = headline_name(results.front().experiment);
+  const std::string name = experiments::results_shape(results.front().experiment).headline;
   std::string csv = "point";
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on chains of operator+.
   const std::function<void(const std::string&)> column = [&csv](const std::string& text) {

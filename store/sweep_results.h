@@ -1,7 +1,7 @@
 #pragma once
-// sweep.csv: one row per grid point and arm, with the grid's values and the experiment's
-// headline figure over the seeds: exp1's failures before the first success, exp2's
-// balanced trials per seed; and the evaluation's balance rate.
+// sweep.csv: one row per grid point and arm, with the grid's values and the protocol's
+// headline figure over the seeds (experiments::ResultsShape: exp1's failures before the
+// first success, exp2's balanced trials per seed); and the evaluation's balance rate.
 
 #include <string>
 #include <vector>
@@ -10,12 +10,6 @@
 #include "cbbg/experiments/seed_run.h"
 
 namespace cbbg::store {
-
-// The headline figure's name in sweep.csv's header (exp2: "balanced_trials", else
-// "failures_before_success").
-std::string headline_name(const std::string& experiment);
-// One seed's headline figure.
-int headline(const std::string& experiment, const experiments::SeedRun& run);
 
 // Columns: point, each swept key, arm, seeds, succeeded (seeds with a successful trial), the
 // headline's median, min and max over the seeds, then the evaluation's runs over the seeds

@@ -1,5 +1,9 @@
 // Protocols by name: the built-in three and one of the user's, run by run_experiment.
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -75,6 +79,32 @@ TEST(Protocols, ARegisteredProtocolRunsByItsName) {
                   "protocol 'no run': a name is letters, digits, '_', '-' and '.'"));
   EXPECT_THAT([] { register_protocol({.name = "norun", .run = {}}); },
               ThrowsMessage<std::invalid_argument>("protocol 'norun' has no run"));
+}
+
+// The results directory, sweeps, the console and the checks read a protocol's ResultsShape;
+// only its own files (and the parameters it declares) spell its name.
+TEST(Protocols, NoCodeOutsideAProtocolsFilesNamesIt) {
+  const std::filesystem::path source = CBBG_SOURCE_DIR;
+  const std::vector<std::filesystem::path> own{source / "experiments" / "protocols.cc",
+                                               source / "experiments" / "experiments.cc",
+                                               source / "config" / "parameters.h"};
+  int files = 0;
+  for (const char* folder :
+       {"apps", "blocks", "config", "diagrams", "experiments", "plant", "replay", "store"}) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(source / folder)) {
+      const std::string ending = entry.path().extension().string();
+      if (ending != ".cc" && ending != ".h") continue;
+      if (std::find(own.begin(), own.end(), entry.path()) != own.end()) continue;
+      ++files;
+      std::ifstream in(entry.path());
+      std::stringstream text;
+      text << in.rdbuf();
+      for (const char* name : {"\"exp1\"", "\"exp2\"", "\"exp3\""}) {
+        EXPECT_EQ(text.str().find(name), std::string::npos) << entry.path() << ": " << name;
+      }
+    }
+  }
+  EXPECT_GE(files, 100);
 }
 
 }  // namespace
