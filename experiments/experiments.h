@@ -15,6 +15,9 @@
 //          omega = 1) carrying on what was learnt, with k1 from the annealing schedule, for
 //          exp2.trials trials
 //
+// Each is registered by name in protocols.h, beside a user's own, written with the pieces of
+// protocol_kit.h.
+//
 // Common random numbers: a block's random stream comes from the seed and its path below the
 // closed loop (framework/context.h), so seed k gives every arm of a comparison the same
 // streams where their blocks have the same paths.

@@ -37,8 +37,6 @@ std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {
 
 }  // namespace
 
-// `parameters` with the root seed `seed`: an evaluation after a seed's training uses its
-// streams.
 config::Parameters with_seed(config::Parameters parameters, long long seed) {
   parameters.run.seed = seed;
   return parameters;
@@ -48,8 +46,6 @@ WeightsProvenance provenance(const config::Parameters& p, const SeedRun& run) {
   return {run.arm, run.seed, static_cast<long long>(run.trials.size()), p.plant.kind};
 }
 
-// Keeps what was learnt, unless it stopped being finite (a diverged learner): then the run
-// says so instead, and nothing evaluates or saves it.
 void keep_weights(LearntWeights weights, SeedRun& run) {
   if (weights.actor.allFinite() && weights.critic.allFinite()) {
     run.weights = std::move(weights);
