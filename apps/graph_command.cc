@@ -24,10 +24,8 @@ int graph_command(const GraphOptions& options) {
     if (diagram.empty()) diagram = experiments::experiment_arms(parameters.run).front();
     const std::vector<std::string> names = diagrams::diagram_names();
     if (std::find(names.begin(), names.end(), diagram) == names.end()) {
-      std::string known;
-      for (const std::string& name : names) known += (known.empty() ? "" : ", ") + name;
       throw config::ConfigError("--diagram: unknown diagram '" + diagram + "'; the diagrams are " +
-                                known);
+                                config::join(names));
     }
     if (options.max_depth && *options.max_depth < 0) {
       throw config::ConfigError("--depth must be 0 or more (the nesting levels to expand); got " +

@@ -69,12 +69,6 @@ bool in_range(const KeySpec& spec, double value) {
   return above && below;
 }
 
-std::string join(const std::vector<std::string>& items) {
-  std::string text;
-  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
-}
-
 // What a text of `spec` may be: one of its words, or any name.
 std::string words_text(const KeySpec& spec) {
   return spec.choices.empty() ? "a name (" + std::string(kNameRule) + ")"
@@ -471,6 +465,23 @@ std::string Config::to_yaml() const {
     out << "\n";
   }
   return out.str();
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+void check_new_name(std::string_view what, const std::string& name,
+                    const std::vector<std::string>& taken) {
+  const std::string named = std::string(what) + " '" + name + "'";
+  if (!is_name(name)) {
+    throw std::invalid_argument(named + ": a name is letters, digits, '_', '-' and '.'");
+  }
+  if (std::find(taken.begin(), taken.end(), name) != taken.end()) {
+    throw std::invalid_argument(named + " is registered twice");
+  }
 }
 
 }  // namespace cbbg::config

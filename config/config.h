@@ -107,4 +107,13 @@ inline constexpr const char* kNameRule =
     "1 to 100 letters, digits, '_', '-' and '.', not starting with '-' or '.'";
 bool is_name(std::string_view text);
 
+// "a, b, c": a list of names in a message.
+std::string join(const std::vector<std::string>& items);
+
+// Before a registration (a plant kind, an arm, a protocol): `name` is a name and none of
+// `taken`. Throws std::invalid_argument "<what> '<name>': a name is ..." or "<what> '<name>'
+// is registered twice".
+void check_new_name(std::string_view what, const std::string& name,
+                    const std::vector<std::string>& taken);
+
 }  // namespace cbbg::config

@@ -1,5 +1,6 @@
 #include "cbbg/diagrams/arms.h"
 
+#include <algorithm>
 #include <functional>
 #include <stdexcept>
 
@@ -21,12 +22,7 @@ std::vector<RegisteredArm>& registry() {
 
 void add(std::string name, std::string description,
          std::function<Arm(const ClosedLoopOptions&)> make) {
-  if (!config::is_name(name)) {
-    throw std::invalid_argument("arm '" + name + "': a name is letters, digits, '_', '-' and '.'");
-  }
-  for (const std::string& taken : arm_names()) {
-    if (taken == name) throw std::invalid_argument("arm '" + name + "' is registered twice");
-  }
+  config::check_new_name("arm", name, arm_names());
   if (name == kLearntActor) {
     throw std::invalid_argument("arm '" + name + "': the name is the learnt actor's");
   }
@@ -59,12 +55,10 @@ Arm named_arm(std::string_view name, const ClosedLoopOptions& loop) {
   for (const RegisteredArm& arm : registry()) {
     if (arm.name.name == name) return arm.make(loop);
   }
-  for (const std::string& preset_name : arm_names()) {
-    if (preset_name == name) return preset_arm(name, loop);
-  }
-  std::string known;
-  for (const std::string& arm : arm_names()) known += (known.empty() ? "" : ", ") + arm;
-  throw std::invalid_argument("unknown arm '" + std::string(name) + "'; the arms are " + known);
+  const std::vector<std::string> arms = arm_names();
+  if (std::find(arms.begin(), arms.end(), name) != arms.end()) return preset_arm(name, loop);
+  throw std::invalid_argument("unknown arm '" + std::string(name) + "'; the arms are " +
+                              config::join(arms));
 }
 
 }  // namespace cbbg::diagrams

@@ -57,6 +57,12 @@ std::vector<PlantKind>& kinds() {
   return all;
 }
 
+std::vector<std::string> kind_names() {
+  std::vector<std::string> names;
+  for (const PlantKind& kind : kinds()) names.push_back(kind.name);
+  return names;
+}
+
 }  // namespace
 
 const char* change_key(RobotChange change) {
@@ -65,15 +71,7 @@ const char* change_key(RobotChange change) {
 }
 
 void register_plant_kind(PlantKind kind) {
-  if (!config::is_name(kind.name)) {
-    throw std::invalid_argument("plant kind '" + kind.name +
-                                "': a name is letters, digits, '_', '-' and '.'");
-  }
-  for (const PlantKind& existing : kinds()) {
-    if (existing.name == kind.name) {
-      throw std::invalid_argument("plant kind '" + kind.name + "' is registered twice");
-    }
-  }
+  config::check_new_name("plant kind", kind.name, kind_names());
   if (!kind.make) throw std::invalid_argument("plant kind '" + kind.name + "' has no factory");
   config::register_choice("plant.kind", kind.name, kind.description);
   kinds().push_back(std::move(kind));
@@ -82,13 +80,11 @@ void register_plant_kind(PlantKind kind) {
 const std::vector<PlantKind>& plant_kinds() { return kinds(); }
 
 const PlantKind& plant_kind(std::string_view name) {
-  std::string names;
   for (const PlantKind& kind : kinds()) {
     if (kind.name == name) return kind;
-    names += (names.empty() ? "" : ", ") + kind.name;
   }
-  throw std::invalid_argument("no plant kind '" + std::string(name) + "' (there are " + names +
-                              ")");
+  throw std::invalid_argument("no plant kind '" + std::string(name) + "' (there are " +
+                              config::join(kind_names()) + ")");
 }
 
 plant::LinearModel planar_linearization(const config::Parameters& parameters) {

@@ -50,17 +50,12 @@ std::vector<Protocol>& registry() {
 }  // namespace
 
 void register_protocol(Protocol protocol) {
-  if (!config::is_name(protocol.name)) {
-    throw std::invalid_argument("protocol '" + protocol.name +
-                                "': a name is letters, digits, '_', '-' and '.'");
-  }
-  if (find_protocol(protocol.name) != nullptr) {
-    throw std::invalid_argument("protocol '" + protocol.name + "' is registered twice");
-  }
-  for (const std::string& arm : diagrams::arm_names()) {
-    if (arm == protocol.name) {
-      throw std::invalid_argument("protocol '" + protocol.name + "': an arm has that name");
-    }
+  std::vector<std::string> taken;
+  for (const Protocol& existing : registry()) taken.push_back(existing.name);
+  config::check_new_name("protocol", protocol.name, taken);
+  const std::vector<std::string> arms = diagrams::arm_names();
+  if (std::find(arms.begin(), arms.end(), protocol.name) != arms.end()) {
+    throw std::invalid_argument("protocol '" + protocol.name + "': an arm has that name");
   }
   if (!protocol.run) throw std::invalid_argument("protocol '" + protocol.name + "' has no run");
   registry().push_back(std::move(protocol));

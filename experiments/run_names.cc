@@ -12,12 +12,6 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-std::string joined(const std::vector<std::string>& names) {
-  std::string text;
-  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
-  return text;
-}
-
 }  // namespace
 
 std::vector<ProtocolName> protocol_names() {
@@ -31,7 +25,7 @@ void check_experiment_name(const std::string& experiment) {
   for (const auto& protocol : protocol_names()) names.push_back(protocol.name);
   for (const auto& arm : diagrams::arm_names()) names.push_back(arm);
   if (!contains(names, experiment)) {
-    throw config::ConfigError("experiment must be one of " + joined(names) + "; got '" +
+    throw config::ConfigError("experiment must be one of " + config::join(names) + "; got '" +
                               experiment + "'");
   }
 }
@@ -40,8 +34,8 @@ void check_arm_names(const std::vector<std::string>& arms) {
   const std::vector<std::string> names = diagrams::arm_names();
   for (std::size_t i = 0; i < arms.size(); ++i) {
     if (!contains(names, arms[i])) {
-      throw config::ConfigError("arms[" + std::to_string(i) + "] must be one of " + joined(names) +
-                                "; got '" + arms[i] + "'");
+      throw config::ConfigError("arms[" + std::to_string(i) + "] must be one of " +
+                                config::join(names) + "; got '" + arms[i] + "'");
     }
   }
 }
