@@ -99,31 +99,63 @@ void print_skill_summary(const experiments::ExperimentResults& results) {
   }
 }
 
+// Per arm, the median and range over seeds of the protocol's headline figure; the seeds that
+// succeeded beside exp1's failures before the first success.
+void print_headline_summary(const experiments::ExperimentResults& results,
+                            const experiments::ResultsShape& shape) {
+  const bool failures = !shape.headline_of;
+  const int width = arm_width(results);
+  std::printf("%-*s %8s %10s %8s %s\n", width, "arm", "seeds", failures ? "succeeded" : "",
+              "median", "range");
+  for (std::size_t a = 0; a < results.arms.size(); ++a) {
+    int succeeded = 0;
+    std::vector<int> figures;
+    for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+      const auto& run = results.run(a, s);
+      succeeded += run.succeeded ? 1 : 0;
+      figures.push_back(experiments::headline(shape, run));
+    }
+    const auto [low, high] = std::minmax_element(figures.begin(), figures.end());
+    const std::string what = failures ? "failures before the first success" : shape.headline;
+    std::printf("%-*s %8zu %10s %8.1f [%d, %d]  (%s)\n", width, results.arms[a].c_str(),
+                results.seeds.size(), failures ? std::to_string(succeeded).c_str() : "",
+                store::median(figures), *low, *high, what.c_str());
+  }
+}
+
+// The runs' own figures (SeedRun::figures), each summed over the seeds, an arm a column.
+void print_figures_summary(const experiments::ExperimentResults& results) {
+  if (results.runs.empty() || results.runs.front().figures.empty()) return;
+  std::size_t width = 6;
+  for (const auto& figure : results.runs.front().figures) {
+    width = std::max(width, figure.name.size());
+  }
+  std::printf("\n%-*s", static_cast<int>(width), "figure");
+  for (const auto& arm : results.arms) std::printf(" %10s", arm.c_str());
+  std::printf("  (sums over %zu seeds)\n", results.seeds.size());
+  for (std::size_t f = 0; f < results.runs.front().figures.size(); ++f) {
+    std::printf("%-*s", static_cast<int>(width), results.runs.front().figures[f].name.c_str());
+    for (std::size_t a = 0; a < results.arms.size(); ++a) {
+      double total = 0.0;
+      for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+        const auto& figures = results.run(a, s).figures;
+        total += f < figures.size() ? figures[f].value : 0.0;
+      }
+      std::printf(" %10g", total);
+    }
+    std::printf("\n");
+  }
+}
+
 void print_summary(const experiments::ExperimentResults& results) {
   const experiments::ResultsShape& shape = experiments::results_shape(results.experiment);
   if (shape.trial_table) {
     print_annealing_summary(results);
     return;
   }
-  const int width = arm_width(results);
-  std::printf("%-*s %8s %10s %8s %s\n", width, "arm", "seeds", "succeeded", "median", "range");
-  for (std::size_t a = 0; a < results.arms.size(); ++a) {
-    int succeeded = 0;
-    int low = 1 << 30;
-    int high = 0;
-    std::vector<int> failures;
-    for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-      const auto& run = results.run(a, s);
-      succeeded += run.succeeded ? 1 : 0;
-      failures.push_back(run.failures_before_success);
-      low = std::min(low, run.failures_before_success);
-      high = std::max(high, run.failures_before_success);
-    }
-    const double median = store::median(failures);
-    std::printf("%-*s %8zu %10d %8.1f [%d, %d]  (failures before the first success)\n", width,
-                results.arms[a].c_str(), results.seeds.size(), succeeded, median, low, high);
-  }
+  print_headline_summary(results, shape);
   if (shape.skill) print_skill_summary(results);
+  print_figures_summary(results);
 }
 
 // Learning runs of the experiment: every (arm, seed) of an arm with basal ganglia.
@@ -190,6 +222,10 @@ PreparedRun prepare(const RunOptions& options) {
   if (!options.load_weights.empty()) {
     run.initial_weights = store::load_weights(options.load_weights);
     check_initial_weights(*run.initial_weights, run.parameters, options.load_weights);
+  }
+  if (!options.resume) {  // a resumed run passed it when it started
+    experiments::check_protocol(run.parameters,
+                                run.initial_weights ? &*run.initial_weights : nullptr);
   }
   if (!run.directory) {
     run.directory = store::RunDirectory::create(

@@ -47,6 +47,7 @@ SweepPlan plan(config::Config base, config::Sweep sweep) {
     result.points.push_back(result.sweep.config(result.base, p));
     try {
       result.parameters.push_back(checked_parameters(result.points.back()));
+      experiments::check_protocol(result.parameters.back(), nullptr);  // sweeps start from zero
     } catch (const config::ConfigError& error) {
       throw config::ConfigError("grid point " + store::point_name(p, result.sweep.points()) + ": " +
                                 error.what());

@@ -76,6 +76,8 @@ class LayoutCollector {
   void names(Ignored&&...) {}
   template <typename... Ignored>
   void annealing(Ignored&&...) {}
+  template <typename... Ignored>
+  void settings(Ignored&&...) {}
   template <typename Params>
   void section(std::string_view name, Params& params) {
     LayoutCollector inner(prefix_ + std::string(name) + ".", layout_);

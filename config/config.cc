@@ -75,6 +75,8 @@ std::string words_text(const KeySpec& spec) {
                               : "one of " + join(spec.choices);
 }
 
+YAML::Node load_yaml(const std::string& text, const std::string& source);
+
 class Parser {
  public:
   explicit Parser(std::string source) : source_(std::move(source)) {}
@@ -169,8 +171,52 @@ class Parser {
       }
       case Kind::kAnnealing:
         return parse_annealing(key, node);
+      case Kind::kSettings:
+        return parse_settings(key, node);
     }
     fail(key + ": unknown kind");
+  }
+
+  std::vector<std::string> parse_settings(const std::string& key, const YAML::Node& node) const {
+    if (!node.IsSequence() || node.size() == 0) {
+      fail(key + " must be a non-empty list of settings key=value (several joined by ';'); got " +
+           shown(node));
+    }
+    std::vector<std::string> entries;
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const std::string label = key + "[" + std::to_string(i) + "]";
+      if (!node[i].IsScalar()) fail(label + " must be key=value; got " + shown(node[i]));
+      const std::string& entry = node[i].Scalar();
+      if (entry.find_first_of("\r\n") != std::string::npos) {
+        fail(label + " must be one line; got " + shown(node[i]));
+      }
+      check_settings(label, entry);
+      if (std::find(entries.begin(), entries.end(), entry) != entries.end()) {
+        fail(key + " lists '" + entry + "' twice");
+      }
+      entries.push_back(entry);
+    }
+    return entries;
+  }
+
+  // Every "key=value" of `entry` names a key of the tree (not a list of settings) and a value
+  // that key allows.
+  void check_settings(const std::string& label, const std::string& entry) const {
+    const std::vector<std::pair<std::string, std::string>> settings = split_settings(entry);
+    if (settings.empty()) fail(label + " must be key=value; got '" + entry + "'");
+    for (const auto& [path, text] : settings) {
+      if (path.empty() || text.empty()) {
+        fail(label + " must be key=value (several joined by ';'); got '" + entry + "'");
+      }
+      const KeySpec* spec = find_spec(path);
+      if (spec == nullptr) {
+        const std::string suggestion = closest_key(path);
+        fail(label + ": unknown key '" + path + "'" +
+             (suggestion.empty() ? "" : "; did you mean '" + suggestion + "'?"));
+      }
+      if (spec->kind == Kind::kSettings) fail(label + ": " + path + " cannot be set here");
+      Parser(source_ + ": " + label).parse(*spec, load_yaml(text, source_ + ": " + label));
+    }
   }
 
   std::vector<AnnealingStep> parse_annealing(const std::string& key, const YAML::Node& node) const {
@@ -336,6 +382,8 @@ std::string allowed_values(const KeySpec& spec) {
     }
     case Kind::kAnnealing:
       return "a list of {from_trial, k1}";
+    case Kind::kSettings:
+      return "a list of key=value (several joined by ';')";
   }
   return "";
 }
@@ -465,6 +513,25 @@ std::string Config::to_yaml() const {
     out << "\n";
   }
   return out.str();
+}
+
+std::vector<std::pair<std::string, std::string>> split_settings(std::string_view entry) {
+  auto trimmed = [](std::string_view text) {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string_view::npos) return std::string();
+    return std::string(text.substr(first, text.find_last_not_of(" \t") - first + 1));
+  };
+  std::vector<std::pair<std::string, std::string>> settings;
+  std::size_t start = 0;
+  while (start <= entry.size()) {
+    const std::size_t end = std::min(entry.find(';', start), entry.size());
+    const std::string_view part = entry.substr(start, end - start);
+    const std::size_t equals = part.find('=');
+    settings.emplace_back(trimmed(part.substr(0, equals)),
+                          equals == std::string_view::npos ? "" : trimmed(part.substr(equals + 1)));
+    start = end + 1;
+  }
+  return settings;
 }
 
 std::string join(const std::vector<std::string>& items) {

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -41,7 +42,9 @@ struct AnnealingStep {
 using Value = std::variant<double, long long, std::string, std::vector<double>,
                            std::vector<std::string>, std::vector<AnnealingStep>>;
 
-enum class Kind { kNumber, kInteger, kText, kNumbers, kNames, kAnnealing };
+// kSettings: a list of texts, each "key=value" (several joined by ';'), every key another of
+// the tree and every value one that key allows: a list of conditions (transfer.conditions).
+enum class Kind { kNumber, kInteger, kText, kNumbers, kNames, kAnnealing, kSettings };
 
 // One key of the tree.
 struct KeySpec {
@@ -84,7 +87,7 @@ class Config {
   long long integer(std::string_view key) const;
   const std::string& text(std::string_view key) const;
   const std::vector<double>& numbers(std::string_view key) const;
-  const std::vector<std::string>& names(std::string_view key) const;
+  const std::vector<std::string>& names(std::string_view key) const;  // kNames, kSettings
   const std::vector<AnnealingStep>& annealing(std::string_view key) const;
   // The value of `key` whatever its kind; std::logic_error for a key no declaration made.
   const Value& value(std::string_view key) const;
@@ -96,6 +99,10 @@ class Config {
  private:
   std::map<std::string, Value, std::less<>> values_;
 };
+
+// The "key=value" pairs of one entry of a kSettings key ("a=1; b=2"), each key and value
+// trimmed, in order. The entry was checked when it arrived.
+std::vector<std::pair<std::string, std::string>> split_settings(std::string_view entry);
 
 // The key closest to `unknown` by edit distance, or "" when none is close.
 std::string closest_key(std::string_view unknown);

@@ -71,6 +71,9 @@ class KeyCollector {
                  std::string_view meaning) {
     add(key, Kind::kAnnealing, steps, meaning, {}, {}, 0);
   }
+  void settings(std::string_view key, std::vector<std::string>& entries, std::string_view meaning) {
+    add(key, Kind::kSettings, entries, meaning, {}, {}, 0);
+  }
   template <typename Params>
   void section(std::string_view name, Params& params) {
     KeyCollector inner(prefix_ + std::string(name) + ".", keys_);
@@ -131,6 +134,9 @@ class KeyReader {
   void annealing(std::string_view key, std::vector<AnnealingStep>& steps, std::string_view) {
     steps = read<std::vector<AnnealingStep>>(key);
   }
+  void settings(std::string_view key, std::vector<std::string>& entries, std::string_view) {
+    entries = read<std::vector<std::string>>(key);
+  }
   template <typename Params>
   void section(std::string_view name, Params& params) {
     KeyReader inner(config_, prefix_ + std::string(name) + ".");
@@ -184,6 +190,9 @@ class KeyWriter {
   }
   void annealing(std::string_view key, std::vector<AnnealingStep>& steps, std::string_view) {
     config_.assign(path(key), steps);
+  }
+  void settings(std::string_view key, std::vector<std::string>& entries, std::string_view) {
+    config_.assign(path(key), entries);
   }
   template <typename Params>
   void section(std::string_view name, Params& params) {

@@ -42,11 +42,12 @@ struct RunParams {
     // Protocols and presets are named by their own tables (experiments/, diagrams/presets.h),
     // which `cbbg run` checks these against; a library run records its own arms here.
     a.text("experiment", experiment,
-           "a protocol (exp1, exp2, exp3) or a diagram, run alone under exp1's protocol "
-           "(`cbbg list`)",
+           "a protocol (exp1, exp2, exp3, transfer, a registered one) or a diagram, run alone "
+           "under exp1's protocol (`cbbg list`)",
            {});
     a.names("arms", arms,
-            "diagrams compared in one run (exp1, exp3): presets for `cbbg run` (`cbbg list`); "
+            "diagrams compared in one run (exp1, exp3, transfer): presets for `cbbg run` (`cbbg "
+            "list`); "
             "a library run records its own arms here",
             {});
     a.integer("seeds", seeds, "independent runs per arm; run k uses root seed + k",
@@ -172,6 +173,31 @@ struct Exp3Params {
   }
 };
 
+// How transfer trains each arm and seed: as exp3 does, until its actor alone balances, or as
+// exp1 does, until its first success.
+enum class TransferTraining { kUntilSkill, kUntilSuccess };
+
+// transfer.*: train once, evaluate under many conditions (experiments/transfer.h).
+struct TransferParams {
+  TransferTraining training = TransferTraining::kUntilSkill;
+  std::vector<std::string> conditions{
+      "evaluation.body_mass_scale=1", "evaluation.body_mass_scale=1.3",
+      "evaluation.com_height_scale=1.3", "evaluation.noise_std=0.05", "evaluation.push_torque=5"};
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.choice("training", training,
+             "transfer: each arm and seed trains once as exp3 does (until its actor alone "
+             "balances) or as exp1 does (until its first success)",
+             Choices<TransferTraining>{{"exp3", TransferTraining::kUntilSkill},
+                                       {"exp1", TransferTraining::kUntilSuccess}});
+    a.settings("conditions", conditions,
+               "transfer: what was learnt is evaluated from evaluation.angles under each of these "
+               "conditions, a column each; keys of evaluation.*, plant.* (not plant.kind), "
+               "sensors.*, push.* or a registered section");
+  }
+};
+
 // The whole tree, in the order of config.yaml.
 struct Parameters {
   RunParams run;
@@ -193,6 +219,7 @@ struct Parameters {
   LogParams log;
   EvaluationParams evaluation;
   Exp3Params exp3;
+  TransferParams transfer;
   // The sections users registered (config/declared_keys.h), by full key; not declared here.
   OwnSections own;
 
@@ -223,6 +250,7 @@ struct Parameters {
     a.section("log", log);
     a.section("evaluation", evaluation);
     a.section("exp3", exp3);
+    a.section("transfer", transfer);
   }
 };
 

@@ -54,6 +54,31 @@ config::Parameters validated_parameters(const config::Config& config) {
   return parameters;
 }
 
+namespace {
+
+config::Config with_settings(const config::Parameters& parameters, const std::string& entry,
+                             const std::string& source) {
+  config::Config config;
+  config::write_parameters(parameters, config);
+  for (const auto& [key, value] : config::split_settings(entry)) {
+    config.set(key + "=" + value, source);
+  }
+  return config;
+}
+
+}  // namespace
+
+config::Parameters validated_with_settings(const config::Parameters& parameters,
+                                           const std::string& entry, const std::string& source) {
+  return validated_parameters(with_settings(parameters, entry, source));
+}
+
+bool settings_change(const config::Parameters& parameters, const std::string& entry) {
+  config::Config config;
+  config::write_parameters(parameters, config);
+  return !(with_settings(parameters, entry, "settings") == config);
+}
+
 void validate_parameters(const config::Parameters& parameters) {
   try {
     check_declared(parameters, "");

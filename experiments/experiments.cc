@@ -19,6 +19,8 @@ double annealed_k1(const std::vector<config::AnnealingStep>& schedule, int trial
   return k1;
 }
 
+}  // namespace
+
 void run_until_success(const config::Parameters& p, const diagrams::Arm& arm,
                        const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                        SeedRun& run) {
@@ -35,6 +37,8 @@ void run_until_success(const config::Parameters& p, const diagrams::Arm& arm,
   finish_run(p, arm, seed.loop, seed.runner.context(), run);
 }
 
+namespace {
+
 // exp3's test after a trial: the weights learnt so far, frozen, with the actor alone, from
 // each of exp3.angles in turn (stopping at the first that fails).
 bool actor_alone_balances(const config::Parameters& p, const diagrams::Arm& arm,
@@ -49,8 +53,8 @@ bool actor_alone_balances(const config::Parameters& p, const diagrams::Arm& arm,
   return true;
 }
 
-// exp3: trials go on past the first success until the learnt actor alone passes the test
-// (or max_trials). An arm that learns nothing has no actor: it stops at its first success.
+}  // namespace
+
 void run_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
                      const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                      SeedRun& run) {
@@ -83,6 +87,8 @@ void run_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
   if (!run.succeeded) run.failures_before_success = failures;
   finish_run(p, arm, loop, runner.context(), run);
 }
+
+namespace {
 
 void set_k1(const diagrams::ClosedLoop& loop, Context& context, double k1) {
   if (loop.learner.tropism == nullptr) {
@@ -122,7 +128,31 @@ void run_annealing(const config::Parameters& p, const diagrams::Arm& coordinated
   keep_weights(learnt_weights(later_loop, later.context(), provenance(p, run)), run);
 }
 
+// No training: the initial weights (an arm that learns nothing: its closed loop) evaluated.
+void evaluate_only(const config::Parameters& p, const diagrams::Arm& arm, const TelemetryOptions&,
+                   const LearntWeights* initial_weights, SeedRun& run) {
+  const bool learns = arm.learner(p).learner.learns();
+  run.evaluation = evaluate_weights(p, arm, learns ? initial_weights : nullptr, run.seed);
+}
+
 }  // namespace
+
+void check_evaluation(const config::Parameters& parameters, const std::vector<diagrams::Arm>& arms,
+                      const LearntWeights* initial_weights) {
+  for (const auto& arm : arms) {
+    if (initial_weights == nullptr && arm.learner(parameters).learner.learns()) {
+      throw config::ConfigError("the evaluate protocol tests the weights of --load-weights; arm '" +
+                                arm.name + "' learns and none were given");
+    }
+  }
+}
+
+ExperimentResults run_evaluation(const config::Parameters& parameters,
+                                 const std::vector<diagrams::Arm>& arms,
+                                 const ExperimentOptions& options) {
+  check_evaluation(parameters, arms, options.initial_weights);
+  return run_per_arm("evaluate", evaluate_only, parameters, arms, options);
+}
 
 ExperimentResults run_exp1(const config::Parameters& parameters,
                            const std::vector<diagrams::Arm>& arms,

@@ -11,6 +11,8 @@
 //          (frozen, no exploration, no supervisor) balances from every exp3.angles, tested
 //          after every trial under the training's conditions; max_trials caps it; then the
 //          evaluation of exp1
+//   evaluate  per arm and seed: no training; the weights of cbbg run --load-weights (an arm
+//          that learns nothing: its closed loop) evaluated as exp1 evaluates what it learnt
 //   exp2   per seed: one trial of the coordinated arm (cbbg), then the operant arm (bg_only:
 //          omega = 1) carrying on what was learnt, with k1 from the annealing schedule, for
 //          exp2.trials trials
@@ -37,6 +39,17 @@ namespace cbbg::experiments {
 // The protocols take the run's typed parameters (diagrams::validated_parameters makes them
 // from a config, once) and hand them to every closed loop they build.
 
+// exp1's and exp3's seed of one arm (protocol_kit.h's PerSeed), for a protocol that trains as
+// they do. exp1: trials until the first success (or max_trials), then finish_run. exp3: trials
+// go on past the first success until the learnt actor alone passes exp3's test (or
+// max_trials); an arm that learns nothing has no actor and stops at its first success.
+void run_until_success(const config::Parameters& p, const diagrams::Arm& arm,
+                       const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
+                       SeedRun& run);
+void run_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
+                     const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
+                     SeedRun& run);
+
 // exp1 for each arm, over the parameters' seeds.
 ExperimentResults run_exp1(const config::Parameters& parameters,
                            const std::vector<diagrams::Arm>& arms,
@@ -47,6 +60,17 @@ ExperimentResults run_exp1(const config::Parameters& parameters,
 ExperimentResults run_exp3(const config::Parameters& parameters,
                            const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options = {});
+
+// evaluate, for each arm over the parameters' seeds: no training; the weights learning would
+// start from (options.initial_weights, cbbg run --load-weights) evaluated as exp1 evaluates
+// what it learnt, or the closed loop of an arm that learns nothing. Throws config::ConfigError
+// before any work for an arm that learns when there are no initial weights.
+ExperimentResults run_evaluation(const config::Parameters& parameters,
+                                 const std::vector<diagrams::Arm>& arms,
+                                 const ExperimentOptions& options = {});
+// Its check before any work (Protocol::check).
+void check_evaluation(const config::Parameters& parameters, const std::vector<diagrams::Arm>& arms,
+                      const LearntWeights* initial_weights);
 
 // exp2: trial 1 in `coordinated`'s closed loop, the later trials in `operant`'s, which
 // carries on the learning of trial 1 (Context::continue_from). The results name the arm

@@ -9,26 +9,6 @@
 namespace cbbg::experiments {
 namespace {
 
-// What the run leaves to be tested, from each evaluation angle under the evaluation's
-// conditions (evaluation_conditions.h), with the run's seed: the learnt actor alone (no
-// exploration, no supervisor, frozen), as `cbbg eval` runs it, or the closed loop of an arm
-// that learns nothing (pd_only: the supervisor alone) as it is.
-void evaluate_run(const config::Parameters& training, const diagrams::Arm& arm, bool learns,
-                  SeedRun& run) {
-  const config::Parameters p = with_seed(evaluation_parameters(training), run.seed);
-  EvaluationSettings settings;
-  settings.angles = p.evaluation.angles;
-  PolicyEvaluation evaluation;
-  if (!learns) {
-    evaluation = evaluate_controller(p, arm.learner, settings);
-  } else if (arm.policy && run.weights) {
-    evaluation = evaluate_policy(p, arm.policy, *run.weights, settings);
-  }
-  for (const AngleEvaluation& angle : evaluation.angles) {
-    run.evaluation.push_back({angle.theta0, angle.runs.front()});
-  }
-}
-
 std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {
   std::vector<std::string> names;
   for (const auto& arm : arms) names.push_back(arm.name);
@@ -54,12 +34,37 @@ void keep_weights(LearntWeights weights, SeedRun& run) {
   }
 }
 
+std::vector<EvaluationRecord> evaluate_weights(const config::Parameters& training,
+                                               const diagrams::Arm& arm,
+                                               const LearntWeights* weights, long long seed) {
+  const config::Parameters p = with_seed(evaluation_parameters(training), seed);
+  EvaluationSettings settings;
+  settings.angles = p.evaluation.angles;
+  PolicyEvaluation evaluation;
+  if (weights == nullptr) {
+    evaluation = evaluate_controller(p, arm.learner, settings);
+  } else if (arm.policy) {
+    evaluation = evaluate_policy(p, arm.policy, *weights, settings);
+  }
+  std::vector<EvaluationRecord> records;
+  for (const AngleEvaluation& angle : evaluation.angles) {
+    records.push_back({angle.theta0, angle.runs.front()});
+  }
+  return records;
+}
+
+std::vector<EvaluationRecord> evaluate_run(const config::Parameters& training,
+                                           const diagrams::Arm& arm, const SeedRun& run) {
+  if (run.weights_diverged) return {};
+  return evaluate_weights(training, arm, run.weights ? &*run.weights : nullptr, run.seed);
+}
+
 void finish_run(const config::Parameters& p, const diagrams::Arm& arm,
                 const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run) {
   if (loop.learner.learns()) {
     keep_weights(learnt_weights(loop, context, provenance(p, run)), run);
   }
-  evaluate_run(p, arm, loop.learner.learns(), run);
+  run.evaluation = evaluate_run(p, arm, run);
 }
 
 SeedLoop::SeedLoop(const config::Parameters& p, const diagrams::Arm& arm,

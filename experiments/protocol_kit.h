@@ -29,9 +29,22 @@ WeightsProvenance provenance(const config::Parameters& p, const SeedRun& run);
 // says so instead, and nothing evaluates or saves it.
 void keep_weights(LearntWeights weights, SeedRun& run);
 
-// The end of a run: what was learnt is kept, and the run evaluated from each of
-// evaluation.angles under the evaluation's conditions (its learnt actor alone, or the closed
-// loop of an arm that learns nothing as it is).
+// `weights` tested from each of evaluation.angles under `training`'s evaluation.* conditions
+// (evaluation_conditions.h) with the streams of `seed`: the arm's actor alone with them (no
+// exploration, no supervisor, frozen), as `cbbg eval` runs it (nothing for an arm without a
+// policy), or, without weights, the arm's closed loop as it is (pd_only: the supervisor
+// alone).
+std::vector<EvaluationRecord> evaluate_weights(const config::Parameters& training,
+                                               const diagrams::Arm& arm,
+                                               const LearntWeights* weights, long long seed);
+
+// What `run` leaves, tested so with its seed: its learnt weights, or, for an arm that learns
+// nothing, its closed loop; nothing for a learner whose weights diverged.
+std::vector<EvaluationRecord> evaluate_run(const config::Parameters& training,
+                                           const diagrams::Arm& arm, const SeedRun& run);
+
+// The end of a run: what was learnt is kept (keep_weights), and the run evaluated
+// (evaluate_run) into SeedRun::evaluation.
 void finish_run(const config::Parameters& p, const diagrams::Arm& arm,
                 const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run);
 

@@ -5,6 +5,7 @@
 
 #include "cbbg/experiments/experiments.h"
 #include "cbbg/experiments/run_names.h"
+#include "cbbg/experiments/transfer.h"
 
 namespace cbbg::experiments {
 namespace {
@@ -14,6 +15,14 @@ int balanced_trials(const SeedRun& run) {
   return static_cast<int>(std::count_if(run.trials.begin(), run.trials.end(), [](const auto& t) {
     return t.outcome.status == TrialStatus::kSuccess;
   }));
+}
+
+// evaluate's figure: the evaluation runs that balanced.
+int balanced_evaluations(const SeedRun& run) {
+  return static_cast<int>(std::count_if(run.evaluation.begin(), run.evaluation.end(),
+                                        [](const EvaluationRecord& evaluation) {
+                                          return evaluation.outcome.status == TrialStatus::kSuccess;
+                                        }));
 }
 
 std::vector<Protocol>& registry() {
@@ -43,6 +52,30 @@ std::vector<Protocol>& registry() {
        [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
           const ExperimentOptions& options) { return run_exp3(p, arms, options); },
        {.skill = true}},
+      {"evaluate",
+       "per arm and seed: no training; the weights of --load-weights evaluated from "
+       "evaluation.angles under evaluation.*",
+       {},
+       [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+          const ExperimentOptions& options) { return run_evaluation(p, arms, options); },
+       {.paired = false, .headline = "balanced", .headline_of = balanced_evaluations},
+       [](const config::Parameters& p, const LearntWeights* initial_weights) {
+         std::vector<diagrams::Arm> arms;
+         for (const auto& name : p.run.arms) arms.push_back(diagrams::named_arm(name));
+         check_evaluation(p, arms, initial_weights);
+       }},
+      {"transfer",
+       "per arm and seed: one training (transfer.training), then evaluated under each of "
+       "transfer.conditions",
+       {},
+       [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+          const ExperimentOptions& options) { return run_transfer(p, arms, options); },
+       {.pairs_figure = [](const std::string& figure) { return figure.starts_with("balanced@"); }},
+       [](const config::Parameters& p, const LearntWeights*) {
+         std::vector<diagrams::Arm> arms;
+         for (const auto& name : p.run.arms) arms.push_back(diagrams::named_arm(name));
+         check_transfer(p, arms);
+       }},
   };
   return all;
 }
@@ -78,6 +111,11 @@ const ResultsShape& results_shape(std::string_view experiment) {
 
 int headline(const ResultsShape& shape, const SeedRun& run) {
   return shape.headline_of ? shape.headline_of(run) : run.failures_before_success;
+}
+
+void check_protocol(const config::Parameters& parameters, const LearntWeights* initial_weights) {
+  const Protocol* protocol = find_protocol(parameters.run.experiment);
+  if (protocol != nullptr && protocol->check) protocol->check(parameters, initial_weights);
 }
 
 std::vector<std::string> experiment_arms(const config::RunParams& run) {

@@ -1,8 +1,9 @@
 #pragma once
-// The protocols `experiment` may name: exp1, exp2, exp3, and any a user registers, each a
-// name, what it measures, the arms it runs and how it runs them. `cbbg run` (and a user's
-// program through apps/cli.h) runs whichever the config names; a protocol of the user's is
-// written with protocol_kit.h and gets the results directory, resume, sweeps and merge.
+// The protocols `experiment` may name: exp1, exp2, exp3, evaluate, transfer, and any a user
+// registers, each a name, what it measures, the arms it runs and how it runs them. `cbbg run`
+// (and a user's program through apps/cli.h) runs whichever the config names; a protocol of
+// the user's is written with protocol_kit.h and gets the results directory, resume, sweeps
+// and merge.
 //
 //   experiments::register_protocol({
 //       .name = "curriculum",
@@ -35,6 +36,9 @@ struct ResultsShape {
   // sweep.csv's figure of a run, and its column; empty: failures_before_success.
   std::string headline = "failures_before_success";
   std::function<int(const SeedRun&)> headline_of{};
+  // Which of the runs' own figures (SeedRun::figures) summary.json compares seed by seed, the
+  // first arm against each other, when `paired`; none by default.
+  std::function<bool(const std::string& figure)> pairs_figure{};
 };
 
 struct Protocol {
@@ -47,13 +51,16 @@ struct Protocol {
                                   const ExperimentOptions&)>
       run{};
   ResultsShape results{};
+  // Before any work, given the weights learning starts from (none: nullptr): a user's mistake
+  // in the parameters, as a config::ConfigError; none by default.
+  std::function<void(const config::Parameters&, const LearntWeights* initial_weights)> check{};
 };
 
 // Adds `protocol` (its name a config::is_name word no protocol or arm has). Register before
 // running the command line. Throws std::invalid_argument.
 void register_protocol(Protocol protocol);
 
-// exp1, exp2, exp3, then the registered protocols.
+// exp1, exp2, exp3, evaluate, transfer, then the registered protocols.
 const std::vector<Protocol>& protocols();
 // The protocol named `name`, or nullptr (an arm's name: that arm alone under exp1).
 const Protocol* find_protocol(std::string_view name);
@@ -62,6 +69,9 @@ const Protocol* find_protocol(std::string_view name);
 const ResultsShape& results_shape(std::string_view experiment);
 // sweep.csv's figure of `run` under `shape`.
 int headline(const ResultsShape& shape, const SeedRun& run);
+
+// The check of the protocol `parameters` name, if it has one (Protocol::check).
+void check_protocol(const config::Parameters& parameters, const LearntWeights* initial_weights);
 
 // The arms `run.experiment` runs, by name: its protocol's, or the one arm it names.
 std::vector<std::string> experiment_arms(const config::RunParams& run);

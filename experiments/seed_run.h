@@ -26,6 +26,15 @@ struct EvaluationRecord {
   TrialOutcome outcome;
 };
 
+// A figure a protocol records per seed beyond SeedRun's own fields, by name: a column of
+// figures.csv, summed per arm in summary.json (transfer: the evaluation runs balanced under
+// each of its conditions).
+struct SeedFigure {
+  std::string name;  // any text but a line break
+  double value = 0.0;
+  bool operator==(const SeedFigure&) const = default;
+};
+
 struct SeedRun {
   std::string arm;
   long long seed = 0;
@@ -47,6 +56,8 @@ struct SeedRun {
   // they stopped being finite: then weights_diverged).
   std::optional<LearntWeights> weights;
   bool weights_diverged = false;
+  // The protocol's own figures, in its order; every seed of a run has the same names.
+  std::vector<SeedFigure> figures;
 };
 
 struct ExperimentResults {

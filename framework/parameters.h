@@ -21,6 +21,8 @@
 //   text(key, std::string&, meaning, allowed words (none: any))
 //   numbers(key, std::vector<double>& or std::array<double, N>&, meaning, Bounds of each)
 //   names(key, std::vector<std::string>&, meaning, allowed words)
+//   settings(key, std::vector<std::string>&, meaning)  "other.key=value" entries, each one
+//                                                       a condition (transfer.conditions)
 //   section(name, params)                         a nested struct, keys "name.key"
 
 #include <array>
@@ -144,9 +146,11 @@ class DeclarationCheck {
       text(std::string(key) + "[" + std::to_string(i) + "]", values[i], meaning, words);
     }
   }
-  // exp2's schedule is the config's to check.
+  // exp2's schedule and a list of settings are the config's to check.
   template <typename... Ignored>
   void annealing(Ignored&&...) {}
+  template <typename... Ignored>
+  void settings(Ignored&&...) {}
   template <typename Params>
   void section(std::string_view name, Params& params) {
     DeclarationCheck inner(prefix_ + std::string(name) + ".");

@@ -20,24 +20,10 @@ fi
 out="$(mktemp -d "${TMPDIR:-/tmp}/cbbg-bench.XXXXXX")"
 trap 'rm -rf "$out"' EXIT
 
-# The baseline tree: extracted and built once per commit, in a folder this script owns.
+# The baseline tree: extracted and built once per commit (baseline_tree.sh).
 baseline=""
 if [[ -n "$against" ]]; then
-  baseline="$root/build/bench-baseline"
-  if [[ -e "$baseline" && ! -f "$baseline/.cbbg-bench-baseline" ]]; then
-    echo "bench.sh: $baseline exists and was not made by bench.sh; move it away" >&2
-    exit 1
-  fi
-  if [[ "$(cat "$baseline/.cbbg-bench-baseline" 2>/dev/null)" != "$against" ]]; then
-    rm -rf "$baseline/src"  # only ever a git archive this script extracted
-    mkdir -p "$baseline/src"
-    echo "$against" > "$baseline/.cbbg-bench-baseline"
-    git -C "$root" archive "$against" | tar -x -C "$baseline/src"
-  fi
-  echo "building the baseline $against in $baseline ..." >&2
-  cmake -S "$baseline/src" -B "$baseline/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$baseline/build" --parallel "$(nproc)" \
-    --target bench_framework bench_diagrams cbbg >/dev/null
+  baseline="$("$root/scripts/baseline_tree.sh" "$against" bench_framework bench_diagrams cbbg)"
 fi
 
 bench() {  # bench <name> <binary> <args...>: the binary's results as JSON in $out/<name>.json

@@ -4,17 +4,21 @@
 Usage: /usr/bin/python3 scripts/plot_results.py DIR      (what `cbbg plot DIR` runs)
 
 Reads DIR/summary.json, DIR/trials.csv, DIR/config.yaml and, when the run logged ticks,
-DIR/steps.csv. Writes, for exp1 and single-diagram runs:
+DIR/steps.csv. What it draws follows what the results hold, whatever the protocol's name.
+Writes, for exp1 and single-diagram runs:
   pitch_<arm>.png      theta_b(t) of the first seed's first trial and first successful trial
   failures.png         failures before the first success, one point per seed, per arm
-and for exp2:
+and for exp2 (trials.csv with the oscillation columns):
   temperature_entropy.png   mean temperature and entropy per trial
   pitch_early_late.png      theta_b(t) of early against late trials of the first seed
   oscillation.png           the pitch's RMS and peak-to-peak after the transient, and the
                             mean forward speed, per trial (trials.csv's exp2 columns)
-and for exp3, as for exp1 and also:
+and for exp3 (summary.json with trials_to_skill), as for exp1 and also:
   skill.png            per arm, failures and trials to the first success and to the skill
                        (the actor alone balances from every exp3.angles), one point per seed
+and for a protocol that records figures of its own per seed (figures.csv; transfer):
+  figures.png          each figure per arm: balanced@C / evaluated@C as a rate per
+                       condition C, any other figure as its mean over the seeds
 and for a sweep (a directory with sweep.csv, written by cbbg merge):
   sweep_<key>.png      the headline figure (median and range over seeds) against each
                        swept key, one line per arm and per value of the other keys, and
@@ -721,8 +725,22 @@ def draw_exp1(save, summary, trials, pitch_path, failure_angle, experiment, plan
     medians = {arm: median_failures(summary, arm, per_arm[arm]) for arm in arms}
     save(plot_failures(arms, per_arm, medians, summary.get("paper", {}),
                        summary.get("max_trials"), experiment, plant), "failures.png")
-    if experiment == "exp3":
+    if has_skill(summary):
         save(plot_skill(arms, summary, experiment, plant), "skill.png")
+
+
+def has_skill(summary):
+    """Whether the protocol measured trials to the skill (summary.json's trials_to_skill)."""
+    arms = summary.get("arms")
+    return isinstance(arms, dict) and any(
+        isinstance(arm, dict) and "trials_to_skill" in arm for arm in arms.values())
+
+
+def has_oscillation(trials_path):
+    """Whether trials.csv has the oscillation columns (a protocol with per-trial k1 and the
+    pitch's oscillation, as exp2)."""
+    with open(trials_path, encoding="utf-8") as f:
+        return "pitch_rms" in [name.strip() for name in f.readline().split(",")]
 
 
 def plot_skill(arms, summary, experiment, plant):
@@ -941,6 +959,67 @@ def read_sweep(path):
     return keys, headline, rows
 
 
+def read_figures(path):
+    """figures.csv (a protocol's own per-seed figures): (the figures' names, the rows as
+    dicts of numbers, with their arm and seed)."""
+    f, reader, column, width = open_csv(path, ["arm", "seed"], optional_file=False)
+    names = [name for name in column if name not in ("arm", "seed")]
+    rows = []
+    with f:
+        try:
+            for row in reader:
+                line = reader.line_num
+                if len(row) != width:
+                    raise InputError(path, f"line {line}: expected {width} fields, got {len(row)}")
+                parsed = {"arm": row[column["arm"]], "seed": row[column["seed"]]}
+                for name in names:
+                    parsed[name] = parse_number(path, line, name, row[column[name]])
+                rows.append(parsed)
+        except (csv.Error, UnicodeDecodeError) as error:
+            raise InputError(path, f"line {reader.line_num}: unreadable ({error})")
+    return names, rows
+
+
+def seed_figure_bars(names, rows):
+    """(bar labels, {arm: values}) of figures.csv: a rate balanced@C / evaluated@C for each
+    condition C of the pairs, and the mean over the seeds of every other figure."""
+    arms = list(dict.fromkeys(row["arm"] for row in rows))
+    labels, values = [], {arm: [] for arm in arms}
+    for name in names:
+        if name.startswith("evaluated@") and "balanced@" + name[len("evaluated@"):] in names:
+            continue
+        rate_of = "evaluated@" + name[len("balanced@"):] if name.startswith("balanced@") else None
+        labels.append(name[len("balanced@"):] if rate_of in names else name)
+        for arm in arms:
+            picked = [row for row in rows if row["arm"] == arm]
+            total = sum(row[name] for row in picked)
+            if rate_of in names:
+                runs = sum(row[rate_of] for row in picked)
+                values[arm].append(total / runs if runs else float("nan"))
+            else:
+                values[arm].append(total / len(picked) if picked else float("nan"))
+    return labels, values
+
+
+def plot_seed_figures(names, rows, experiment, plant):
+    """figures.png: each of the protocol's own figures per arm, side by side."""
+    labels, values = seed_figure_bars(names, rows)
+    fig, ax = new_figure()
+    fig.set_size_inches(max(FIGURE_SIZE[0], 0.45 * len(labels) * max(len(values), 1)),
+                        FIGURE_SIZE[1] * 1.3)
+    width = 0.8 / max(len(values), 1)
+    for i, (arm, heights) in enumerate(values.items()):
+        ax.bar([x + i * width for x in range(len(labels))], heights, width, label=arm)
+    ax.set_xticks([x + 0.4 - width / 2 for x in range(len(labels))], labels, rotation=60,
+                  ha="right", fontsize="small")
+    rates = any(name.startswith("balanced@") for name in names)
+    ax.set_ylabel("balanced runs / runs" if rates else "mean over seeds")
+    ax.grid(True, axis="y", alpha=0.3)
+    ax.legend(fontsize="small")
+    ax.set_title(f"{experiment}: per-seed figures, {plant} plant")
+    return fig
+
+
 def has_balance_rates(rows):
     """Whether sweep.csv's rows carry the evaluation's balance rate (exp1, exp3)."""
     return any(row.get("balance_rate") for row in rows)
@@ -1043,12 +1122,17 @@ def run(results_dir):
     failure_angle = config_number(config, "trial.failure_angle", config_path)
     stages = annealing_stages(config, config_path)
 
+    figures_path = os.path.join(results_dir, "figures.csv")
+
     def draw(save):
-        if experiment == "exp2":
+        if has_oscillation(trials_path):
             draw_exp2(save, summary, trials, steps_path, failure_angle, stages, experiment,
                       plant, trials_path)
         else:
             draw_exp1(save, summary, trials, steps_path, failure_angle, experiment, plant)
+        if os.path.isfile(figures_path):
+            names, rows = read_figures(figures_path)
+            save(plot_seed_figures(names, rows, experiment, plant), "figures.png")
 
     draw_into(results_dir, draw)
 

@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
 # The robustness study: what exp3 teaches each arm (trained on the nominal robot), and the
-# supervisor alone (pd_only), evaluated on robots they were not trained on. One sweep per
-# perturbation, each a `cbbg run --grid` over an evaluation.* key, then the table and the
-# figure of robustness_report.py.
+# supervisor alone (pd_only), evaluated on robots they were not trained on. One `cbbg run` of
+# the transfer protocol: each arm and seed trains once, then is evaluated under every
+# perturbation's values (transfer.conditions); then the table and the figure of
+# robustness_report.py.
 #
 #   scripts/robustness_study.sh --out DIR [--plant analytic|simbody] [--seeds N] [--jobs J]
 #
-# DIR/<key>/ is each sweep's results directory, DIR/robustness.md the table and
-# DIR/robustness.png the figure. Run again after a kill, it resumes: a finished sweep is
-# kept, an interrupted one (DIR/<key>.partial) resumes where it stopped, so the bytes are
-# those of an uninterrupted run. It refuses a DIR it did not make. A refusal (exit 2, one
-# line) leaves nothing behind: the options are checked before DIR is made, and a DIR this
-# run made is removed again when cbbg refuses the study's first command.
+# DIR/transfer/ is the run's results directory, DIR/robustness.md the table and
+# DIR/robustness.png the figure. Run again after a kill, it resumes: an interrupted run
+# (DIR/transfer.partial) carries on from its finished tasks, so the bytes are those of an
+# uninterrupted run. It refuses a DIR it did not make. A refusal (exit 2, one line) leaves
+# nothing behind: the options are checked before DIR is made, and a DIR this run made is
+# removed again when cbbg refuses the study's command.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 # cbbg: $CBBG, else the tree's build (scripts/build.sh), else the installed one beside this
@@ -89,8 +90,8 @@ if [[ ! -e "$out" ]]; then
   mv -T "$staging" "$out"
 fi
 
-# cbbg refused the first command of a study this invocation began (exit 2: it wrote
-# nothing), so that the corrected command is not refused: DIR goes back to its temporary
+# cbbg refused the command of a study this invocation began (exit 2: it wrote nothing), so
+# that the corrected command is not refused: DIR goes back to its temporary
 # name in one step and is removed there, with the parents made above (rmdir removes only
 # empty folders).
 take_back() {
@@ -104,35 +105,35 @@ take_back() {
   done
 }
 
-# The perturbations: each key's values, the nominal robot (1 or 0) among them.
+# The perturbations: each key's values, the nominal robot (1 or 0) among them; each value is
+# one of transfer.conditions.
 grids=(
   "evaluation.body_mass_scale=0.7,0.85,1,1.15,1.3"
   "evaluation.com_height_scale=0.7,0.85,1,1.15,1.3"
   "evaluation.noise_std=0,0.01,0.02,0.05,0.1"
   "evaluation.push_torque=0,1,2,5,10,20"
 )
-# A push lasts 0.5 s, long enough for the motors' limit (5 N m) not to hide the larger ones.
-push_duration=0.5
+conditions=""
 for grid in "${grids[@]}"; do
   key="${grid%%=*}"
-  sweep="$out/${key#evaluation.}"
-  if [[ -e "$sweep/.cbbg-sweep-run" ]]; then
-    # Killed while publishing (the sweep is in place, cbbg's work marker still in it): the
-    # merge finishes it.
-    "$cbbg" merge "$sweep"
-  elif [[ -d "$sweep" ]]; then
-    echo "robustness_study.sh: $key done ($sweep)" >&2
-  else
-    # New or interrupted: the same command again carries on from the finished tasks.
-    status=0
-    "$cbbg" run --experiment exp3 --set plant.kind="$plant" --set "arms=[cbbg, bg_only, pd_only]" \
-      --seeds "$seeds" --jobs "$jobs" --set evaluation.push_duration=$push_duration \
-      --grid "$grid" --out "$sweep" || status=$?
-    if [[ $status != 0 ]]; then
-      [[ $status == 2 && -n "$made" ]] && take_back
-      exit "$status"
-    fi
-  fi
-  made=""  # a sweep has run: DIR is a study now, whatever a later command does
+  IFS=, read -r -a values <<<"${grid#*=}"
+  for value in "${values[@]}"; do conditions+="${conditions:+, }$key=$value"; done
 done
+# A push lasts 0.5 s, long enough for the motors' limit (5 N m) not to hide the larger ones.
+push_duration=0.5
+run="$out/transfer"
+status=0
+if [[ -e "$run.partial" || -e "$run/.cbbg-run" ]]; then
+  # Killed while training or publishing: --resume carries on from the finished tasks.
+  "$cbbg" run --resume "$run" --jobs "$jobs" || status=$?
+elif [[ -d "$run" ]]; then
+  echo "robustness_study.sh: the transfer run is done ($run)" >&2
+else
+  "$cbbg" run --experiment transfer --set transfer.training=exp3 --set plant.kind="$plant" \
+    --set "arms=[cbbg, bg_only, pd_only]" --seeds "$seeds" --jobs "$jobs" \
+    --set evaluation.push_duration=$push_duration --set "transfer.conditions=[$conditions]" \
+    --no-figures --out "$run" || status=$?
+  if [[ $status == 2 && -n "$made" ]]; then take_back; fi
+fi
+[[ $status == 0 ]] || exit "$status"
 /usr/bin/python3 "$here/robustness_report.py" "$out"

@@ -3,7 +3,8 @@
 # every command a user's project needs, with no edit of the library: its plant, supervisor,
 # tile-coded features and arms (a constant-omega and a critic-frozen one) in exp1 and exp3
 # over seeds; a resume after a kill giving the same bytes; a 2-point sweep over its own key;
-# its own protocol (a curriculum), resumed and swept too;
+# its own protocol (a curriculum), resumed and swept too, in one process and in shards merged;
+# transfer under its own plant parameter;
 # `eval` of its saved weights; `plot` and `replay` of its results; an LQR supervisor designed
 # from the cart-pole's own linearisation.
 #   test_cartpole_project.sh CARTPOLE_PROGRAM SCRATCH_DIR
@@ -95,6 +96,11 @@ grep -q "^  curriculum " <<<"$listed" || fail "list does not show the curriculum
 "$program" run "${quick[@]}" "${curriculum[@]}" --out curriculum >/dev/null
 grep -q '"experiment": "curriculum"' curriculum/summary.json || fail "no curriculum results"
 [[ $(grep -c "^tiles,1," curriculum/trials.csv) -ge 2 ]] || fail "the curriculum ran one trial"
+# Its own per-seed figure: a column of figures.csv, compared across arms in summary.json.
+head -1 curriculum/figures.csv | grep -qx "arm,seed,warm_up_trials" ||
+  fail "the curriculum's figures.csv: $(head -1 curriculum/figures.csv)"
+grep -q '"figure": "warm_up_trials"' curriculum/summary.json ||
+  fail "the curriculum's summary does not pair warm_up_trials"
 set +e
 CBBG_FAULT_AT=task:record@2 "$program" run "${quick[@]}" "${curriculum[@]}" \
   --out curriculum_resumed >/dev/null 2>&1
@@ -103,10 +109,44 @@ set -e
 [[ $status == 86 ]] || fail "the killed curriculum exited $status, not at the fault point"
 "$program" run --resume curriculum_resumed --jobs 2 >/dev/null
 diff -r curriculum curriculum_resumed >/dev/null || fail "the resumed curriculum differs"
+# plot draws its own figure (figures.png) beside exp1's.
+"$program" plot curriculum >/dev/null
+test -s curriculum/figures/figures.png || fail "plot did not draw the curriculum's own figure"
 "$program" run "${quick[@]}" "${curriculum[@]}" --set seeds=2 \
   --grid curriculum.first_angle=0.03,0.08 --out curriculum_sweep >/dev/null
 [[ $(grep -c "^00[12],0\.0[38],tiles" curriculum_sweep/sweep.csv) == 2 ]] ||
   fail "the curriculum's sweep.csv: $(cat curriculum_sweep/sweep.csv)"
+# The same sweep in two shards, then merged: the bytes of the single-process sweep.
+for k in 1 2; do
+  "$program" run "${quick[@]}" "${curriculum[@]}" --set seeds=2 \
+    --grid curriculum.first_angle=0.03,0.08 --shard "$k/2" --out curriculum_shards >/dev/null
+done
+"$program" merge curriculum_shards >/dev/null
+diff -r curriculum_sweep curriculum_shards >/dev/null ||
+  fail "the curriculum's merged shards differ from its single-process sweep"
+
+# Train once, evaluate many, under the cart-pole's own parameter and an evaluation key: each
+# condition's figures are those of `eval` of the seed's weights with that setting.
+"$program" run "${quick[@]}" --experiment transfer --set transfer.training=exp1 \
+  --set 'arms=[tiles,lean_pd]' --no-figures \
+  --set 'transfer.conditions=[cartpole.pole_mass=1.5, evaluation.noise_std=0.05]' \
+  --out transfer >/dev/null
+head -1 transfer/figures.csv | grep -qx "arm,seed,balanced@cartpole.pole_mass=1.5,evaluated@cartpole.pole_mass=1.5,balanced@evaluation.noise_std=0.05,evaluated@evaluation.noise_std=0.05" ||
+  fail "transfer's figures.csv header: $(head -1 transfer/figures.csv)"
+for seed in 1 2 3; do
+  for setting in cartpole.pole_mass=1.5 evaluation.noise_std=0.05; do
+    "$program" eval --load-weights "transfer/weights/tiles_seed$seed.txt" --set plant.kind=cartpole \
+      --set trial.duration=5 --set seed="$seed" --set "$setting" --out "eval_${seed}_$setting" \
+      >/dev/null
+    expected="$(awk -F, 'NR > 1 { n += $3; e++ } END { print n "," e }' "eval_${seed}_$setting/evaluation.csv")"
+    column="$(head -1 transfer/figures.csv | tr ',' '\n' | grep -nx "balanced@$setting" | cut -d: -f1)"
+    got="$(awk -F, -v c="$column" -v s="$seed" '$1 == "tiles" && $2 == s { print $c "," $(c + 1) }' \
+      transfer/figures.csv)"
+    [[ "$got" == "$expected" ]] || fail "transfer seed $seed under $setting: $got, eval: $expected"
+  done
+done
+grep -q '"figure": "balanced@cartpole.pole_mass=1.5"' transfer/summary.json ||
+  fail "transfer's summary does not pair the arms under each condition"
 
 # An LQR supervisor designed from the plant in the loop: the cart-pole's linearisation.
 "$program" run "${quick[@]}" --set supervisor.kind=lqr --set 'arms=[pd_only]' --no-figures \

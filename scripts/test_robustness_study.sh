@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The robustness study end to end, small (analytic plant, 2 seeds): a refused command leaves
 # nothing that would refuse the corrected one; it writes a table of every perturbation's
-# values; killed part-way and run again, it ends with the bytes of an uninterrupted study;
-# and it refuses a folder it did not make.
+# values; killed part-way (a SIGKILL while training, cbbg's fault hook while training and
+# after publishing) and run again, it ends with the bytes of an uninterrupted study; and it
+# refuses a folder it did not make.
 #   test_robustness_study.sh BUILD_DIR
 set -euo pipefail
 export CBBG="$(cd "$1" && pwd)/apps/cbbg"
@@ -41,28 +42,38 @@ rows="$(grep -c '^| [a-z]' "$whole/robustness.md")"
 grep -q '^| body mass and inertias x | 1 | .*/10 | .*/10 | 10/10 |$' "$whole/robustness.md" ||
   fail "the nominal robot's row is not 2 seeds x 5 angles per arm with pd_only balancing all"
 
-# Killed while its second sweep runs, then run again.
-setsid "$study" --seeds 2 --jobs 2 --out "$scratch/killed" >/dev/null 2>&1 &
+# Killed while the transfer run trains (one job, so that it lasts), then run again.
+setsid "$study" --seeds 2 --jobs 1 --out "$scratch/killed" >/dev/null 2>&1 &
 pid=$!
-for _ in $(seq 1 300); do
-  [[ -d "$scratch/killed/com_height_scale.partial" ]] && break
-  sleep 0.05
+for _ in $(seq 1 400); do
+  compgen -G "$scratch/killed/transfer.partial/tasks/*.run" >/dev/null && break
+  sleep 0.02
 done
 kill -KILL -- "-$pid" 2>/dev/null || true
 wait "$pid" 2>/dev/null || true
 # A SIGKILL is delivered, not done: the group's cbbg may hold its lock a moment longer.
 for _ in $(seq 1 250); do pgrep -g "$pid" >/dev/null || break; sleep 0.02; done
-[[ ! -f "$scratch/killed/robustness.md" ]] || fail "the kill came too late to test a resume"
+[[ -d "$scratch/killed/transfer.partial" && ! -f "$scratch/killed/robustness.md" ]] ||
+  fail "the kill came too late to test a resume"
 "$study" --seeds 2 --jobs 2 --out "$scratch/killed" >/dev/null 2>&1
 diff -r "$whole" "$scratch/killed" || fail "the resumed study differs from the whole one"
 
-# Stopped after its first sweep was published and before cbbg had cleaned it up (cbbg's fault
-# hook), then run again: the merge must finish that sweep.
+# Stopped by cbbg's fault hook after some tasks were kept, then run again.
+status=0
+CBBG_FAULT_AT=task:record@3 "$study" --seeds 2 --jobs 1 --out "$scratch/faulted" \
+  >/dev/null 2>&1 || status=$?
+[[ "$status" == 86 && -d "$scratch/faulted/transfer.partial" ]] ||
+  fail "the fault hook did not stop the study while it trained (exit $status)"
+"$study" --seeds 2 --jobs 2 --out "$scratch/faulted" >/dev/null 2>&1
+diff -r "$whole" "$scratch/faulted" || fail "the study stopped while training differs"
+
+# Stopped after the results were published and before cbbg had cleaned up (cbbg's fault
+# hook), then run again: the resume must finish the commit.
 status=0
 CBBG_FAULT_AT=commit:clean "$study" --seeds 2 --jobs 2 --out "$scratch/published" \
   >/dev/null 2>&1 || status=$?
-[[ "$status" == 86 && -e "$scratch/published/body_mass_scale/.cbbg-sweep-run" ]] ||
-  fail "the fault hook did not stop the study after its first publish (exit $status)"
+[[ "$status" == 86 && -e "$scratch/published/transfer/.cbbg-run" ]] ||
+  fail "the fault hook did not stop the study after its publish (exit $status)"
 "$study" --seeds 2 --jobs 2 --out "$scratch/published" >/dev/null 2>&1
 diff -r "$whole" "$scratch/published" ||
   fail "the study stopped after a publish and run again differs from the whole one"
@@ -83,5 +94,5 @@ status=0
   grep -q "^robustness_study.sh: --seeds must be a whole number from 1 to 10000; got '0'" \
     "$scratch/err" ||
   fail "--seeds 0 was not refused with exit 2 before any folder was made: $(cat "$scratch/err")"
-echo "test_robustness_study: refusals leave nothing; 21 rows; killed, or stopped after a" \
-  "publish, and run again to the same bytes; foreign folders refused"
+echo "test_robustness_study: refusals leave nothing; 21 rows; killed while training, or" \
+  "stopped after a publish, and run again to the same bytes; foreign folders refused"

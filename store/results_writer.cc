@@ -114,8 +114,64 @@ std::string skill_json(const ExperimentResults& results, std::size_t arm) {
   return json.str();
 }
 
-// One figure per seed of arm `arm`: exp1's failures before success, or exp3's trials to the
-// skill (max_trials + 1 where it was not reached).
+// A text as a JSON string.
+std::string json_text(const std::string& text) {
+  std::string json = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') json += '\\';
+    json += c;
+  }
+  json += '"';
+  return json;
+}
+
+// The names of the runs' own figures (SeedRun::figures), the first run's order. Throws
+// std::runtime_error when two runs name different figures (their columns would differ).
+std::vector<std::string> figure_names(const ExperimentResults& results) {
+  std::vector<std::string> names;
+  const SeedRun* first = nullptr;
+  for (const SeedRun& run : results.runs) {
+    std::vector<std::string> own;
+    for (const auto& figure : run.figures) own.push_back(figure.name);
+    if (first == nullptr) {
+      first = &run;
+      names = own;
+    } else if (own != names) {
+      throw std::runtime_error("the runs of " + results.experiment + " record different figures (" +
+                               first->arm + " seed " + std::to_string(first->seed) + " and " +
+                               run.arm + " seed " + std::to_string(run.seed) + ")");
+    }
+  }
+  return names;
+}
+
+double figure_of(const SeedRun& run, const std::string& name) {
+  for (const auto& figure : run.figures) {
+    if (figure.name == name) return figure.value;
+  }
+  return NAN;
+}
+
+// Per arm, each of the runs' own figures summed over the seeds ("" when there are none).
+std::string figures_json(const ExperimentResults& results, std::size_t arm) {
+  const std::vector<std::string> names = figure_names(results);
+  if (names.empty()) return "";
+  std::string json = ",\n      \"figures\": {";
+  for (std::size_t f = 0; f < names.size(); ++f) {
+    double total = 0.0;
+    for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+      total += figure_of(results.run(arm, s), names[f]);
+    }
+    if (f > 0) json += ", ";
+    json += json_text(names[f]);
+    json += ": ";
+    json += json_number(total);
+  }
+  return json + "}";
+}
+
+// One figure per seed of arm `arm`: exp1's failures before success, exp3's trials to the
+// skill (max_trials + 1 where it was not reached), or one of the runs' own figures.
 std::vector<double> per_seed(const ExperimentResults& results, std::size_t arm,
                              const std::string& figure, long long max_trials) {
   std::vector<double> values;
@@ -123,8 +179,10 @@ std::vector<double> per_seed(const ExperimentResults& results, std::size_t arm,
     const SeedRun& run = results.run(arm, s);
     if (figure == "trials_to_skill") {
       values.push_back(static_cast<double>(run.trials_to_skill.value_or(max_trials + 1)));
-    } else {
+    } else if (figure == "failures_before_success") {
       values.push_back(run.failures_before_success);
+    } else {
+      values.push_back(figure_of(run, figure));
     }
   }
   return values;
@@ -136,6 +194,9 @@ std::string paired_json(const ExperimentResults& results, const config::Config& 
   if (results.arms.size() < 2 || !shape.paired) return "";
   std::vector<std::string> figures{"failures_before_success"};
   if (shape.skill) figures.push_back("trials_to_skill");
+  for (const std::string& name : figure_names(results)) {
+    if (shape.pairs_figure && shape.pairs_figure(name)) figures.push_back(name);
+  }
   const auto max_trials = config::read_parameters(config).run.max_trials;
   std::ostringstream json;
   json << "  \"paired\": [";
@@ -145,7 +206,7 @@ std::string paired_json(const ExperimentResults& results, const config::Config& 
       const experiments::PairedComparison c = experiments::compare_paired(
           per_seed(results, 0, figure, max_trials), per_seed(results, b, figure, max_trials));
       json << separator << "    {\"a\": \"" << results.arms[0] << "\", \"b\": \"" << results.arms[b]
-           << "\", \"figure\": \"" << figure << "\", \"mean_b_minus_a\": " << number(c.mean)
+           << "\", \"figure\": " << json_text(figure) << ", \"mean_b_minus_a\": " << number(c.mean)
            << ", \"ci95\": [" << number(c.ci_low) << ", " << number(c.ci_high)
            << "], \"b_greater\": " << c.positive << ", \"b_less\": " << c.negative
            << ", \"ties\": " << c.ties << ", \"sign_test_p\": " << number(c.sign_test_p) << "}";
@@ -211,6 +272,17 @@ void write_steps_csv(const ExperimentResults& results, const std::filesystem::pa
 
 }  // namespace
 
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string field = "\"";
+  for (const char c : text) {
+    if (c == '"') field += '"';
+    field += c;
+  }
+  field += '"';
+  return field;
+}
+
 double median(std::vector<int> values) {
   std::sort(values.begin(), values.end());
   const std::size_t n = values.size();
@@ -264,6 +336,25 @@ std::string evaluation_csv(const ExperimentResults& results) {
   return csv;
 }
 
+std::string figures_csv(const ExperimentResults& results) {
+  const std::vector<std::string> names = figure_names(results);
+  std::string csv = "arm,seed";
+  for (const std::string& name : names) {
+    csv += ',';
+    csv += csv_field(name);
+  }
+  csv += '\n';
+  for (const SeedRun& run : results.runs) {
+    csv += run.arm + "," + std::to_string(run.seed);
+    for (const auto& figure : run.figures) {
+      csv += ',';
+      csv += number(figure.value);
+    }
+    csv += '\n';
+  }
+  return csv;
+}
+
 std::string summary_json(const ExperimentResults& results, const config::Config& config) {
   const config::Parameters parameters = config::read_parameters(config);
   std::ostringstream json;
@@ -292,7 +383,8 @@ std::string summary_json(const ExperimentResults& results, const config::Config&
     json << "      \"median\": " << json_number(median(failures)) << ",\n";
     json << "      \"min\": " << *std::min_element(failures.begin(), failures.end()) << ",\n";
     json << "      \"max\": " << *std::max_element(failures.begin(), failures.end());
-    json << evaluation_json(results, a) << weights_diverged_json(results, a);
+    json << evaluation_json(results, a) << weights_diverged_json(results, a)
+         << figures_json(results, a);
     if (experiments::results_shape(results.experiment).skill) json << skill_json(results, a);
     json << "\n    }";
   }
@@ -321,6 +413,9 @@ void write_result_files(const ExperimentResults& results, const config::Config& 
   write_atomically(directory / "trials.csv", trials_csv(results));
   if (experiments::results_shape(results.experiment).evaluates) {
     write_atomically(directory / "evaluation.csv", evaluation_csv(results));
+  }
+  if (!figure_names(results).empty()) {
+    write_atomically(directory / "figures.csv", figures_csv(results));
   }
   for (const SeedRun& run : results.runs) {
     if (run.weights) {

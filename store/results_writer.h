@@ -1,7 +1,8 @@
 #pragma once
 // Writes the files of a results directory (README "Results directory"): config.yaml,
-// summary.json, trials.csv, evaluation.csv, steps.csv, weights/. They go into a run's work
-// directory (run_directory.h), which its commit then publishes.
+// summary.json, trials.csv, evaluation.csv, figures.csv (a protocol's own per-seed figures),
+// steps.csv, weights/. They go into a run's work directory (run_directory.h), which its commit
+// then publishes.
 
 #include <filesystem>
 #include <string>
@@ -25,11 +26,16 @@ config::Config recorded_config(const ExperimentResults& results, config::Config 
 void write_result_files(const ExperimentResults& results, const config::Config& config,
                         const std::filesystem::path& directory, const TaskStore* store = nullptr);
 
+// A text as a CSV field: quoted when it holds a comma or a quote (a list value, say).
+std::string csv_field(const std::string& text);
+
 // The median of per-seed counts (the mean of the middle two for an even count).
 double median(std::vector<int> values);
 
 std::string summary_json(const ExperimentResults& results, const config::Config& config);
 std::string trials_csv(const ExperimentResults& results);
 std::string evaluation_csv(const ExperimentResults& results);
+// Per arm and seed, the runs' own figures (SeedRun::figures), a column each.
+std::string figures_csv(const ExperimentResults& results);
 
 }  // namespace cbbg::store

@@ -12,18 +12,6 @@ namespace cbbg::store {
 
 namespace {
 
-// A CSV field: quoted when it holds a comma or a quote (a list value, say).
-std::string field(const std::string& text) {
-  if (text.find_first_of(",\"") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  quoted += '"';
-  return quoted;
-}
-
 // The evaluation runs (exp1, exp3) of one arm over the seeds, and how many balanced.
 struct Evaluated {
   int runs = 0;
@@ -76,7 +64,7 @@ std::string sweep_csv(const config::Sweep& sweep,
     csv += ',';
     csv += text;
   };
-  for (const auto& axis : sweep.axes()) column(field(axis.key));
+  for (const auto& axis : sweep.axes()) column(csv_field(axis.key));
   for (const char* fixed : {"arm", "seeds", "succeeded"}) column(fixed);
   for (const char* suffix : {"_median", "_min", "_max"}) column(name + suffix);
   for (const char* evaluation : {"evaluated", "balanced", "balance_rate"}) column(evaluation);
@@ -85,7 +73,7 @@ std::string sweep_csv(const config::Sweep& sweep,
     const experiments::ExperimentResults& point = results[p];
     for (std::size_t a = 0; a < point.arms.size(); ++a) {
       csv += point_name(p, results.size());
-      for (const std::string& value : sweep.values(p)) column(field(value));
+      for (const std::string& value : sweep.values(p)) column(csv_field(value));
       append_arm_figures(point, a, column);
       csv += '\n';
     }

@@ -61,6 +61,16 @@ TrialOutcome read_outcome(std::istringstream& in, const std::string& source) {
   return outcome;
 }
 
+// "VALUE NAME": the name is the rest of the line, spaces and all.
+experiments::SeedFigure read_figure(std::istringstream& in, const std::string& source) {
+  std::string value;
+  in >> value;
+  std::string name;
+  std::getline(in >> std::ws, name);
+  if (name.empty()) throw std::runtime_error(source + ": a figure without a name");
+  return {name, parse_double(value, source)};
+}
+
 bool all_digits(const std::string& text) {
   return !text.empty() &&
          std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
@@ -138,6 +148,9 @@ std::string serialize_run(const SeedRun& run) {
     write_outcome(out, record.outcome);
     out << "\n";
   }
+  for (const experiments::SeedFigure& figure : run.figures) {
+    out << "figure " << format_number(figure.value) << ' ' << figure.name << "\n";
+  }
   out << "end\n";
   return out.str();
 }
@@ -203,6 +216,8 @@ SeedRun parse_run(const std::string& text, const std::string& source) {
       record.theta0 = parse_double(theta0, source);
       record.outcome = read_outcome(in, source);
       run.evaluation.push_back(record);
+    } else if (key == "figure") {
+      run.figures.push_back(read_figure(in, source));
     } else if (key == "end") {
       ended = true;
     } else {

@@ -3,6 +3,7 @@
 // until a trial succeeds, then from trial.theta0 until one succeeds there (or max_trials);
 // then its learnt actor is evaluated as exp1's is. Its own key: curriculum.first_angle.
 
+#include <string>
 #include <vector>
 
 #include <cbbg/config/declared_keys.h>
@@ -22,7 +23,8 @@ struct CurriculumParams {
 };
 
 // One seed of one arm: `run` records every trial; failures_before_success counts the
-// failures on the way to the first success from trial.theta0.
+// failures on the way to the first success from trial.theta0, and the seed's own figure
+// warm_up_trials the trials from the first angle (figures.csv; paired across arms).
 inline void curriculum_seed(const cbbg::config::Parameters& p, const cbbg::diagrams::Arm& arm,
                             const cbbg::experiments::TelemetryOptions& telemetry,
                             const cbbg::experiments::LearntWeights* initial_weights,
@@ -32,7 +34,9 @@ inline void curriculum_seed(const cbbg::config::Parameters& p, const cbbg::diagr
       cbbg::config::read_section<CurriculumParams>(p.own, "curriculum").first_angle;
   SeedLoop seed(p, arm, telemetry, initial_weights, run.seed);
   bool warmed_up = false;
+  int warm_up_trials = 0;
   for (int trial = 1; trial <= p.run.max_trials; ++trial) {
+    if (!warmed_up) ++warm_up_trials;
     const TrialRecord record =
         next_trial(p, seed.runner, trial, warmed_up ? p.trial.theta0 : first);
     run.trials.push_back(record);
@@ -47,6 +51,7 @@ inline void curriculum_seed(const cbbg::config::Parameters& p, const cbbg::diagr
       ++run.failures_before_success;
     }
   }
+  run.figures.push_back({"warm_up_trials", static_cast<double>(warm_up_trials)});
   finish_run(p, arm, seed.loop, seed.runner.context(), run);
 }
 
@@ -56,10 +61,13 @@ inline void register_curriculum() {
       {.name = "curriculum",
        .meaning = "per arm and seed: trials from curriculum.first_angle until a success, then "
                   "from trial.theta0 until one",
-       .run = [](const cbbg::config::Parameters& p, const std::vector<cbbg::diagrams::Arm>& arms,
-                 const cbbg::experiments::ExperimentOptions& options) {
-         return cbbg::experiments::run_per_arm("curriculum", curriculum_seed, p, arms, options);
-       }});
+       .run =
+           [](const cbbg::config::Parameters& p, const std::vector<cbbg::diagrams::Arm>& arms,
+              const cbbg::experiments::ExperimentOptions& options) {
+             return cbbg::experiments::run_per_arm("curriculum", curriculum_seed, p, arms, options);
+           },
+       .results = {
+           .pairs_figure = [](const std::string& figure) { return figure == "warm_up_trials"; }}});
 }
 
 }  // namespace cartpole

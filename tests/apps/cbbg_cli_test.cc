@@ -87,8 +87,41 @@ TEST_F(CbbgCommand, OutOfRangeAndNonFiniteValuesExitTwo) {
   outcome = cbbg("run --experiment exp4 --out " + out.string());
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(outcome.output,
-            "cbbg: error: --experiment exp4: experiment must be one of exp1, exp2, exp3, cbbg, "
-            "cbbg_weighted, bg_only, cb_only, pd_only; got 'exp4'\n");
+            "cbbg: error: --experiment exp4: experiment must be one of exp1, exp2, exp3, evaluate, "
+            "transfer, cbbg, cbbg_weighted, bg_only, cb_only, pd_only; got 'exp4'\n");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// A protocol's own check refuses before anything is written, in one line, exit 2.
+TEST_F(CbbgCommand, AProtocolsOwnRefusalsExitTwoAndWriteNothing) {
+  const fs::path out = scratch_ / "results";
+  Outcome outcome = cbbg("run --experiment evaluate --set arms=[cbbg] --out " + out.string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.output,
+            "cbbg: error: the evaluate protocol tests the weights of --load-weights; arm 'cbbg' "
+            "learns and none were given\n");
+  outcome = cbbg("run --experiment transfer --set transfer.conditions=[critic.gamma=0.5] --out " +
+                 out.string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.output,
+            "cbbg: error: transfer.conditions[0]: a condition sets what the evaluation sees: keys "
+            "of evaluation.*, plant.* (not plant.kind), sensors.*, push.* or a registered "
+            "section; got 'critic.gamma'\n");
+  outcome = cbbg(
+      "run --experiment transfer --set transfer.conditions=[evaluation.noise_std=-1] "
+      "--out " +
+      out.string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_EQ(outcome.output,
+            "cbbg: error: --set transfer.conditions=[evaluation.noise_std=-1]: "
+            "transfer.conditions[0]: evaluation.noise_std must be >= 0; got -1\n");
+  outcome = cbbg(
+      "run --experiment transfer --grid transfer.training=exp1,exp3 "
+      "--set transfer.conditions=[plant.kind=analytic] --out " +
+      out.string());
+  EXPECT_EQ(outcome.exit_code, 2);
+  EXPECT_THAT(outcome.output, HasSubstr("cbbg: error: grid point 001: transfer.conditions[0]: a "
+                                        "condition sets what the evaluation sees"));
   EXPECT_FALSE(fs::exists(out));
 }
 

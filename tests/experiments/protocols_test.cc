@@ -81,13 +81,45 @@ TEST(Protocols, ARegisteredProtocolRunsByItsName) {
               ThrowsMessage<std::invalid_argument>("protocol 'norun' has no run"));
 }
 
+// evaluate: no training, the given weights evaluated per seed as exp1 evaluates what it
+// learnt; without weights, an arm that learns is refused before any work.
+TEST(Protocols, EvaluateTestsTheGivenWeightsAsExp1EvaluatesWhatItLearnt) {
+  config::Config config;
+  config.set("plant.kind=analytic");
+  config.set("arms=[bg_only]");
+  config.set("seeds=1");
+  config.set("max_trials=3");
+  const ExperimentResults exp1 = run_experiment(diagrams::validated_parameters(config));
+  ASSERT_TRUE(exp1.runs[0].weights.has_value());
+  config.set("experiment=evaluate");
+  ExperimentOptions options;
+  options.initial_weights = &*exp1.runs[0].weights;
+  const ExperimentResults evaluated =
+      run_experiment(diagrams::validated_parameters(config), options);
+  EXPECT_EQ(evaluated.experiment, "evaluate");
+  ASSERT_EQ(evaluated.runs.size(), 1U);
+  EXPECT_TRUE(evaluated.runs[0].trials.empty());
+  ASSERT_EQ(evaluated.runs[0].evaluation.size(), exp1.runs[0].evaluation.size());
+  for (std::size_t e = 0; e < exp1.runs[0].evaluation.size(); ++e) {
+    EXPECT_EQ(evaluated.runs[0].evaluation[e].outcome.steps,
+              exp1.runs[0].evaluation[e].outcome.steps);
+    EXPECT_EQ(evaluated.runs[0].evaluation[e].outcome.final_theta,
+              exp1.runs[0].evaluation[e].outcome.final_theta);
+  }
+  EXPECT_THAT([&] { run_experiment(diagrams::validated_parameters(config)); },
+              ThrowsMessage<config::ConfigError>(
+                  "the evaluate protocol tests the weights of --load-weights; arm 'bg_only' "
+                  "learns and none were given"));
+}
+
 // The results directory, sweeps, the console and the checks read a protocol's ResultsShape;
 // only its own files (and the parameters it declares) spell its name.
 TEST(Protocols, NoCodeOutsideAProtocolsFilesNamesIt) {
   const std::filesystem::path source = CBBG_SOURCE_DIR;
-  const std::vector<std::filesystem::path> own{source / "experiments" / "protocols.cc",
-                                               source / "experiments" / "experiments.cc",
-                                               source / "config" / "parameters.h"};
+  const std::vector<std::filesystem::path> own{
+      source / "experiments" / "protocols.cc", source / "experiments" / "experiments.cc",
+      source / "experiments" / "transfer.h", source / "experiments" / "transfer.cc",
+      source / "config" / "parameters.h"};
   int files = 0;
   for (const char* folder :
        {"apps", "blocks", "config", "diagrams", "experiments", "plant", "replay", "store"}) {
@@ -99,7 +131,8 @@ TEST(Protocols, NoCodeOutsideAProtocolsFilesNamesIt) {
       std::ifstream in(entry.path());
       std::stringstream text;
       text << in.rdbuf();
-      for (const char* name : {"\"exp1\"", "\"exp2\"", "\"exp3\""}) {
+      for (const char* name :
+           {"\"exp1\"", "\"exp2\"", "\"exp3\"", "\"evaluate\"", "\"transfer\""}) {
         EXPECT_EQ(text.str().find(name), std::string::npos) << entry.path() << ": " << name;
       }
     }

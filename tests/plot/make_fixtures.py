@@ -138,14 +138,19 @@ def make_exp2(directory, seeds=(1, 2), trial_count=25):
             temperature_value = temperature(k1, trial) * (1 + 0.05 * (seed - 1))
             # The oscillation dies out faster as k1, and with it the exploration, falls.
             samples = pitch_curve(-0.05 - 0.6 / (1 + k1), 0.9 + 0.02 * trial, True)
+            tail = [theta for t, theta in samples if t >= 5.0] or [samples[-1][1]]
+            rms = (sum(theta * theta for theta in tail) / len(tail)) ** 0.5
             trial_rows.append(f"cbbg,{seed},{trial},0,{round(DURATION / PERIOD)},"
                               f"{temperature_value:.6f},{entropy_bits(temperature_value):.6f},"
-                              f"{samples[-1][1]:.6f},success")
+                              f"{samples[-1][1]:.6f},success,{rms:.6f},"
+                              f"{max(tail) - min(tail):.6f},0.01")
             steps += step_rows("cbbg", seed, trial, samples)
     summary = {"experiment": "exp2", "plant": "analytic", "seeds": list(seeds),
                "arms": {"cbbg": {"num_succeeded": len(seeds)}}}
     write(directory, "summary.json", json.dumps(summary, indent=2) + "\n")
-    write(directory, "trials.csv", "\n".join([TRIALS_HEADER] + trial_rows) + "\n")
+    # exp2's trials.csv has the oscillation columns (what the plot tells exp2's results by).
+    header = TRIALS_HEADER + ",pitch_rms,pitch_peak_to_peak,mean_forward_speed"
+    write(directory, "trials.csv", "\n".join([header] + trial_rows) + "\n")
     write(directory, "config.yaml", config_yaml("exp2", ["cbbg"], list(seeds), 100))
     write(directory, "steps.csv", "\n".join([STEPS_HEADER] + steps) + "\n")
 

@@ -104,16 +104,16 @@ class PlotResults(unittest.TestCase):
         make_fixtures.make_exp2(results)
         result = run_script(results)
         self.assertEqual(result.returncode, 0, result.stderr)
-        self.assert_figures(results, ["temperature_entropy.png", "pitch_early_late.png"],
-                            result.stdout)
+        self.assert_figures(results, ["temperature_entropy.png", "pitch_early_late.png",
+                                      "oscillation.png"], result.stdout)
 
     def test_single_seed_exp2_draws_without_spread(self):
         results = os.path.join(self.root, "exp2")
         make_fixtures.make_exp2(results, seeds=(4,))
         result = run_script(results)
         self.assertEqual(result.returncode, 0, result.stderr)
-        self.assert_figures(results, ["temperature_entropy.png", "pitch_early_late.png"],
-                            result.stdout)
+        self.assert_figures(results, ["temperature_entropy.png", "pitch_early_late.png",
+                                      "oscillation.png"], result.stdout)
 
     def test_without_step_log_skips_pitch_figures_with_a_note(self):
         results = os.path.join(self.root, "exp1")

@@ -1,11 +1,12 @@
 #!/usr/bin/python3
-"""Tests of the sweep figures of scripts/plot_results.py and of scripts/robustness_report.py
-on synthetic sweep directories.
+"""Tests of the sweep figures of scripts/plot_results.py on synthetic sweep directories, and
+of scripts/robustness_report.py on a synthetic transfer run's figures.csv.
 
 Run them all:  /usr/bin/python3 tests/plot/sweep_reports_test.py
 """
 
 import os
+import shutil
 import struct
 import subprocess
 import sys
@@ -64,15 +65,32 @@ class SweepReports(unittest.TestCase):
                        "  push_start: 5\n  push_duration: 0.5\n")
         return directory
 
+    def write_transfer(self, columns, rows):
+        """DIR/transfer/: figures.csv of `columns` (after arm, seed) and `rows`, config.yaml."""
+        directory = os.path.join(self.root, "transfer")
+        os.makedirs(directory)
+        with open(os.path.join(directory, "figures.csv"), "w") as file:
+            file.write(",".join(["arm", "seed"] + columns) + "\n")
+            file.writelines(",".join(str(field) for field in row) + "\n" for row in rows)
+        with open(os.path.join(directory, "config.yaml"), "w") as file:
+            file.write("experiment: transfer\nseeds: 2\nplant:\n  kind: analytic\n"
+                       "evaluation:\n  push_start: 5\n  push_duration: 0.5\n"
+                       "transfer:\n  training: exp3\n")
+        return directory
+
     def study(self):
+        """Two seeds of cbbg and pd_only under two masses and two pushes, 5 angles each."""
         os.makedirs(self.root, exist_ok=True)
         open(os.path.join(self.root, ".cbbg-robustness-study"), "w").close()
-        self.write_sweep("body_mass_scale", "evaluation.body_mass_scale",
-                         [(0.7, "cbbg", 9), (0.7, "pd_only", 10), (1.3, "cbbg", 4),
-                          (1.3, "pd_only", 10)])
-        self.write_sweep("push_torque", "evaluation.push_torque",
-                         [(0, "cbbg", 9), (0, "pd_only", 10), (5, "cbbg", 0),
-                          (5, "pd_only", 7)])
+        conditions = ["evaluation.body_mass_scale=0.7", "evaluation.body_mass_scale=1.3",
+                      "evaluation.push_torque=0", "evaluation.push_torque=5"]
+        columns = [f"{what}@{condition}" for condition in conditions
+                   for what in ("balanced", "evaluated")]
+        balanced = {("cbbg", 1): [5, 2, 5, 0], ("cbbg", 2): [4, 2, 4, 0],
+                    ("pd_only", 1): [5, 5, 5, 4], ("pd_only", 2): [5, 5, 5, 3]}
+        rows = [[arm, seed] + [field for b in counts for field in (b, 5)]
+                for (arm, seed), counts in balanced.items()]
+        return self.write_transfer(columns, rows)
 
     def test_a_sweep_with_balance_rates_gets_the_evaluation_panel(self):
         with_rates = self.write_sweep("rates", "evaluation.noise_std",
@@ -120,26 +138,32 @@ class SweepReports(unittest.TestCase):
         leftovers = [n for n in os.listdir(self.root) if n.startswith(".robustness")]
         self.assertEqual(leftovers, [])
 
-    def test_a_sweep_of_another_key_is_refused(self):
-        self.study()
-        os.rename(os.path.join(self.root, "push_torque"), os.path.join(self.root, "noise_std"))
+    def test_a_missing_or_malformed_figures_csv_is_refused_naming_it(self):
         result = run(REPORT, self.root)
         self.assertEqual(result.returncode, 2)
-        self.assertIn("noise_std/sweep.csv: sweeps evaluation.push_torque; expected "
-                      "evaluation.noise_std alone", result.stderr)
+        self.assertIn("transfer/figures.csv: missing", result.stderr)
+        directory = self.write_transfer(["trials"], [["cbbg", 1, 3]])
+        result = run(REPORT, self.root)
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("figures.csv: has no balanced@ column", result.stderr)
+        shutil.rmtree(directory)
+        self.write_transfer(["balanced@evaluation.noise_std=0"], [["cbbg", 1, 3]])
+        result = run(REPORT, self.root)
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("has no evaluated@evaluation.noise_std=0 column", result.stderr)
 
-    def test_an_empty_folder_and_a_sweep_without_evaluation_are_refused(self):
+    def test_a_malformed_count_names_the_file_and_line(self):
+        self.write_transfer(["balanced@evaluation.noise_std=0", "evaluated@evaluation.noise_std=0"],
+                            [["cbbg", 1, 3, 5], ["cbbg", 2, "lots", 5]])
         result = run(REPORT, self.root)
         self.assertEqual(result.returncode, 2)
-        self.assertIn("holds none of the sweeps body_mass_scale, com_height_scale, noise_std, "
-                      "push_torque", result.stderr)
-        self.write_sweep("noise_std", "evaluation.noise_std", [(0, "cbbg", 0)], balance=False)
-        result = run(REPORT, self.root)
-        self.assertEqual(result.returncode, 2)
-        self.assertIn("line 2: no balance_rate", result.stderr)
+        self.assertIn("figures.csv: line 3: balanced@evaluation.noise_std=0 'lots' is not a "
+                      "number", result.stderr)
+        self.assertNotIn("Traceback", result.stderr)
 
     def test_outputs_it_did_not_make_are_kept(self):
-        self.write_sweep("noise_std", "evaluation.noise_std", [(0, "cbbg", 9)])
+        self.write_transfer(["balanced@evaluation.noise_std=0", "evaluated@evaluation.noise_std=0"],
+                            [["cbbg", 1, 3, 5]])
         mine = os.path.join(self.root, "robustness.md")
         with open(mine, "w") as file:
             file.write("my notes\n")

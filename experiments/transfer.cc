@@ -1,0 +1,96 @@
+#include "cbbg/experiments/transfer.h"
+
+#include <string_view>
+
+#include "cbbg/config/config.h"
+#include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/evaluation_conditions.h"
+#include "cbbg/experiments/experiments.h"
+#include "cbbg/experiments/protocol_kit.h"
+
+namespace cbbg::experiments {
+namespace {
+
+// What a condition may change: what the evaluation sees, never what is learnt or how.
+bool condition_may_set(const std::string& key, const config::Parameters& p) {
+  for (const char* section : {"evaluation.", "sensors.", "push."}) {
+    if (key.starts_with(section)) return true;
+  }
+  if (key.starts_with("plant.")) return key != "plant.kind";
+  return p.own.values.contains(key);
+}
+
+TransferCondition applied(const config::Parameters& p, const std::string& entry,
+                          const std::string& label) {
+  for (const auto& [key, value] : config::split_settings(entry)) {
+    if (!condition_may_set(key, p)) {
+      throw config::ConfigError(label +
+                                ": a condition sets what the evaluation sees: keys of "
+                                "evaluation.*, plant.* (not plant.kind), sensors.*, "
+                                "push.* or a registered section; got '" +
+                                key + "'");
+    }
+  }
+  const std::string source = label + " '" + entry + "'";
+  try {
+    TransferCondition condition{entry, diagrams::validated_with_settings(p, entry, source),
+                                !diagrams::settings_change(p, entry)};
+    check_evaluation_conditions(condition.parameters);
+    return condition;
+  } catch (const config::ConfigError& error) {
+    if (std::string_view(error.what()).starts_with(source)) throw;
+    throw config::ConfigError(source + ": " + error.what());
+  }
+}
+
+int balanced(const std::vector<EvaluationRecord>& records) {
+  int count = 0;
+  for (const auto& record : records) count += record.outcome.status == TrialStatus::kSuccess;
+  return count;
+}
+
+}  // namespace
+
+std::vector<TransferCondition> transfer_conditions(const config::Parameters& p) {
+  std::vector<TransferCondition> conditions;
+  const std::vector<std::string>& entries = p.transfer.conditions;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    conditions.push_back(applied(p, entries[i], "transfer.conditions[" + std::to_string(i) + "]"));
+  }
+  return conditions;
+}
+
+std::vector<TransferCondition> check_transfer(const config::Parameters& p,
+                                              const std::vector<diagrams::Arm>& arms) {
+  std::vector<TransferCondition> conditions = transfer_conditions(p);
+  for (const auto& condition : conditions) {
+    if (!changes_robot(condition.parameters.evaluation)) continue;
+    for (const auto& arm : arms) {
+      check_plant_takes_conditions(condition.parameters.evaluation,
+                                   arm.learner(condition.parameters));
+    }
+  }
+  return conditions;
+}
+
+ExperimentResults run_transfer(const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+                               const ExperimentOptions& options) {
+  const std::vector<TransferCondition> conditions = check_transfer(p, arms);
+  const PerSeed train = p.transfer.training == config::TransferTraining::kUntilSuccess
+                            ? PerSeed(run_until_success)
+                            : PerSeed(run_until_skill);
+  const PerSeed per_seed = [&](const config::Parameters& q, const diagrams::Arm& arm,
+                               const TelemetryOptions& telemetry,
+                               const LearntWeights* initial_weights, SeedRun& run) {
+    train(q, arm, telemetry, initial_weights, run);
+    for (const TransferCondition& condition : conditions) {
+      const std::vector<EvaluationRecord> records =
+          condition.changes_nothing ? run.evaluation : evaluate_run(condition.parameters, arm, run);
+      run.figures.push_back({"balanced@" + condition.name, double(balanced(records))});
+      run.figures.push_back({"evaluated@" + condition.name, double(records.size())});
+    }
+  };
+  return run_per_arm("transfer", per_seed, p, arms, options);
+}
+
+}  // namespace cbbg::experiments

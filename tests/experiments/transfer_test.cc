@@ -1,0 +1,152 @@
+// transfer: one training per arm and seed, evaluated under each condition; a condition's
+// figures are those of exp3 run with that setting, and its record and results keep them.
+
+#include "cbbg/experiments/transfer.h"
+
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/protocols.h"
+#include "cbbg/store/results_writer.h"
+#include "cbbg/store/task_store.h"
+
+namespace cbbg::experiments {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+using ::testing::ThrowsMessage;
+
+config::Config small_transfer() {
+  config::Config config;
+  config.set("plant.kind=analytic");
+  config.set("experiment=transfer");
+  config.set("arms=[bg_only, pd_only]");
+  config.set("seeds=2");
+  config.set("max_trials=6");
+  config.set("evaluation.angles=[0.1, 0.2]");
+  config.set(
+      "transfer.conditions=[evaluation.body_mass_scale=1.3, evaluation.noise_std=0.05; "
+      "evaluation.push_torque=2]");
+  return config;
+}
+
+int balanced(const std::vector<EvaluationRecord>& records) {
+  int count = 0;
+  for (const auto& record : records) count += record.outcome.status == TrialStatus::kSuccess;
+  return count;
+}
+
+TEST(Transfer, AConditionsFiguresAreThoseOfExp3RunWithItsSetting) {
+  const config::Config config = small_transfer();
+  const ExperimentResults transfer = run_experiment(diagrams::validated_parameters(config));
+  ASSERT_EQ(transfer.runs.size(), 4U);
+  const std::vector<std::pair<std::string, std::vector<std::string>>> conditions{
+      {"evaluation.body_mass_scale=1.3", {"evaluation.body_mass_scale=1.3"}},
+      {"evaluation.noise_std=0.05; evaluation.push_torque=2",
+       {"evaluation.noise_std=0.05", "evaluation.push_torque=2"}}};
+  for (std::size_t c = 0; c < conditions.size(); ++c) {
+    config::Config alone = config;
+    alone.set("experiment=exp3");
+    for (const std::string& setting : conditions[c].second) alone.set(setting);
+    const ExperimentResults exp3 = run_experiment(diagrams::validated_parameters(alone));
+    for (std::size_t task = 0; task < transfer.runs.size(); ++task) {
+      const SeedRun& run = transfer.runs[task];
+      ASSERT_EQ(run.figures.size(), 4U);
+      EXPECT_EQ(run.figures[2 * c].name, "balanced@" + conditions[c].first);
+      EXPECT_EQ(run.figures[2 * c].value, balanced(exp3.runs[task].evaluation)) << task;
+      EXPECT_EQ(run.figures[2 * c + 1].name, "evaluated@" + conditions[c].first);
+      EXPECT_EQ(run.figures[2 * c + 1].value, double(exp3.runs[task].evaluation.size()));
+      // The training is exp3's, whatever the evaluation.
+      EXPECT_EQ(run.trials.size(), exp3.runs[task].trials.size());
+    }
+  }
+}
+
+TEST(Transfer, ItsRecordAndResultsKeepTheFigures) {
+  const config::Config config = small_transfer();
+  const ExperimentResults results = run_experiment(diagrams::validated_parameters(config));
+  const SeedRun back = store::parse_run(store::serialize_run(results.runs[0]), "record");
+  EXPECT_EQ(back.figures, results.runs[0].figures);
+  const std::string csv = store::figures_csv(results);
+  EXPECT_THAT(csv, HasSubstr("arm,seed,balanced@evaluation.body_mass_scale=1.3,"
+                             "evaluated@evaluation.body_mass_scale=1.3,"
+                             "balanced@evaluation.noise_std=0.05; evaluation.push_torque=2,"));
+  EXPECT_THAT(csv, HasSubstr("\npd_only,1,2,2,2,2\n"));  // the supervisor alone copes
+  const std::string summary = store::summary_json(results, config);
+  EXPECT_THAT(summary, HasSubstr("\"figures\": {\"balanced@evaluation.body_mass_scale=1.3\": 4"));
+  // Paired over the balanced figures, not over how many ran.
+  EXPECT_THAT(summary, HasSubstr("\"figure\": \"balanced@evaluation.body_mass_scale=1.3\""));
+  EXPECT_THAT(summary, Not(HasSubstr("\"figure\": \"evaluated@")));
+}
+
+// A condition that sets the run's own values takes the run's evaluation, the same records.
+TEST(Transfer, AConditionThatChangesNothingTakesTheRunsOwnEvaluation) {
+  config::Config config = small_transfer();
+  config.set("transfer.conditions=[evaluation.noise_std=0, evaluation.noise_std=0.05]");
+  const config::Parameters p = diagrams::validated_parameters(config);
+  const std::vector<TransferCondition> conditions = transfer_conditions(p);
+  ASSERT_EQ(conditions.size(), 2U);
+  EXPECT_TRUE(conditions[0].changes_nothing);
+  EXPECT_FALSE(conditions[1].changes_nothing);
+  const ExperimentResults results = run_experiment(p);
+  for (const SeedRun& run : results.runs) {
+    EXPECT_EQ(run.figures[0].value, balanced(run.evaluation));
+    EXPECT_EQ(run.figures[1].value, double(run.evaluation.size()));
+  }
+}
+
+TEST(Transfer, AConditionSetsOnlyWhatTheEvaluationSees) {
+  config::Config config = small_transfer();
+  config.set("transfer.conditions=[critic.gamma=0.5]");
+  EXPECT_THAT([&] { transfer_conditions(diagrams::validated_parameters(config)); },
+              ThrowsMessage<config::ConfigError>(
+                  "transfer.conditions[0]: a condition sets what the evaluation sees: keys of "
+                  "evaluation.*, plant.* (not plant.kind), sensors.*, push.* or a registered "
+                  "section; got 'critic.gamma'"));
+  config.set("transfer.conditions=[evaluation.body_mass_scale=1e308]");
+  EXPECT_THAT([&] { transfer_conditions(diagrams::validated_parameters(config)); },
+              ThrowsMessage<config::ConfigError>(
+                  HasSubstr("transfer.conditions[0] 'evaluation.body_mass_scale=1e308': ")));
+}
+
+TEST(Transfer, TheConfigChecksEachSettingAsItArrives) {
+  config::Config config;
+  EXPECT_THAT([&] { config.set("transfer.conditions=[evaluation.body_mas_scale=2]"); },
+              ThrowsMessage<config::ConfigError>(
+                  "--set transfer.conditions=[evaluation.body_mas_scale=2]: "
+                  "transfer.conditions[0]: unknown key 'evaluation.body_mas_scale'; did you mean "
+                  "'evaluation.body_mass_scale'?"));
+  EXPECT_THAT([&] { config.set("transfer.conditions=[evaluation.noise_std=-1]"); },
+              ThrowsMessage<config::ConfigError>(
+                  "--set transfer.conditions=[evaluation.noise_std=-1]: transfer.conditions[0]: "
+                  "evaluation.noise_std must be >= 0; got -1"));
+  EXPECT_THAT([&] { config.set("transfer.conditions=[evaluation.noise_std]"); },
+              ThrowsMessage<config::ConfigError>(
+                  HasSubstr("transfer.conditions[0] must be key=value (several joined by ';')")));
+  EXPECT_THAT([&] { config.set("transfer.conditions=[]"); },
+              ThrowsMessage<config::ConfigError>(
+                  HasSubstr("transfer.conditions must be a non-empty list of settings")));
+  config.set("transfer.conditions=[push.torque=1; evaluation.noise_std=0.1]");
+  EXPECT_EQ(config::split_settings(config.names("transfer.conditions")[0]),
+            (std::vector<std::pair<std::string, std::string>>{{"push.torque", "1"},
+                                                              {"evaluation.noise_std", "0.1"}}));
+  config::Config back;
+  back.merge_yaml(config.to_yaml(), "config.yaml");
+  EXPECT_EQ(back, config);
+}
+
+TEST(Transfer, IsARegisteredProtocolWhoseResultsPairTheBalancedFigures) {
+  const Protocol* transfer = find_protocol("transfer");
+  ASSERT_NE(transfer, nullptr);
+  ASSERT_TRUE(transfer->results.pairs_figure);
+  EXPECT_TRUE(transfer->results.pairs_figure("balanced@evaluation.noise_std=0.1"));
+  EXPECT_FALSE(transfer->results.pairs_figure("evaluated@evaluation.noise_std=0.1"));
+}
+
+}  // namespace
+}  // namespace cbbg::experiments
