@@ -17,6 +17,12 @@ int balanced_trials(const SeedRun& run) {
   }));
 }
 
+std::vector<diagrams::Arm> named_arms(const std::vector<std::string>& names) {
+  std::vector<diagrams::Arm> arms;
+  for (const auto& name : names) arms.push_back(diagrams::named_arm(name));
+  return arms;
+}
+
 // evaluate's figure: the evaluation runs that balanced.
 int balanced_evaluations(const SeedRun& run) {
   return static_cast<int>(std::count_if(run.evaluation.begin(), run.evaluation.end(),
@@ -60,9 +66,7 @@ std::vector<Protocol>& registry() {
           const ExperimentOptions& options) { return run_evaluation(p, arms, options); },
        {.paired = false, .headline = "balanced", .headline_of = balanced_evaluations},
        [](const config::Parameters& p, const LearntWeights* initial_weights) {
-         std::vector<diagrams::Arm> arms;
-         for (const auto& name : p.run.arms) arms.push_back(diagrams::named_arm(name));
-         check_evaluation(p, arms, initial_weights);
+         check_evaluation(p, named_arms(p.run.arms), initial_weights);
        }},
       {"transfer",
        "per arm and seed: one training (transfer.training), then evaluated under each of "
@@ -72,9 +76,7 @@ std::vector<Protocol>& registry() {
           const ExperimentOptions& options) { return run_transfer(p, arms, options); },
        {.pairs_figure = [](const std::string& figure) { return figure.starts_with("balanced@"); }},
        [](const config::Parameters& p, const LearntWeights*) {
-         std::vector<diagrams::Arm> arms;
-         for (const auto& name : p.run.arms) arms.push_back(diagrams::named_arm(name));
-         check_transfer(p, arms);
+         check_transfer(p, named_arms(p.run.arms));
        }},
   };
   return all;
@@ -127,10 +129,7 @@ std::vector<std::string> experiment_arms(const config::RunParams& run) {
 ExperimentResults run_experiment(const config::Parameters& parameters,
                                  const ExperimentOptions& options) {
   check_run_names(parameters.run);
-  std::vector<diagrams::Arm> arms;
-  for (const auto& name : experiment_arms(parameters.run)) {
-    arms.push_back(diagrams::named_arm(name));
-  }
+  const std::vector<diagrams::Arm> arms = named_arms(experiment_arms(parameters.run));
   if (const Protocol* protocol = find_protocol(parameters.run.experiment)) {
     return protocol->run(parameters, arms, options);
   }

@@ -49,8 +49,8 @@ same="the same bytes"
 cmp -s "$out/baseline/robustness.md" "$out/this/robustness.md" || same="DIFFERENT"
 printf '| study (%s plant, %s seeds, %s jobs) | CPU s | wall s |\n|---|---|---|\n' \
   "$plant" "$seeds" "$jobs"
-printf '| %s (one sweep per perturbation) | %s | %s |\n' "${commit:0:7}" "$base_cpu" "$base_wall"
-printf '| this tree (transfer: one training) | %s | %s |\n' "$this_cpu" "$this_wall"
+printf '| %s (its own script and cbbg) | %s | %s |\n' "${commit:0:7}" "$base_cpu" "$base_wall"
+printf '| this tree | %s | %s |\n' "$this_cpu" "$this_wall"
 awk -v a="$base_cpu" -v b="$this_cpu" 'BEGIN { printf "CPU ratio: %.1fx less\n", a / b }'
 echo "robustness.md of the two: $same"
 [[ "$same" == "the same bytes" ]] || diff "$out/baseline/robustness.md" "$out/this/robustness.md" || true
