@@ -87,7 +87,8 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
         stored[kOmega] = context.input(omega)[0];
         has_previous_.of(next)[0] = 1.0;
         return EventStatus::succeeded();
-      });
+      },
+      UpdateWrites::kInPlace);  // every part is read before it is written
 }
 
 ConstVectorView Actor::weights(const Context& context) const {

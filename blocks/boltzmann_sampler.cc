@@ -29,7 +29,7 @@ BoltzmannSampler::BoltzmannSampler(std::string name, const SamplerParams& params
     return EventStatus::succeeded();
   };
   declare_initialization_update(draw);
-  declare_periodic_update(period, 0.0, draw);
+  declare_periodic_update(period, 0.0, draw, UpdateWrites::kInPlace);  // writes only
 }
 
 }  // namespace cbbg::blocks

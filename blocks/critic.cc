@@ -37,7 +37,8 @@ Critic::Critic(std::string name, int num_features, const CriticParams& params, d
       [this](const BlockContext& context, VectorRef delta) { delta[0] = td_error(context); },
       {features_, reward_, failed_}, "delta_{t-1}");
   declare_periodic_update(
-      period, 0.0, [this, &td_error_port](BlockContext& context, VectorRef next) {
+      period, 0.0,
+      [this, &td_error_port](BlockContext& context, VectorRef next) {
         const auto state = context.discrete_state();
         if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
           const double delta = context.output(td_error_port)[0];  // computed at this instant
@@ -48,7 +49,8 @@ Critic::Critic(std::string name, int num_features, const CriticParams& params, d
         previous_features_.of(next) = context.input(*features_);
         has_previous_.of(next)[0] = 1.0;
         return EventStatus::succeeded();
-      });
+      },
+      UpdateWrites::kInPlace);  // every part is read before it is written
 }
 
 double Critic::td_error(const BlockContext& context) const {

@@ -5,8 +5,8 @@
 
 #include "cbbg/blocks/measured_signals.h"
 #include "cbbg/blocks/parameter_checks.h"
-#include "cbbg/blocks/riccati.h"
 #include "cbbg/framework/block_context.h"
+#include "cbbg/framework/control/lqr.h"
 #include "cbbg/plant/linearization.h"
 
 namespace cbbg::blocks {
@@ -32,9 +32,8 @@ LqrSupervisor::LqrSupervisor(std::string name, const plant::LinearModel& model,
   const Eigen::Vector4d q(params.lqr_q[0], params.lqr_q[1], params.lqr_q[2], params.lqr_q[3]);
   const Eigen::MatrixXd Q = q.asDiagonal();
   const Eigen::MatrixXd R = Eigen::MatrixXd::Constant(1, 1, params.lqr_r);
-  Eigen::MatrixXd X;
   try {
-    X = solve_continuous_riccati(model.A, model.B, Q, R);
+    gain_ = control::lqr(model.A, model.B, Q, R).K.row(0);
   } catch (const std::invalid_argument& error) {
     throw std::invalid_argument(
         "supervisor.lqr_q = [" + format_number(q[0]) + ", " + format_number(q[1]) + ", " +
@@ -44,7 +43,6 @@ LqrSupervisor::LqrSupervisor(std::string name, const plant::LinearModel& model,
         "the cost): " +
         error.what());
   }
-  gain_ = (model.B.transpose() * X / params.lqr_r).row(0);
 
   const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");
   declare_output_port(

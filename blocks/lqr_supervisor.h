@@ -39,9 +39,10 @@ struct LqrSupervisorParams {
 ///
 /// Equations: x = (theta_b, phi, theta_b', phi') with phi = (phi_l + phi_r) / 2,
 /// a_S = -K x, K = R^-1 B' X, X the stabilising solution of the continuous-time algebraic
-/// Riccati equation A' X + X A - X B R^-1 B' X + Q = 0 (riccati.h) for the robot linearised
-/// upright with both wheels driven alike (plant::linearize_planar_upright, or the linearisation
-/// of another plant, 4 states and 1 input in that order), Q = diag(q), R = r.
+/// Riccati equation A' X + X A - X B R^-1 B' X + Q = 0 (control::lqr, framework/control/lqr.h)
+/// for the robot linearised upright with both wheels driven alike
+/// (plant::linearize_planar_upright, or the linearisation of another plant, 4 states and 1
+/// input in that order), Q = diag(q), R = r.
 /// K is computed once, at construction.
 /// Parameters: the plant's linearisation, q = supervisor.lqr_q, r = supervisor.lqr_r.
 class LqrSupervisor final : public Block {

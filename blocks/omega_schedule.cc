@@ -57,10 +57,13 @@ OmegaSchedule::OmegaSchedule(std::string name, const OmegaParams& params, double
         omega[0] = omega_at(context.discrete_state()[0]);
       },
       {}, "omega(t)");
-  declare_periodic_update(period, 0.0, [](BlockContext& context, VectorRef next) {
-    next[0] = context.discrete_state()[0] + 1.0;
-    return EventStatus::succeeded();
-  });
+  declare_periodic_update(
+      period, 0.0,
+      [](BlockContext& context, VectorRef next) {
+        next[0] = context.discrete_state()[0] + 1.0;
+        return EventStatus::succeeded();
+      },
+      UpdateWrites::kInPlace);  // reads the count, then writes it
 }
 
 double OmegaSchedule::omega_at(double ticks) const {

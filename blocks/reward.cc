@@ -37,11 +37,14 @@ Reward::Reward(std::string name, const RewardParams& params, double period)
         }
       },
       {&measured, &failed}, "r_{t-1}: 0 if s^2 did not grow, -1 if it did or on failure");
-  declare_periodic_update(period, 0.0, [=](BlockContext& context, VectorRef next) {
-    previous_surface.of(next)[0] = surface(context);
-    has_previous.of(next)[0] = 1.0;
-    return EventStatus::succeeded();
-  });
+  declare_periodic_update(
+      period, 0.0,
+      [=](BlockContext& context, VectorRef next) {
+        previous_surface.of(next)[0] = surface(context);
+        has_previous.of(next)[0] = 1.0;
+        return EventStatus::succeeded();
+      },
+      UpdateWrites::kInPlace);  // reads no state
 }
 
 }  // namespace cbbg::blocks

@@ -49,7 +49,7 @@ Sensors::Sensors(std::string name, const SensorsParams& params, double period,
     return EventStatus::succeeded();
   };
   declare_initialization_update(draw);
-  declare_periodic_update(period, 0.0, draw);
+  declare_periodic_update(period, 0.0, draw, UpdateWrites::kInPlace);  // writes only
 }
 
 void Sensors::draw_noise(RandomGenerator& generator, VectorRef noise) const {

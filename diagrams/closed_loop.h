@@ -21,6 +21,7 @@
 #include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/diagrams/telemetry.h"
 #include "cbbg/framework/diagram.h"
+#include "cbbg/framework/simulator.h"
 #include "cbbg/plant/robot_plant.h"
 
 namespace cbbg::diagrams {
@@ -36,8 +37,9 @@ struct ClosedLoop {
   // for the presets), in the order they were built, and their notes for a weights file.
   blocks::FeatureLayout layout;
   std::vector<std::string> layout_notes;
-  const Diagram* controller = nullptr;  // kControllerDiagnostics' comment: its ports
-  double accuracy = 1e-6;               // the simulator's (plant.accuracy)
+  const Diagram* controller = nullptr;      // kControllerDiagnostics' comment: its ports
+  double accuracy = 1e-6;                   // the simulator's (plant.accuracy)
+  Schedule schedule = Schedule::kCompiled;  // the simulator's (bench/diagrams compares both)
 
   // Whether the controller has the diagnostic output `name` (the telemetry's is NaN if not).
   bool outputs(const char* name) const {

@@ -67,7 +67,8 @@ std::string steps_csv_header(const plant::SignalIndex& signals) {
 TrialRunner::TrialRunner(const diagrams::ClosedLoop& loop, std::uint64_t seed, double period,
                          TelemetryOptions telemetry)
     : loop_(&loop),
-      simulator_(*loop.diagram, SimulatorOptions{.accuracy = loop.accuracy}, seed),
+      simulator_(*loop.diagram,
+                 SimulatorOptions{.accuracy = loop.accuracy, .schedule = loop.schedule}, seed),
       telemetry_(&simulator_.add_log(*loop.telemetry, period)),
       period_(period),
       options_(std::move(telemetry)),

@@ -1,7 +1,13 @@
 #include "cbbg/framework/block.h"
 
+#include <cxxabi.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <memory>
 #include <stdexcept>
+#include <typeinfo>
 
 #include "cbbg/framework/diagram.h"
 #include "cbbg/framework/names.h"
@@ -15,6 +21,18 @@ Block::Block(std::string name) : name_(std::move(name)) {
 }
 
 Block::~Block() = default;
+
+std::string Block::type_name() const {
+  const char* mangled = typeid(*this).name();
+  int status = 0;
+  std::unique_ptr<char, void (*)(void*)> demangled(
+      abi::__cxa_demangle(mangled, nullptr, nullptr, &status), std::free);
+  std::string type = status == 0 ? demangled.get() : mangled;
+  // Namespaces go, template arguments stay: "cbbg::blocks::Actor" -> "Actor".
+  const auto arguments = type.find('<');
+  const auto last_scope = type.rfind("::", arguments);
+  return last_scope == std::string::npos ? type : type.substr(last_scope + 2);
+}
 
 std::string Block::path() const {
   return parent_ == nullptr ? name_ : parent_->path() + "/" + name_;
@@ -117,7 +135,7 @@ const InputPort& Block::declare_input_port(std::string name, int size, std::stri
 
 const OutputPort& Block::declare_output_port(std::string name, int size, OutputFunction calc,
                                              std::vector<const InputPort*> reads,
-                                             std::string description) {
+                                             std::string description, OutputSources sources) {
   check_new_port_name(name, size);
   for (const auto& port : outputs_) {
     if (port.name() == name) {
@@ -135,6 +153,7 @@ const OutputPort& Block::declare_output_port(std::string name, int size, OutputF
   }
   output_functions_.push_back(std::move(calc));
   output_reads_.push_back(std::move(read_indices));
+  output_sources_.push_back(sources);
   return outputs_.emplace_back(*this, num_output_ports(), std::move(name), size,
                                std::move(description));
 }
@@ -177,7 +196,8 @@ const StatePart& Block::discrete_state_part(std::string_view name) const {
                               "'; it has: " + (known.empty() ? "none" : known));
 }
 
-void Block::declare_periodic_update(double period, double offset, UpdateFunction update) {
+void Block::declare_periodic_update(double period, double offset, UpdateFunction update,
+                                    UpdateWrites writes) {
   if (!std::isfinite(period) || period <= 0.0) {
     throw std::invalid_argument("block '" + path() +
                                 "': a periodic update needs a positive, finite period; got " +
@@ -188,7 +208,18 @@ void Block::declare_periodic_update(double period, double offset, UpdateFunction
                                 "': a periodic update needs a finite offset >= 0; got " +
                                 std::to_string(offset));
   }
-  periodic_updates_.push_back({period, offset, std::move(update)});
+  if (writes == UpdateWrites::kInPlace && !periodic_updates_.empty()) {
+    throw std::invalid_argument("block '" + path() +
+                                "': an update that writes in place must be the block's only "
+                                "periodic update");
+  }
+  if (std::any_of(periodic_updates_.begin(), periodic_updates_.end(),
+                  [](const PeriodicUpdate& u) { return u.writes == UpdateWrites::kInPlace; })) {
+    throw std::invalid_argument("block '" + path() +
+                                "': its update writes in place, so it can have no other "
+                                "periodic update");
+  }
+  periodic_updates_.push_back({period, offset, std::move(update), writes});
 }
 
 void Block::declare_initialization_update(UpdateFunction update) {

@@ -51,10 +51,32 @@ using DerivativeFunction = std::function<void(const BlockContext&, VectorRef der
 // Advances a self-integrating block's continuous state to `end_time`; its inputs are held.
 using AdvanceFunction = std::function<void(BlockContext&, double end_time)>;
 
+// Where a periodic update writes its block's next discrete state.
+enum class UpdateWrites {
+  // Into a copy: context.discrete_state() keeps the values from before the instant.
+  kCopy,
+  // Into the state itself, which saves copying it at every instant: next_state and
+  // context.discrete_state() are the same memory. Only for an update that reads each element of
+  // its state before writing it (as x = x + dx does), and its block's only periodic update.
+  // The interpreted schedule (SimulatorOptions) copies all the same.
+  kInPlace,
+};
+
 struct PeriodicUpdate {
   double period;
   double offset;
   UpdateFunction update;
+  UpdateWrites writes = UpdateWrites::kCopy;
+};
+
+// What an output reads besides the inputs it lists.
+enum class OutputSources {
+  // Anything of its block: time, continuous and discrete state, parameters.
+  kAnything,
+  // Only its block's discrete state and parameters: never time or continuous state. Such an
+  // output holds still between events wherever its inputs do, so the simulator computes it once
+  // per interval instead of at every stage of the integrator.
+  kDiscreteState,
 };
 
 struct Parameter {
@@ -89,6 +111,9 @@ class Block {
   Block& operator=(const Block&) = delete;
 
   const std::string& name() const { return name_; }
+  // What kind of block it is, for pictures and messages: its C++ class without namespaces
+  // ("PdSupervisor", a user's "LeanSupervisor"), which a block may override.
+  virtual std::string type_name() const;
   // Names from the root diagram down, joined by '/': "cbbg/controller/critic".
   std::string path() const;
   const Diagram* parent() const { return parent_; }
@@ -114,6 +139,9 @@ class Block {
   }
   // Inputs that the output reads directly (direct feedthrough), by input index.
   const std::vector<int>& output_reads(int output_index) const;
+  OutputSources output_sources(int output_index) const {
+    return output_sources_[static_cast<std::size_t>(output_index)];
+  }
   const Vector& initial_discrete_state() const { return initial_discrete_state_; }
   // The named parts of the discrete state, in declaration order, back to back.
   const std::vector<StatePart>& discrete_state_parts() const { return state_parts_; }
@@ -141,14 +169,16 @@ class Block {
   // none, which is what breaks feedback loops.
   const OutputPort& declare_output_port(std::string name, int size, OutputFunction calc,
                                         std::vector<const InputPort*> reads,
-                                        std::string description = {});
+                                        std::string description = {},
+                                        OutputSources sources = OutputSources::kAnything);
   // A numeric parameter stored in the context, so it can change between runs (annealing)
   // and differ between cloned contexts. Returns its index for BlockContext::parameter.
   int declare_parameter(std::string name, Vector default_value);
   // Appends a named part to the discrete state and returns where it lies. Parts marked
   // kPerTrial are reset to `initial_value` at each trial; the others persist.
   StatePart declare_discrete_state(std::string name, Vector initial_value, StateLifetime lifetime);
-  void declare_periodic_update(double period, double offset, UpdateFunction update);
+  void declare_periodic_update(double period, double offset, UpdateFunction update,
+                               UpdateWrites writes = UpdateWrites::kCopy);
   // Runs once when a simulation is initialised, before the events at the initial time.
   void declare_initialization_update(UpdateFunction update);
   void declare_continuous_state(Vector initial_value, DerivativeFunction derivatives);
@@ -167,6 +197,7 @@ class Block {
   std::deque<OutputPort> outputs_;
   std::vector<OutputFunction> output_functions_;
   std::vector<std::vector<int>> output_reads_;
+  std::vector<OutputSources> output_sources_;
   Vector initial_discrete_state_;
   std::vector<StatePart> state_parts_;
   Vector initial_continuous_state_;

@@ -75,6 +75,7 @@ void Diagram::finalize() {
   assign_signal_offsets();
   sort_outputs();
   check_continuous_coupling_and_schedule();
+  split_continuous_inputs();
   assign_state_offsets();
 }
 
@@ -297,6 +298,28 @@ void Diagram::check_continuous_coupling_and_schedule() {
   continuous_input_order_.clear();
   for (const OutputSlot& slot : evaluation_order_) {
     if (needed[static_cast<size_t>(node_of(slot))]) continuous_input_order_.push_back(slot);
+  }
+}
+
+void Diagram::split_continuous_inputs() {
+  // In evaluation order an output's sources come before it, so one pass decides every node.
+  std::vector<char> holds_still(static_cast<size_t>(num_nodes_), 0);
+  for (const OutputSlot& slot : evaluation_order_) {
+    const Block& block = *leaves_[static_cast<size_t>(slot.leaf)].block;
+    bool still = block.output_sources(slot.port) == OutputSources::kDiscreteState;
+    for (const int input : block.output_reads(slot.port)) {
+      const InputSource& source =
+          input_sources_[static_cast<size_t>(slot.leaf)][static_cast<size_t>(input)];
+      if (source.output.leaf >= 0)
+        still = still && holds_still[static_cast<size_t>(node_of(source.output))];
+    }
+    holds_still[static_cast<size_t>(node_of(slot))] = still ? 1 : 0;
+  }
+  interval_input_order_.clear();
+  stage_input_order_.clear();
+  for (const OutputSlot& slot : continuous_input_order_) {
+    (holds_still[static_cast<size_t>(node_of(slot))] ? interval_input_order_ : stage_input_order_)
+        .push_back(slot);
   }
 }
 

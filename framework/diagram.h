@@ -55,6 +55,13 @@ class Diagram : public Block {
   // The flattened tree (valid for the root diagram).
   const std::vector<LeafLayout>& leaves() const { return leaves_; }
   const std::vector<OutputSlot>& evaluation_order() const { return evaluation_order_; }
+  // The outputs that continuous blocks read, in evaluation order: all of them, and the same
+  // split in two for the compiled schedule: those that hold still between events (declared
+  // OutputSources::kDiscreteState, reading only such outputs or fixed values), computed once
+  // per interval, and the others, computed at every stage of the integrator.
+  const std::vector<OutputSlot>& continuous_input_order() const { return continuous_input_order_; }
+  const std::vector<OutputSlot>& interval_input_order() const { return interval_input_order_; }
+  const std::vector<OutputSlot>& stage_input_order() const { return stage_input_order_; }
   int leaf_index(const Block& leaf) const;
   // The leaf output behind `port`, following exported outputs of nested diagrams.
   OutputSlot resolve_output(const OutputPort& port) const;
@@ -94,6 +101,7 @@ class Diagram : public Block {
   void assign_signal_offsets();
   void sort_outputs();
   void check_continuous_coupling_and_schedule();
+  void split_continuous_inputs();
   void assign_state_offsets();
   // Output nodes upstream of `slot` through direct feedthrough, `slot` included.
   void mark_upstream(OutputSlot slot, std::vector<char>& marked) const;
@@ -116,6 +124,8 @@ class Diagram : public Block {
   int num_nodes_ = 0;            // output ports of all leaves
   std::vector<OutputSlot> evaluation_order_;
   std::vector<OutputSlot> continuous_input_order_;
+  std::vector<OutputSlot> interval_input_order_;
+  std::vector<OutputSlot> stage_input_order_;
   std::vector<int> root_input_offsets_;
   std::vector<int> ode_leaves_;
   std::vector<int> self_integrating_leaves_;

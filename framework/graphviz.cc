@@ -70,9 +70,26 @@ std::string fixed_node_id(const InputPort& port) {
   return dot_quoted(port.block().path() + ".in." + port.name() + ".fixed");
 }
 
-// A block drawn as one box: name on top, inputs left, outputs right (a block without inputs
-// or without outputs has one column). A collapsed diagram's name sits on a grey band, so the
-// reader knows there is more inside.
+// Text for an HTML-like label: its markup characters escaped.
+std::string html_text(const std::string& text) {
+  std::string escaped;
+  for (const char c : text) {
+    if (c == '<') {
+      escaped += "&lt;";
+    } else if (c == '>') {
+      escaped += "&gt;";
+    } else if (c == '&') {
+      escaped += "&amp;";
+    } else {
+      escaped += c;
+    }
+  }
+  return escaped;
+}
+
+// A block drawn as one box: name and, under it, type on top, inputs left, outputs right (a
+// block without inputs or without outputs has one column). A collapsed diagram's name sits on
+// a grey band, so the reader knows there is more inside.
 std::string box_label(const Block& block) {
   const int inputs = block.num_input_ports();
   const int outputs = block.num_output_ports();
@@ -81,7 +98,8 @@ std::string box_label(const Block& block) {
   std::string label = R"(<<table border="0" cellborder="1" cellspacing="0" cellpadding="4">)";
   label += R"(<tr><td colspan=")" + std::to_string(columns) + R"(")" +
            (block.is_diagram() ? R"( bgcolor="lightgrey")" : "") + "><b>" + block.name() +
-           "</b></td></tr>";
+           R"(</b><br/><font point-size="10">)" + html_text(block.type_name()) +
+           "</font></td></tr>";
   for (int row = 0; row < std::max(inputs, outputs); ++row) {
     label += "<tr>";
     if (row < inputs) {

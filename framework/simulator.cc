@@ -79,6 +79,7 @@ SignalLog& Simulator::add_log(const OutputPort& port, double period, double offs
     // Joins a running schedule: only the new log's samples are added, nothing fires again.
     group_of(period, offset, first_event_index(period, offset, context_->time()))
         .logs.push_back(static_cast<int>(logs_.size()) - 1);
+    find_next_event();
   }
   return log;
 }
@@ -118,15 +119,27 @@ void Simulator::schedule_events() {
     group_of(period, offset, first_event_index(period, offset, now))
         .logs.push_back(static_cast<int>(l));
   }
+  find_next_event();
 }
 
-double Simulator::next_event_time() const {
-  double next = std::numeric_limits<double>::infinity();
-  for (const auto& group : groups_) next = std::min(next, group.next_time());
-  return next;
+void Simulator::find_next_event() {
+  next_event_ = std::numeric_limits<double>::infinity();
+  for (const auto& group : groups_) next_event_ = std::min(next_event_, group.next_time());
 }
 
 SimulationStatus Simulator::run_updates(const Updates& updates) {
+  if (options_.schedule == Schedule::kInterpreted) return run_interpreted_updates(updates);
+  SimulationStatus status;
+  const char* reason = compiled_.run_updates(updates, &status.terminated_by);
+  if (reason != nullptr) {
+    status.terminated = true;
+    status.reason = reason;
+  }
+  check_discrete_state_finite(updates);
+  return status;
+}
+
+SimulationStatus Simulator::run_interpreted_updates(const Updates& updates) {
   Context& context = *context_;
   context.next_discrete_states() = context.discrete_states();
   SimulationStatus status;
@@ -142,9 +155,18 @@ SimulationStatus Simulator::run_updates(const Updates& updates) {
       status.reason = result.reason();
     }
   }
+  // Swapped, not copied back: the two buffers trade places at every instant.
   context.discrete_states().swap(context.next_discrete_states());
   check_discrete_state_finite(updates);
   return status;
+}
+
+void Simulator::evaluate_outputs() {
+  if (options_.schedule == Schedule::kCompiled) {
+    compiled_.evaluate_outputs();
+  } else {
+    diagram_->evaluate_outputs(*context_);
+  }
 }
 
 void Simulator::check_discrete_state_finite(const Updates& updates) const {
@@ -176,10 +198,13 @@ SimulationStatus Simulator::initialize() {
     }
   }
   last_status_ = SimulationStatus{};
+  // Initialisation updates always copy the state (an in-place promise is the periodic
+  // update's), so they run interpreted, before the plan is laid out on the storage they swap.
   if (!due_updates_.empty()) {
     diagram_->evaluate_outputs(*context_);
-    last_status_ = run_updates(due_updates_);
+    last_status_ = run_interpreted_updates(due_updates_);
   }
+  if (options_.schedule == Schedule::kCompiled) compiled_.compile(*diagram_, *context_);
   last_status_.time = context_->time();
   terminated_ = last_status_.terminated;
   initialized_ = true;
@@ -189,23 +214,25 @@ SimulationStatus Simulator::initialize() {
 SimulationStatus Simulator::handle_events(double time) {
   ++num_event_instants_;
   Context& context = *context_;
-  diagram_->evaluate_outputs(context);
+  evaluate_outputs();
   const Updates* due = nullptr;  // one group's list, or due_updates_ when groups coincide
+  next_event_ = std::numeric_limits<double>::infinity();  // found in the same pass
   for (EventGroup& group : groups_) {
-    if (!same_instant(group.next_time(), time)) continue;
-    ++group.next;
-    for (const int l : group.logs) {
-      logs_[static_cast<size_t>(l)].record(
-          time, context.signals().data() + log_offsets_[static_cast<size_t>(l)]);
+    if (same_instant(group.next_time(), time)) {
+      ++group.next;
+      for (const int l : group.logs) {
+        logs_[static_cast<size_t>(l)].record(
+            time, context.signals().data() + log_offsets_[static_cast<size_t>(l)]);
+      }
+      if (!group.updates.empty() && due == nullptr) {
+        due = &group.updates;
+      } else if (!group.updates.empty()) {
+        if (due != &due_updates_) due_updates_.assign(due->begin(), due->end());
+        due_updates_.insert(due_updates_.end(), group.updates.begin(), group.updates.end());
+        due = &due_updates_;
+      }
     }
-    if (group.updates.empty()) continue;
-    if (due == nullptr) {
-      due = &group.updates;
-      continue;
-    }
-    if (due != &due_updates_) due_updates_.assign(due->begin(), due->end());
-    due_updates_.insert(due_updates_.end(), group.updates.begin(), group.updates.end());
-    due = &due_updates_;
+    next_event_ = std::min(next_event_, group.next_time());
   }
   if (due == nullptr) return SimulationStatus{};
   // Coinciding groups run in leaf order, each leaf's updates in declaration order (an
@@ -224,7 +251,7 @@ SimulationStatus Simulator::advance_to(double end_time) {
   }
   Context& context = *context_;
   while (!terminated_ && context.time() < end_time) {
-    const double event_time = next_event_time();
+    const double event_time = next_event_;
     if (same_instant(event_time, context.time())) {
       context.set_time(event_time);
       last_status_ = handle_events(event_time);
@@ -242,9 +269,19 @@ SimulationStatus Simulator::advance_to(double end_time) {
 
 void Simulator::integrate_to(double end_time) {
   Context& context = *context_;
+  if (context.continuous_states().size() == 0) {  // a discrete diagram: time only moves on
+    context.set_time(end_time);
+    return;
+  }
   const double start_time = context.time();
-  if (!diagram_->self_integrating_leaves().empty()) {
+  if (options_.schedule == Schedule::kCompiled) {
+    // What holds still over the interval, once; the stages compute the rest.
+    compiled_.evaluate_interval_inputs();
+    if (!diagram_->self_integrating_leaves().empty()) compiled_.evaluate_stage_inputs();
+  } else if (!diagram_->self_integrating_leaves().empty()) {
     diagram_->evaluate_continuous_inputs(context);
+  }
+  if (!diagram_->self_integrating_leaves().empty()) {
     for (const int index : diagram_->self_integrating_leaves()) {
       const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(index)];
       BlockContext view(context, leaf);
@@ -269,10 +306,17 @@ void Simulator::integrate_ode(double start_time, double end_time) {
 
   // The right-hand side writes the trial state into the context, recomputes the outputs the
   // integrated blocks read, and asks each for its derivatives.
-  auto derivatives = [&context, &diagram, size](const Integrator::State& x, Integrator::State& dxdt,
-                                                double t) {
+  const CompiledSchedule* compiled =
+      options_.schedule == Schedule::kCompiled ? &compiled_ : nullptr;
+  auto derivatives = [&context, &diagram, compiled, size](const Integrator::State& x,
+                                                          Integrator::State& dxdt, double t) {
     std::copy_n(x.begin(), size, context.continuous_states().data());
     context.set_time(t);
+    if (compiled != nullptr) {
+      compiled->evaluate_stage_inputs();
+      compiled->compute_derivatives(dxdt.data());
+      return;
+    }
     diagram.evaluate_continuous_inputs(context);
     for (const int index : diagram.ode_leaves()) {
       const LeafLayout& leaf = diagram.leaves()[static_cast<size_t>(index)];

@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "cbbg/framework/compiled_schedule.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/diagram.h"
 #include "cbbg/framework/signal_log.h"
@@ -41,11 +42,21 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// How the simulator walks the diagram at each tick; both compute the same values, bit for bit.
+enum class Schedule {
+  // A flat plan laid out at initialize() (compiled_schedule.h): the default.
+  kCompiled,
+  // The diagram's tables walked at every tick, the whole discrete state copied at every
+  // instant: the simple way, kept to compare against (bench/framework).
+  kInterpreted,
+};
+
 struct SimulatorOptions {
   // Relative and absolute error tolerance of the continuous integrator.
   double accuracy = 1e-6;
   // The integrator gives up (SimulationError) when its step falls below this.
   double min_step = 1e-12;
+  Schedule schedule = Schedule::kCompiled;
 };
 
 struct SimulationStatus {
@@ -101,7 +112,8 @@ class Simulator {
 
   void check_root_inputs() const;
   void schedule_events();
-  double next_event_time() const;
+  // The earliest instant of any group, into next_event_ (handle_events keeps it as it goes).
+  void find_next_event();
   SimulationStatus handle_events(double time);
   void integrate_to(double end_time);
   void integrate_ode(double start_time, double end_time);
@@ -110,6 +122,8 @@ class Simulator {
   EventGroup& group_of(double period, double offset, long long next);
   void check_discrete_state_finite(const Updates& updates) const;
   SimulationStatus run_updates(const Updates& updates);
+  SimulationStatus run_interpreted_updates(const Updates& updates);
+  void evaluate_outputs();
 
   const Diagram* diagram_;
   std::unique_ptr<Context> context_;
@@ -117,8 +131,10 @@ class Simulator {
   std::deque<SignalLog> logs_;
   std::vector<int> log_offsets_;  // each log's port in the signals, resolved once
   std::vector<EventGroup> groups_;
+  double next_event_ = 0.0;
   Updates due_updates_;  // initialization updates, or those of groups due together
   std::unique_ptr<Integrator> integrator_;
+  CompiledSchedule compiled_;  // laid out at initialize() when options_.schedule is kCompiled
   bool initialized_ = false;
   bool terminated_ = false;
   SimulationStatus last_status_;

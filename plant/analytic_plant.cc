@@ -60,7 +60,9 @@ AnalyticPlant::AnalyticPlant(std::string name, const RobotParams& params, double
       to_continuous(initial_state_vector(initial_pitch)),
       [this, &torque](const BlockContext& context, VectorRef x_dot) {
         const ConstVectorView tau = context.input(torque);
-        check_torque_finite(*this, tau);
+        // One inline test at every stage; the call that names the culprit only when it fails
+        // (a sum of finite torques is finite unless they are huge, which the call then clears).
+        if (!std::isfinite(tau[kTauLeft] + tau[kTauRight])) check_torque_finite(*this, tau);
         const ConstVectorView x = context.continuous_state();
         if (!x.allFinite()) {
           const Output y = to_output(params_, x);

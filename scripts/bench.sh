@@ -44,8 +44,7 @@ wall() {
 }
 
 b="$root/build/bench"
-bench framework "$b/framework/bench_framework" --benchmark_repetitions=5 \
-  --benchmark_filter='/1$'
+bench framework "$b/framework/bench_framework" --benchmark_repetitions=5
 bench diagrams "$b/diagrams/bench_diagrams" --benchmark_repetitions=5
 bench plant "$b/plant/bench_plant" --benchmark_repetitions=3 \
   --benchmark_filter='Configurations|DiagramOverPlainLoop|AnalyticPlantStep'
@@ -73,3 +72,5 @@ for file in trials.csv evaluation.csv steps.csv summary.json; do
 done
 
 python3 "$root/scripts/bench_table.py" "$out" "$identical" "${against:-constrained}"
+# Instructions per tick, which repeat where timings do not.
+"$root/scripts/count_instructions.sh" "$root/build"

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Installs the built project into a scratch prefix, builds examples/ against it as a user's
-# own project would (find_package(cbbg)), and runs the examples: the framework alone; a
-# user's supervisor through experiment 1 against the cbbg preset, writing a results directory,
-# then sweeping the supervisor's own keys over a 2 x 2 grid; and the cart-pole project through
-# every command (test_cartpole_project.sh).
+# own project would (find_package(cbbg)), and runs the examples: the framework alone (the
+# spring, the toolbox's PID and discrete LQR loops); a user's supervisor through experiment
+# 1 against the cbbg preset, writing a results directory, then sweeping the supervisor's own
+# keys over a 2 x 2 grid; and the cart-pole project through every command
+# (test_cartpole_project.sh).
 # Also runs the installed `cbbg` command, which must find its plotting script by itself.
 #   test_find_package.sh BUILD_DIR
 set -euo pipefail
@@ -33,8 +34,10 @@ cmake_minimum_required(VERSION 3.25)
 project(framework_only LANGUAGES CXX)
 set(CMAKE_CXX_STANDARD 20)
 find_package(cbbg 0.1 REQUIRED COMPONENTS framework)
-add_executable(spring_mass "$examples/spring_mass.cc")
-target_link_libraries(spring_mass PRIVATE cbbg::framework)
+foreach(example spring_mass pid_first_order dlqr_state_space)
+  add_executable(\${example} "$examples/\${example}.cc")
+  target_link_libraries(\${example} PRIVATE cbbg::framework)
+endforeach()
 CMAKE
 cmake -S "$scratch/framework_only" -B "$scratch/framework_only/build" -G Ninja \
   -DCMAKE_PREFIX_PATH="$scratch/prefix" -DCMAKE_DISABLE_FIND_PACKAGE_Simbody=ON \
@@ -42,6 +45,10 @@ cmake -S "$scratch/framework_only" -B "$scratch/framework_only/build" -G Ninja \
 cmake --build "$scratch/framework_only/build" >/dev/null
 "$scratch/framework_only/build/spring_mass" "$scratch/framework_out" >/dev/null
 test -s "$scratch/framework_out/position.csv"
+# The toolbox examples, blocks and control helpers of the framework alone.
+"$scratch/framework_only/build/pid_first_order" "$scratch/framework_out" >/dev/null
+"$scratch/framework_only/build/dlqr_state_space" "$scratch/framework_out" >/dev/null
+test -s "$scratch/framework_out/pid.csv" && test -s "$scratch/framework_out/dlqr.csv"
 
 "$scratch/example/spring_mass" "$scratch/out"
 test -s "$scratch/out/position.csv"

@@ -1,4 +1,5 @@
-// CPU time per trial tick of the cbbg diagram on the analytic plant, run by the
+// CPU time per trial tick of the cbbg diagram on the analytic plant (with either of the
+// simulator's schedules), run by the
 // TrialRunner, against docs/model.md §2 as one plain loop (tests/diagrams/plain_loop.h) that
 // tests/diagrams proves bit-identical to it. Each iteration is the first trial of a fresh
 // learner from the default theta0 and root seed 1, so both sides do exactly the same
@@ -34,9 +35,10 @@ void count_ticks(benchmark::State& state, long long ticks) {
                                                          benchmark::Counter::kInvert);
 }
 
-void BM_DiagramTrial(benchmark::State& state) {
+void run_diagram_trial(benchmark::State& state, Schedule schedule) {
   const config::Parameters parameters = config::read_parameters(analytic_config());
-  const diagrams::ClosedLoop controller = diagrams::build_preset("cbbg", parameters);
+  diagrams::ClosedLoop controller = diagrams::build_preset("cbbg", parameters);
+  controller.schedule = schedule;
   const double theta0 = parameters.trial.theta0;
   const double duration = parameters.trial.duration;
   long long ticks = 0;
@@ -49,6 +51,12 @@ void BM_DiagramTrial(benchmark::State& state) {
     benchmark::DoNotOptimize(outcome.final_theta);
   }
   count_ticks(state, ticks);
+}
+
+void BM_DiagramTrial(benchmark::State& state) { run_diagram_trial(state, Schedule::kCompiled); }
+// The schedule before the compiled one, measured in the same run.
+void BM_DiagramTrialInterpreted(benchmark::State& state) {
+  run_diagram_trial(state, Schedule::kInterpreted);
 }
 
 void BM_PlainLoopTrial(benchmark::State& state) {
@@ -68,6 +76,7 @@ void BM_PlainLoopTrial(benchmark::State& state) {
 }
 
 BENCHMARK(BM_DiagramTrial)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DiagramTrialInterpreted)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlainLoopTrial)->Unit(benchmark::kMillisecond);
 
 }  // namespace
@@ -75,6 +84,6 @@ BENCHMARK(BM_PlainLoopTrial)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
   return cbbg::bench::run_benchmarks_with_ratios(argc, argv, [](const std::string& name) {
-    return name == "BM_DiagramTrial" ? std::string("BM_PlainLoopTrial") : std::string();
+    return name.rfind("BM_DiagramTrial", 0) == 0 ? std::string("BM_PlainLoopTrial") : std::string();
   });
 }

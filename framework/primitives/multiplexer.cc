@@ -17,14 +17,19 @@ Multiplexer::Multiplexer(std::string name, const std::vector<Input>& inputs)
   declare_output_port(
       "y", total,
       [ports](const BlockContext& context, VectorRef y) {
-        // Plain copies: most inputs are a value or two, where Eigen's sized segment
-        // assignment costs more than the copy.
+        // Plain copies: most inputs are one value, where a call to memcpy, or Eigen's sized
+        // segment assignment, costs more than the copy.
         double* out = y.data();
         for (const InputPort* port : ports) {
-          out = std::copy_n(context.input(*port).data(), port->size(), out);
+          const double* in = context.input(*port).data();
+          if (port->size() == 1) {
+            *out++ = *in;
+          } else {
+            out = std::copy_n(in, port->size(), out);
+          }
         }
       },
-      ports, "the inputs, concatenated");
+      ports, "the inputs, concatenated", OutputSources::kDiscreteState);
 }
 
 }  // namespace cbbg

@@ -27,7 +27,7 @@ Selector::Selector(std::string name, int input_size, std::vector<int> indices)
         for (std::size_t i = 0; i < indices_.size(); ++i)
           y[static_cast<Eigen::Index>(i)] = input[indices_[i]];
       },
-      {&u}, "u at the indices");
+      {&u}, "u at the indices", OutputSources::kDiscreteState);
 }
 
 }  // namespace cbbg

@@ -17,11 +17,14 @@ ZeroOrderHold::ZeroOrderHold(std::string name, const Vector& initial_value, doub
   declare_discrete_state("held", initial_value, StateLifetime::kPerTrial);
   declare_output_port(
       "y", size, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {},
-      "the held sample");
-  declare_periodic_update(period, offset, [&u](BlockContext& context, VectorRef next) {
-    next = context.input(u);
-    return EventStatus::succeeded();
-  });
+      "the held sample", OutputSources::kDiscreteState);
+  declare_periodic_update(
+      period, offset,
+      [&u](BlockContext& context, VectorRef next) {
+        next = context.input(u);
+        return EventStatus::succeeded();
+      },
+      UpdateWrites::kInPlace);  // writes only
 }
 
 }  // namespace cbbg

@@ -1,6 +1,7 @@
 #include "cbbg/blocks/lqr_supervisor.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -9,10 +10,10 @@
 #include <Eigen/Eigenvalues>
 
 #include "cbbg/blocks/measured_signals.h"
-#include "cbbg/blocks/riccati.h"
 #include "cbbg/blocks/sensors.h"
 #include "cbbg/framework/block_context.h"
 #include "cbbg/framework/block_harness.h"
+#include "cbbg/framework/control/riccati.h"
 #include "cbbg/framework/diagram_builder.h"
 #include "cbbg/framework/primitives/zero_order_hold.h"
 #include "cbbg/framework/signal_log.h"
@@ -24,6 +25,8 @@
 namespace cbbg::blocks {
 namespace {
 
+using ::cbbg::control::continuous_riccati_residual;
+using ::cbbg::control::solve_continuous_riccati;
 using ::testing::HasSubstr;
 using ::testing::StrEq;
 using ::testing::ThrowsMessage;
@@ -75,13 +78,37 @@ TEST(LqrSupervisor, SolvesTheRiccatiEquationOfTheLinearisedRobot) {
   const Eigen::MatrixXd Q = q.asDiagonal();
   const Eigen::MatrixXd R = Eigen::MatrixXd::Constant(1, 1, params.lqr_r);
   const Eigen::MatrixXd X = solve_continuous_riccati(model.A, model.B, Q, R);
-  EXPECT_LT(riccati_residual(model.A, model.B, Q, R, X).norm(), 1e-9 * X.norm());
+  EXPECT_LT(continuous_riccati_residual(model.A, model.B, Q, R, X).norm(), 1e-9 * X.norm());
   EXPECT_LT((X - X.transpose()).norm(), 1e-12 * X.norm());
   EXPECT_GT(X.selfadjointView<Eigen::Lower>().eigenvalues().minCoeff(), 0.0);
 
   const LqrSupervisor supervisor("supervisor", robot, params);
   const Eigen::RowVector4d expected = (model.B.transpose() * X / params.lqr_r).row(0);
   EXPECT_LT((supervisor.gain() - expected).norm(), 1e-9 * expected.norm());
+}
+
+TEST(LqrSupervisor, GainIsBitIdenticalToTheRiccatiFormulaItReplaced) {
+  // The gain comes from control::lqr; before, it was (B' X / r) with X from the Riccati
+  // solver. Both must give the same bits, so runs with the LQR supervisor are unchanged.
+  const plant::RobotParams robot;
+  const plant::LinearModel model = plant::linearize_planar_upright(robot);
+  const std::array<std::array<double, 4>, 3> weights{
+      {{100.0, 1.0, 1.0, 1.0}, {10.0, 0.5, 2.0, 0.1}, {1000.0, 3.0, 0.25, 7.0}}};
+  for (const auto& q : weights) {
+    for (const double r : {1.0, 0.3, 7.0, 1e-3}) {
+      LqrSupervisorParams params;
+      params.lqr_q = q;
+      params.lqr_r = r;
+      const Eigen::MatrixXd Q = Eigen::Vector4d(q.data()).asDiagonal();
+      const Eigen::MatrixXd R = Eigen::MatrixXd::Constant(1, 1, r);
+      const Eigen::MatrixXd X = solve_continuous_riccati(model.A, model.B, Q, R);
+      const Eigen::RowVector4d previous = (model.B.transpose() * X / r).row(0);
+      const LqrSupervisor supervisor("supervisor", model, params);
+      for (int i = 0; i < 4; ++i) {
+        EXPECT_EQ(supervisor.gain()[i], previous[i]) << "q[0] = " << q[0] << ", r = " << r;
+      }
+    }
+  }
 }
 
 TEST(LqrSupervisor, ClosedLoopOfTheLinearisedRobotIsStable) {

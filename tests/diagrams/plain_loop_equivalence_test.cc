@@ -146,14 +146,15 @@ struct StartWeights {
 
 // Runs one trial from each of `theta0s` in turn with preset `arm` under `config` and root
 // seed `seed`, and with the plain loop under `loop_config` and `loop_seed`, both from
-// `start` where given; stops at the first trial whose ticks, outcome or learnt weights
-// differ and says where.
+// `start` where given, the diagram on the simulator's `schedule`; stops at the first trial
+// whose ticks, outcome or learnt weights differ and says where.
 BothRuns run_both(const std::string& arm, const config::Config& config,
                   const config::Config& loop_config, std::uint64_t seed, std::uint64_t loop_seed,
                   const std::vector<double>& theta0s,
-                  const std::optional<StartWeights>& start = std::nullopt) {
-  const diagrams::ClosedLoop controller =
-      diagrams::build_preset(arm, config::read_parameters(config));
+                  const std::optional<StartWeights>& start = std::nullopt,
+                  Schedule schedule = Schedule::kCompiled) {
+  diagrams::ClosedLoop controller = diagrams::build_preset(arm, config::read_parameters(config));
+  controller.schedule = schedule;
   experiments::TrialRunner runner(controller, seed, config.number("trial.period"));
   PlainLoop loop(loop_config, loop_seed, arm);
   if (start) {
@@ -213,6 +214,18 @@ TEST(PlainLoopEquivalence, ConsecutiveCbbgTrialsMatchAsWeightsAndOmegaCarryOver)
   const BothRuns run = run_both("cbbg", config, config, 7, 7, {theta0, theta0, theta0, theta0});
   EXPECT_TRUE(run.all_match);
   ASSERT_EQ(run.outcomes.size(), 4u);
+  EXPECT_EQ(run.outcomes[0].status, experiments::TrialStatus::kSuccess);
+  EXPECT_EQ(run.outcomes[1].status, experiments::TrialStatus::kFailed);
+}
+
+TEST(PlainLoopEquivalence, TheInterpretedScheduleMatchesTooThroughSuccessAndFailures) {
+  // The schedule the compiled one replaced, kept selectable: the same doubles, tick by tick.
+  const config::Config config = analytic_config();
+  const double theta0 = config.number("trial.theta0");
+  const BothRuns run = run_both("cbbg", config, config, 7, 7, {theta0, theta0, theta0},
+                                std::nullopt, Schedule::kInterpreted);
+  EXPECT_TRUE(run.all_match);
+  ASSERT_EQ(run.outcomes.size(), 3u);
   EXPECT_EQ(run.outcomes[0].status, experiments::TrialStatus::kSuccess);
   EXPECT_EQ(run.outcomes[1].status, experiments::TrialStatus::kFailed);
 }

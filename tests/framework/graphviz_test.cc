@@ -151,27 +151,69 @@ using cbbg::testing::error_of;
 
 TEST(Graphviz, DrawsEachLeafAsATableWithNameInputsLeftAndOutputsRight) {
   const std::string dot = to_dot(*flat_diagram());
-  EXPECT_THAT(lines_of(dot),
-              Contains(R"("top/gain" [shape=plaintext, label=<<table border="0" cellborder="1" )"
-                       R"(cellspacing="0" cellpadding="4"><tr><td colspan="2"><b>gain</b></td>)"
-                       R"(</tr><tr><td port="in_u" align="left">u [2]</td><td port="out_y" )"
-                       R"(align="right">y [2]</td></tr></table>>];)"));
-  EXPECT_THAT(dot, HasSubstr(R"(<tr><td colspan="2"><b>hold</b></td></tr><tr><td port="in_u" )"
-                             R"(align="left">u [2]</td><td port="out_y" align="right">y [2]</td>)"
-                             R"(</tr></table>)"));
+  EXPECT_THAT(
+      lines_of(dot),
+      Contains(
+          R"("top/gain" [shape=plaintext, label=<<table border="0" cellborder="1" )"
+          R"(cellspacing="0" cellpadding="4"><tr><td colspan="2"><b>gain</b><br/><font point-size="10">)"
+          R"(Gain</font></td></tr><tr><td port="in_u" align="left">u [2]</td><td port="out_y" )"
+          R"(align="right">y [2]</td></tr></table>>];)"));
+  EXPECT_THAT(
+      dot,
+      HasSubstr(
+          R"(<tr><td colspan="2"><b>hold</b><br/><font point-size="10">ZeroOrderHold</font></td></tr><tr><td port="in_u" )"
+          R"(align="left">u [2]</td><td port="out_y" align="right">y [2]</td>)"
+          R"(</tr></table>)"));
   // A source has no inputs, so a single column.
-  EXPECT_THAT(dot, HasSubstr(R"(<tr><td colspan="1"><b>source</b></td></tr><tr><td )"
-                             R"(port="out_y" align="right">y [2]</td></tr></table>)"));
+  EXPECT_THAT(
+      dot,
+      HasSubstr(
+          R"(<tr><td colspan="1"><b>source</b><br/><font point-size="10">ConstantSource</font></td></tr><tr><td )"
+          R"(port="out_y" align="right">y [2]</td></tr></table>)"));
+}
+
+// A user's block, a template and an override of the type.
+template <int N>
+class Sized final : public Block {
+ public:
+  Sized() : Block("sized") {
+    declare_output_port("y", N, [](const BlockContext&, VectorRef y) { y.setZero(); }, {});
+  }
+};
+
+class Renamed final : public Block {
+ public:
+  Renamed() : Block("renamed") {
+    declare_output_port("y", 1, [](const BlockContext&, VectorRef y) { y.setZero(); }, {});
+  }
+  std::string type_name() const override { return "DLQR supervisor"; }
+};
+
+TEST(Graphviz, WritesEachBlocksTypeUnderItsName) {
+  DiagramBuilder builder("top");
+  const Block& sized = builder.emplace<Sized<2>>();
+  builder.emplace<Renamed>();
+  const auto diagram = builder.build();
+  EXPECT_EQ(sized.type_name(), "Sized<2>");  // namespaces go, template arguments stay
+  const std::string dot = to_dot(*diagram);
+  EXPECT_THAT(dot, HasSubstr(R"(<b>sized</b><br/><font point-size="10">Sized&lt;2&gt;</font>)"));
+  EXPECT_THAT(dot, HasSubstr(R"(<b>renamed</b><br/><font point-size="10">DLQR supervisor</font>)"));
 }
 
 TEST(Graphviz, PadsTheShorterPortColumnWithEmptyCells) {
   const std::string dot = to_dot(*uneven_diagram());
-  EXPECT_THAT(dot, HasSubstr(R"(<tr><td colspan="2"><b>adder</b></td></tr>)"
-                             R"(<tr><td port="in_a" align="left">a [3]</td><td port="out_y" )"
-                             R"(align="right">y [3]</td></tr>)"
-                             R"(<tr><td port="in_b" align="left">b [3]</td><td border="0"></td>)"
-                             R"(</tr></table>)"));
-  EXPECT_THAT(dot, HasSubstr(R"(<tr><td colspan="1"><b>portless</b></td></tr></table>)"));
+  EXPECT_THAT(
+      dot,
+      HasSubstr(
+          R"(<tr><td colspan="2"><b>adder</b><br/><font point-size="10">Adder</font></td></tr>)"
+          R"(<tr><td port="in_a" align="left">a [3]</td><td port="out_y" )"
+          R"(align="right">y [3]</td></tr>)"
+          R"(<tr><td port="in_b" align="left">b [3]</td><td border="0"></td>)"
+          R"(</tr></table>)"));
+  EXPECT_THAT(
+      dot,
+      HasSubstr(
+          R"(<tr><td colspan="1"><b>portless</b><br/><font point-size="10">BlowUp</font></td></tr></table>)"));
 }
 
 TEST(Graphviz, IsALeftToRightDigraphWithTheRootAsACluster) {
@@ -254,12 +296,14 @@ TEST(Graphviz, DepthZeroCollapsesEverySubDiagramIntoABoxWithItsPorts) {
   EXPECT_THAT(dot, Not(HasSubstr("actuator")));
   EXPECT_THAT(dot, Not(HasSubstr("motor")));
   EXPECT_THAT(dot, Not(HasSubstr("zoh")));
-  EXPECT_THAT(lines_of(dot),
-              Contains(R"("top/plant" [shape=plaintext, label=<<table border="0" )"
-                       R"(cellborder="1" cellspacing="0" cellpadding="4"><tr><td colspan="2" )"
-                       R"(bgcolor="lightgrey"><b>plant</b></td></tr><tr><td port="in_u" )"
-                       R"(align="left">u [1]</td><td port="out_y" align="right">y [1]</td>)"
-                       R"(</tr></table>>];)"));
+  EXPECT_THAT(
+      lines_of(dot),
+      Contains(
+          R"("top/plant" [shape=plaintext, label=<<table border="0" )"
+          R"(cellborder="1" cellspacing="0" cellpadding="4"><tr><td colspan="2" )"
+          R"(bgcolor="lightgrey"><b>plant</b><br/><font point-size="10">Diagram</font></td></tr><tr><td port="in_u" )"
+          R"(align="left">u [1]</td><td port="out_y" align="right">y [1]</td>)"
+          R"(</tr></table>>];)"));
   EXPECT_EQ(sorted(edges_of(dot)), sorted({R"("top/source":out_y -> "top/plant":in_u;)",
                                            R"("top/plant":out_y -> "top/scale":in_u;)",
                                            R"("top/offset.in.u.fixed" -> "top/offset":in_u;)",
