@@ -4,7 +4,8 @@
 #  - the cbbg diagram's trial (analytic plant) on each schedule, and the hand-written loop;
 #  - a chain of one block closed by a hold (the fixed cost of a tick) on each schedule.
 #
-#   scripts/count_instructions.sh [BUILD_DIR]     # default: build/
+#   scripts/count_instructions.sh [BUILD_DIR]     # default: build/; an earlier commit's
+#                                                  # build (bench.sh --against) works too
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-$root/build}"
@@ -13,7 +14,9 @@ out="$(mktemp -d "${TMPDIR:-/tmp}/cbbg-count.XXXXXX")"
 trap 'rm -rf "$out"' EXIT
 
 # per_call <binary> <benchmark filter> <function>: inclusive instructions per call of the
-# function (its calls summed over the whole run, so setup outside it does not count).
+# function (its calls summed over the whole run, so setup outside it does not count); nan
+# where the binary has no such benchmark (an earlier build, before the interpreted one was
+# kept beside the compiled schedule).
 per_call() {
   valgrind --tool=callgrind --callgrind-out-file="$out/callgrind.out" --toggle-collect="$3*" \
     "$1" --benchmark_filter="$2" --benchmark_min_time=0.3 >/dev/null 2>&1
@@ -24,7 +27,7 @@ names = dict(re.findall(r"^c?fn=\((\d+)\) (.*)$", text, re.M))
 calls = sum(int(n) for fn, n in re.findall(r"^cfn=\((\d+)\).*\ncalls=(\d+)", text, re.M)
             if names.get(fn, "").startswith(sys.argv[2]))
 total = int(re.search(r"^summary: (\d+)", text, re.M).group(1))
-print(total / calls)
+print(total / calls if calls else float("nan"))
 EOF
 }
 
