@@ -281,13 +281,11 @@ void Simulator::integrate_to(double end_time) {
   } else if (!diagram_->self_integrating_leaves().empty()) {
     diagram_->evaluate_continuous_inputs(context);
   }
-  if (!diagram_->self_integrating_leaves().empty()) {
-    for (const int index : diagram_->self_integrating_leaves()) {
-      const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(index)];
-      BlockContext view(context, leaf);
-      leaf.block->advance_function()(view, end_time);
-      context.set_time(start_time);
-    }
+  for (const int index : diagram_->self_integrating_leaves()) {
+    const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(index)];
+    BlockContext view(context, leaf);
+    leaf.block->advance_function()(view, end_time);
+    context.set_time(start_time);
   }
   if (diagram_->ode_size() > 0) integrate_ode(start_time, end_time);
   context.set_time(end_time);

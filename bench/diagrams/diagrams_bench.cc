@@ -1,9 +1,8 @@
-// CPU time per trial tick of the cbbg diagram on the analytic plant (with either of the
-// simulator's schedules), run by the
-// TrialRunner, against docs/model.md §2 as one plain loop (tests/diagrams/plain_loop.h) that
-// tests/diagrams proves bit-identical to it. Each iteration is the first trial of a fresh
-// learner from the default theta0 and root seed 1, so both sides do exactly the same
-// arithmetic and tick count; building the learner is left out of the timing.
+// CPU time per trial tick of the cbbg diagram on the analytic plant, run by the TrialRunner
+// on either of the simulator's schedules, against docs/model.md §2 as one plain loop
+// (tests/diagrams/plain_loop.h) that tests/diagrams proves bit-identical to it. Each iteration is
+// the first trial of a fresh learner from the default theta0 and root seed 1, so both sides do
+// exactly the same arithmetic and tick count; building the learner is left out of the timing.
 
 #include <benchmark/benchmark.h>
 
