@@ -1,18 +1,20 @@
 # Install rules and a CMake package: find_package(cbbg) gives every library as a target
-# (cbbg::framework, plant, blocks, config, diagrams, experiments, store, replay, and cli: the
-# command line a user's program runs with its own registrations), the `cbbg` command, its plotting script and its replay page; find_package(cbbg COMPONENTS framework)
+# (cbbg::framework, plant, blocks, config, diagrams, experiments, environment, store, replay,
+# and cli: the command line a user's program runs with its own registrations), the `cbbg`
+# command, its plotting script and its replay page; find_package(cbbg COMPONENTS framework)
 # gives the framework alone, needing Eigen only. Headers install under include/cbbg/ with
 # their tree and are included as <cbbg/framework/...>, <cbbg/diagrams/...>, as the sources
 # include them; plant/simbody/ is the plant library's own (its headers include Simbody) and
-# stays out. The docs and the examples install under share/doc/cbbg/.
+# stays out. The docs and the examples install under share/doc/cbbg/; the Python module
+# (component python) where the Python it was built for finds it (python/CMakeLists.txt).
 include(CMakePackageConfigHelpers)
 
 set(CBBG_LIBRARIES cbbg_framework cbbg_plant cbbg_blocks cbbg_config cbbg_diagrams
-                   cbbg_experiments cbbg_store cbbg_replay cbbg_cli)
+                   cbbg_experiments cbbg_environment cbbg_store cbbg_replay cbbg_cli)
 install(TARGETS ${CBBG_LIBRARIES} EXPORT cbbgTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(folder framework plant blocks config diagrams experiments store replay)
+foreach(folder framework plant blocks config diagrams experiments environment store replay)
   install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/${folder}
           FILES_MATCHING PATTERN "*.h" PATTERN "simbody" EXCLUDE PATTERN "node_modules" EXCLUDE)
 endforeach()
@@ -31,6 +33,8 @@ install(PROGRAMS scripts/slurm/sweep.sbatch scripts/slurm/merge.sbatch scripts/s
 install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
 install(DIRECTORY examples/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples)
+install(DIRECTORY python/examples/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples/python
+        PATTERN "__pycache__" EXCLUDE)
 install(EXPORT cbbgTargets NAMESPACE cbbg:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/cbbg)
 
 configure_package_config_file(cmake/cbbgConfig.cmake.in

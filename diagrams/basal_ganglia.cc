@@ -8,7 +8,7 @@
 
 namespace cbbg::diagrams {
 
-BasalGanglia::BasalGanglia(std::string name, std::unique_ptr<Block> features,
+BasalGanglia::BasalGanglia(std::string name, std::shared_ptr<Block> features,
                            const BasalGangliaParams& params)
     : Diagram(std::move(name)) {
   check_slot_block(features.get(), "basal ganglia '" + this->name() + "'", "x", "features");

@@ -51,7 +51,7 @@ class BasalGanglia final : public Diagram {
  public:
   // `features` maps the state (its input "x") to the features (its output "features") that
   // the critic and the actor share; blocks::RbfFeatures is the paper's.
-  BasalGanglia(std::string name, std::unique_ptr<Block> features, const BasalGangliaParams& params);
+  BasalGanglia(std::string name, std::shared_ptr<Block> features, const BasalGangliaParams& params);
 
   const InputPort& state() const { return *state_; }
   const InputPort& reward() const { return *reward_; }

@@ -18,25 +18,25 @@
 namespace cbbg::diagrams {
 namespace {
 
-std::unique_ptr<Block> configured_supervisor(const std::string& name, const config::Parameters& p) {
+std::shared_ptr<Block> configured_supervisor(const std::string& name, const config::Parameters& p) {
   if (p.supervisor.kind == "lqr") {
     return std::make_unique<blocks::LqrSupervisor>(name, planar_linearization(p), p.supervisor.lqr);
   }
   return std::make_unique<blocks::PdSupervisor>(name, p.supervisor.pd);
 }
 
-std::unique_ptr<Block> configured_normaliser(const std::string& name, const config::Parameters& p) {
+std::shared_ptr<Block> configured_normaliser(const std::string& name, const config::Parameters& p) {
   return std::make_unique<blocks::Normaliser>(name, p.normaliser);
 }
 
-std::unique_ptr<Block> configured_features(const std::string& name, const config::Parameters& p) {
+std::shared_ptr<Block> configured_features(const std::string& name, const config::Parameters& p) {
   return std::make_unique<blocks::RbfFeatures>(name, p.rbf);
 }
 
 // The slot's block: the user's where a factory is given, else the parameters'.
-std::unique_ptr<Block> fill_slot(const BlockFactory& user, const BlockFactory& configured,
+std::shared_ptr<Block> fill_slot(const BlockFactory& user, const BlockFactory& configured,
                                  const std::string& name, const config::Parameters& p) {
-  std::unique_ptr<Block> block = user ? user(name, p) : configured(name, p);
+  std::shared_ptr<Block> block = user ? user(name, p) : configured(name, p);
   if (!block) throw std::invalid_argument("the factory of slot '" + name + "' returned null");
   return block;
 }
@@ -62,9 +62,9 @@ BasalGangliaParams basal_ganglia_params(const config::Parameters& p,
 }
 
 // The omega slot's block, or the schedule in the options' mode.
-std::unique_ptr<Block> omega_block(const ControllerOptions& options, const config::Parameters& p) {
+std::shared_ptr<Block> omega_block(const ControllerOptions& options, const config::Parameters& p) {
   if (options.slots.omega) {
-    std::unique_ptr<Block> block = options.slots.omega("omega", p);
+    std::shared_ptr<Block> block = options.slots.omega("omega", p);
     check_slot_block(block.get(), "omega slot", nullptr, "omega", 1);
     return block;
   }

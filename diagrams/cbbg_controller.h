@@ -24,8 +24,8 @@ namespace cbbg::diagrams {
 
 // Makes the block of one slot, named `name`, from the run's typed parameters (a user's own
 // section is in parameters.own: config/own_sections.h). Called once per controller built (so
-// once per task, maybe in several threads at once).
-using BlockFactory = std::function<std::unique_ptr<Block>(const std::string& name,
+// once per task, maybe in several threads at once). It may return a std::unique_ptr.
+using BlockFactory = std::function<std::shared_ptr<Block>(const std::string& name,
                                                           const config::Parameters& parameters)>;
 
 // The blocks that fill the controller's slots; an empty factory takes the parameters' own.

@@ -5,7 +5,7 @@
 
 namespace cbbg::diagrams {
 
-Cerebellum::Cerebellum(std::string name, std::unique_ptr<Block> supervisor)
+Cerebellum::Cerebellum(std::string name, std::shared_ptr<Block> supervisor)
     : Diagram(std::move(name)) {
   check_slot_block(supervisor.get(), "cerebellum '" + this->name() + "'", "measured", "action", 1);
   DiagramBuilder builder(*this);

@@ -22,7 +22,7 @@ namespace cbbg::diagrams {
 /// size 1).
 class Cerebellum final : public Diagram {
  public:
-  Cerebellum(std::string name, std::unique_ptr<Block> supervisor);
+  Cerebellum(std::string name, std::shared_ptr<Block> supervisor);
 
   const InputPort& measured() const { return *measured_; }
   const OutputPort& action() const { return *action_; }

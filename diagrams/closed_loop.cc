@@ -147,7 +147,7 @@ void ClosedLoop::start_trial(Context& context, double theta0) const {
 }
 
 ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
-                             std::unique_ptr<Diagram> controller,
+                             std::shared_ptr<Diagram> controller,
                              const ClosedLoopOptions& options) {
   if (!controller) throw std::invalid_argument("the controller factory returned null");
   check_controller_ports(*controller);
@@ -155,7 +155,7 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   loop.accuracy = p.plant.robot.accuracy;
   const double period = p.trial.period;
   DiagramBuilder builder(std::move(name));
-  std::unique_ptr<plant::RobotPlant> made =
+  std::shared_ptr<plant::RobotPlant> made =
       options.plant ? options.plant("plant", p) : plant_kind(p.plant.kind).make("plant", p);
   loop.plant_of_kind = !options.plant;
   if (!made) throw std::invalid_argument("the plant factory returned null");

@@ -67,15 +67,16 @@ struct ClosedLoopOptions {
 // the plant's ports or signals do not fit, naming them, or the controller has two learners
 // of a kind.
 ClosedLoop build_closed_loop(std::string name, const config::Parameters& parameters,
-                             std::unique_ptr<Diagram> controller,
+                             std::shared_ptr<Diagram> controller,
                              const ClosedLoopOptions& options = {});
 
 // Builds the closed loop of one arm from the run's typed parameters; called once per task
 // (maybe in several threads at once, each with its own result).
 using ClosedLoopFactory = std::function<ClosedLoop(const config::Parameters& parameters)>;
 
-// Builds a controller (any diagram with a controller's ports) from the run's parameters.
-using ControllerFactory = std::function<std::unique_ptr<Diagram>(const config::Parameters&)>;
+// Builds a controller (any diagram with a controller's ports) from the run's parameters (a
+// std::unique_ptr converts).
+using ControllerFactory = std::function<std::shared_ptr<Diagram>(const config::Parameters&)>;
 
 // The factory of a CB-BG controller with `controller` options, in a closed loop named `name`.
 ClosedLoopFactory closed_loop_factory(std::string name, ControllerOptions controller,

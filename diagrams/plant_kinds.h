@@ -26,8 +26,9 @@
 
 namespace cbbg::diagrams {
 
-// Makes the plant block named `name` from the run's typed parameters.
-using PlantFactory = std::function<std::unique_ptr<plant::RobotPlant>(
+// Makes the plant block named `name` from the run's typed parameters (a factory may return a
+// std::unique_ptr: it converts).
+using PlantFactory = std::function<std::shared_ptr<plant::RobotPlant>(
     const std::string& name, const config::Parameters& parameters)>;
 
 // A change of the robot an evaluation asks for, by the factor of its key.

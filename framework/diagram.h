@@ -34,7 +34,7 @@ class Diagram : public Block {
   bool is_diagram() const override { return true; }
 
   // Children, in the order they were added.
-  const std::vector<std::unique_ptr<Block>>& blocks() const { return blocks_; }
+  const std::vector<std::shared_ptr<Block>>& blocks() const { return blocks_; }
   // A direct child by name; an unknown name throws, listing the children.
   const Block& block(std::string_view name) const;
   const std::vector<Connection>& connections() const { return connections_; }
@@ -109,7 +109,7 @@ class Diagram : public Block {
     return first_node_[static_cast<size_t>(slot.leaf)] + slot.port;
   }
 
-  std::vector<std::unique_ptr<Block>> blocks_;
+  std::vector<std::shared_ptr<Block>> blocks_;
   std::vector<Connection> connections_;
   std::unordered_map<const InputPort*, const OutputPort*> source_of_;
   std::vector<ExportedInput> exported_inputs_;

@@ -21,10 +21,14 @@ Diagram& DiagramBuilder::diagram() const {
   return *diagram_;
 }
 
-void DiagramBuilder::add_block(std::unique_ptr<Block> block) {
+void DiagramBuilder::add_block(std::shared_ptr<Block> block) {
   Diagram& parent = diagram();
   if (!block) {
     throw std::invalid_argument("diagram '" + parent.path() + "': cannot add a null block");
+  }
+  if (block->parent_ != nullptr) {
+    throw std::invalid_argument("diagram '" + parent.path() + "': block '" + block->path() +
+                                "' is in a diagram already; a block belongs to one diagram");
   }
   for (const auto& child : parent.blocks_) {
     if (child->name() == block->name()) {

@@ -19,12 +19,18 @@ class DiagramBuilder {
   // (Drake's BuildInto; diagram.h shows the pattern); build_into() finishes it.
   explicit DiagramBuilder(Diagram& target);
 
-  // Adds a block (a leaf or a built Diagram); its name must be unique in this diagram.
+  // Adds a block (a leaf or a built Diagram); its name must be unique in this diagram, and a
+  // block belongs to one diagram. The diagram owns it, or shares it with whoever made it (the
+  // Python bindings: the Python object stays the block's owner too).
   template <typename B>
   B& add(std::unique_ptr<B> block) {
-    B& added = *block;
-    add_block(std::unique_ptr<Block>(std::move(block)));
-    return added;
+    return add(std::shared_ptr<B>(std::move(block)));
+  }
+  template <typename B>
+  B& add(std::shared_ptr<B> block) {
+    B* added = block.get();
+    add_block(std::shared_ptr<Block>(std::move(block)));
+    return *added;
   }
   // Constructs a block in place: builder.emplace<Gain>("gain", 2.0).
   template <typename B, typename... Args>
@@ -50,7 +56,7 @@ class DiagramBuilder {
   void build_into();
 
  private:
-  void add_block(std::unique_ptr<Block> block);
+  void add_block(std::shared_ptr<Block> block);
   void check_child(const Block& block, const char* action) const;
   void check_input_free(const InputPort& port, const char* action) const;
   Diagram& diagram() const;

@@ -11,7 +11,7 @@ packages=(
   libcli11-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang clang-format libclang-rt-14-dev libfuzzer-14-dev time
-  graphviz python3 python3-matplotlib python3-numpy
+  graphviz python3 python3-dev python3-matplotlib python3-numpy python3-pytest pybind11-dev
   parallel slurm-wlm munge
   chromium
 )

@@ -21,7 +21,7 @@ cmake -S "$examples" -B "$scratch/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
 cmake --build "$scratch/example" >/dev/null
 # The installed headers include each other as <cbbg/...> only: nothing of a user's own
 # folders (config/, plant/) can shadow them.
-if grep -rnE '#include "(framework|plant|blocks|config|diagrams|experiments|store|replay)/' \
+if grep -rnE '#include "(framework|plant|blocks|config|diagrams|experiments|environment|store|replay)/' \
   "$scratch/prefix/include/cbbg"; then
   echo "an installed header includes a project header without cbbg/" >&2
   exit 1

@@ -4,7 +4,7 @@
 # -g1 keeps the line tables a report needs and drops the rest, a quarter of the compile time.
 # A memory error, a leak or any undefined behaviour fails the test it happens in.
 #   test_sanitizers.sh         the tests of framework/, config/, blocks/, diagrams/,
-#                              experiments/, store/ and replay/ (several of them run both
+#                              experiments/, environment/, store/ and replay/ (several run both
 #                              plants, Simbody's too)
 #   test_sanitizers.sh --all   every test: adds plant/'s and the cbbg command's, and takes
 #                              about half as long again (the sanitizers make compiling slow)
@@ -13,7 +13,7 @@
 # compiled code); scripts/test.sh runs all three.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-areas=(framework config blocks diagrams experiments store replay)
+areas=(framework config blocks diagrams experiments environment store replay)
 case "${1:-}" in
   "") all=false ;;
   --all) all=true ;;

@@ -16,6 +16,7 @@
 #include "cbbg/framework/block_context.h"
 #include "cbbg/store/weights_file.h"
 #include "tests/diagrams/slot_fixtures.h"
+#include "tests/support/pendulum_robot.h"
 #include "tests/support/scratch_directory.h"
 
 namespace cbbg::diagrams {
@@ -40,34 +41,7 @@ class LinearFeatures final : public Block {
   }
 };
 
-// A plant of the user's: the pitch as a linear inverted pendulum and one wheel angle for
-// both wheels, theta'' = 24.5 theta - (tau_l + tau_r) / 2, phi'' = tau_l + tau_r.
-class PendulumRobot final : public plant::RobotPlant {
- public:
-  explicit PendulumRobot(std::string name) : RobotPlant(std::move(name)) {
-    const InputPort& torque = declare_input_port("torque", plant::kTorqueSize);
-    declare_continuous_state(Vector::Zero(4), [&torque](const BlockContext& context, VectorRef d) {
-      const auto x = context.continuous_state();  // theta, theta', phi, phi'
-      const double tau = context.input(torque).sum();
-      d << x[1], 24.5 * x[0] - tau / 2.0, x[3], tau;
-    });
-    // Its own signals, in its own order: one wheel, no pose.
-    declare_output_port("state", 4,
-                        [](const BlockContext& context, VectorRef y) {
-                          const auto x = context.continuous_state();
-                          y << x[2], x[0], x[3], x[1];
-                        },
-                        {});
-  }
-  std::vector<std::string> signals() const override {
-    return {"wheel", "pitch", "wheel_rate", "pitch_rate"};
-  }
-  void reset(Context& context, double initial_pitch) const override {
-    auto x = context.continuous_state(*this);
-    x.setZero();
-    x[0] = initial_pitch;
-  }
-};
+using cbbg::testing::PendulumRobot;
 
 TEST(Slots, AUsersSupervisorTakesTheCerebellumsPlace) {
   ControllerOptions options = preset("cbbg").options;

@@ -128,6 +128,31 @@ TEST(DiagramBuilder, RejectsDuplicateBlockNames) {
             "diagram 'top': a block named 'gain' already exists; names must be unique");
 }
 
+TEST(DiagramBuilder, ABlockBelongsToOneDiagram) {
+  auto shared = std::make_shared<Gain>("gain", 2.0, 1);
+  DiagramBuilder first("first");
+  first.add(shared);
+  DiagramBuilder second("second");
+  EXPECT_EQ(error_of([&] { second.add(shared); }),
+            "diagram 'second': block 'first/gain' is in a diagram already; a block belongs to one "
+            "diagram");
+}
+
+TEST(DiagramBuilder, ASharedBlockOutlivesItsDiagramWhileItsOtherOwnerHoldsIt) {
+  auto shared = std::make_shared<Gain>("gain", 2.0, 1);
+  {
+    DiagramBuilder builder("top");
+    Gain& added = builder.add(shared);
+    EXPECT_EQ(&added, shared.get());
+    builder.export_input(added.input_port("u"));
+    builder.export_output(added.output_port("y"));
+    const std::unique_ptr<Diagram> diagram = builder.build();
+    EXPECT_EQ(shared.use_count(), 2);
+  }
+  EXPECT_EQ(shared.use_count(), 1);
+  EXPECT_EQ(shared->name(), "gain");
+}
+
 TEST(DiagramBuilder, RejectsConnectingABlockOfAnotherDiagram) {
   DiagramBuilder builder("top");
   DiagramBuilder other("other");

@@ -1,0 +1,83 @@
+"""cbbg from Python: the systems framework, the blocks, the controller and its protocols.
+
+The C++ library does the work (the GIL is released while it runs); this package adds what is
+easier in Python on top of it: configs from dicts, the command line, results directories as
+arrays.
+
+    import cbbg
+    parameters = cbbg.parameters({"plant.kind": "analytic", "seeds": 5})
+    results = cbbg.run_experiment(parameters, jobs=2)
+"""
+
+import json
+import os
+import sys
+
+from . import _cbbg
+from ._cbbg import *  # noqa: F401,F403
+from ._cbbg import __doc__  # noqa: F401
+from ._cbbg import control  # noqa: F401
+
+# `import cbbg.control` finds the C++ submodule as a module of the package.
+sys.modules[__name__ + ".control"] = control
+from .environment import BalanceEnv, Box  # noqa: F401
+from .results import load_results  # noqa: F401
+
+
+def _yaml(value):
+    """A Python value as the YAML text a config key reads (JSON is YAML)."""
+    return json.dumps(value, default=lambda o: o.tolist() if hasattr(o, "tolist") else str(o))
+
+
+def _assignments(settings, prefix=""):
+    """(key.path, value) of a dict, nested sections ({"plant": {"kind": ...}}) flattened."""
+    for key, value in settings.items():
+        if isinstance(value, dict):
+            yield from _assignments(value, f"{prefix}{key}.")
+        else:
+            yield f"{prefix}{key}", value
+
+
+class Config(_cbbg.Config):
+    """The configuration tree: the defaults, then a YAML file, then settings from a dict.
+
+    Keys are the config's ("critic.gamma"), or nested dicts of sections; values are Python
+    numbers, strings and lists. Each is checked as it arrives (ConfigError naming the key).
+    """
+
+    def __init__(self, settings=None, file=None):
+        super().__init__()
+        if file is not None:
+            self.merge_file(os.fspath(file))
+        if settings:
+            self.update(settings)
+
+    def set(self, key, value):
+        self.set_assignment(f"{key}={_yaml(value)}", f"settings['{key}']")
+
+    def update(self, settings):
+        for key, value in _assignments(settings):
+            self.set(key, value)
+
+
+def parameters(settings=None, file=None):
+    """The run's typed, checked parameters from the defaults, a YAML file and a dict."""
+    return validated_parameters(Config(settings, file))  # noqa: F405
+
+
+def _share_dir():
+    """The share/cbbg of the tree this module belongs to (build tree or install), or the
+    other one where that has none (the module installed alone by scripts/build.sh)."""
+    module_dir = os.path.dirname(os.path.abspath(_cbbg.__file__))
+    build_share = _cbbg._build_share_dir
+    build_root = os.path.dirname(os.path.dirname(build_share))
+    ours, other = build_share, _cbbg._install_share_dir
+    if not module_dir.startswith(build_root + os.sep):
+        ours, other = other, ours
+    return ours if os.path.isdir(ours) or not os.path.isdir(other) else other
+
+
+def main(args):
+    """Runs the cbbg command line (["run", "--out", "results", ...]) in this process, with its
+    registrations (arms, plant kinds, protocols, sections); returns the exit code."""
+    return cli([os.fspath(a) for a in args], _share_dir())  # noqa: F405

@@ -1,0 +1,236 @@
+// The protocols in Python: running them (in memory, or through the command line with its
+// results directory), their results as Python objects, a protocol of the user's written with
+// the kit, and the learnt weights.
+//
+// The GIL is released while a protocol runs; its seeds run in C++ threads, and a Python block
+// in the loop takes the GIL at each call, so Python calls are serialised and the results are
+// the same whatever the thread count.
+
+#include <pybind11/eigen.h>
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "bindings.h"
+#include "cbbg/apps/cli.h"
+#include "cbbg/experiments/experiments.h"
+#include "cbbg/experiments/protocol_kit.h"
+#include "cbbg/experiments/protocols.h"
+#include "cbbg/experiments/transfer.h"
+#include "cbbg/store/weights_file.h"
+#include "ownership.h"
+#include "python_factories.h"
+
+namespace cbbg::python {
+namespace {
+
+using experiments::ExperimentOptions;
+using experiments::ExperimentResults;
+using experiments::LearntWeights;
+
+ExperimentOptions options_of(int jobs, const LearntWeights* initial_weights) {
+  ExperimentOptions options;
+  options.jobs = jobs;
+  options.initial_weights = initial_weights;
+  return options;
+}
+
+void bind_records(py::module_& m) {
+  py::class_<experiments::TrialOutcome>(m, "TrialOutcome")
+      .def_property_readonly("status",
+                             [](const experiments::TrialOutcome& o) {
+                               return std::string(experiments::to_string(o.status));
+                             })
+      .def_readonly("steps", &experiments::TrialOutcome::steps)
+      .def_readonly("mean_temperature", &experiments::TrialOutcome::mean_temperature)
+      .def_readonly("mean_entropy", &experiments::TrialOutcome::mean_entropy)
+      .def_readonly("final_theta", &experiments::TrialOutcome::final_theta)
+      .def_readonly("message", &experiments::TrialOutcome::message)
+      .def_readonly("pitch_rms", &experiments::TrialOutcome::pitch_rms)
+      .def_readonly("pitch_peak_to_peak", &experiments::TrialOutcome::pitch_peak_to_peak)
+      .def_readonly("mean_forward_speed", &experiments::TrialOutcome::mean_forward_speed)
+      .def_property_readonly("balanced", [](const experiments::TrialOutcome& o) {
+        return o.status == experiments::TrialStatus::kSuccess;
+      });
+  py::class_<experiments::TrialRecord>(m, "TrialRecord")
+      .def_readwrite("trial", &experiments::TrialRecord::trial)
+      .def_readwrite("k1", &experiments::TrialRecord::k1)
+      .def_readwrite("outcome", &experiments::TrialRecord::outcome)
+      .def_readwrite("actor_alone_passed", &experiments::TrialRecord::actor_alone_passed);
+  py::class_<experiments::EvaluationRecord>(m, "EvaluationRecord")
+      .def_readonly("theta0", &experiments::EvaluationRecord::theta0)
+      .def_readonly("outcome", &experiments::EvaluationRecord::outcome);
+  py::class_<experiments::SeedFigure>(m, "SeedFigure")
+      .def(py::init([](std::string name, double value) {
+             return experiments::SeedFigure{std::move(name), value};
+           }),
+           py::arg("name"), py::arg("value"))
+      .def_readonly("name", &experiments::SeedFigure::name)
+      .def_readonly("value", &experiments::SeedFigure::value);
+  py::class_<LearntWeights>(m, "LearntWeights", "What a learner learnt: actor and critic weights.")
+      .def_readonly("actor", &LearntWeights::actor)
+      .def_readonly("critic", &LearntWeights::critic)
+      .def_property_readonly("num_features", &LearntWeights::num_features);
+  m.def("load_weights", &store::load_weights, py::arg("path"));
+  m.def("save_weights", &store::save_weights, py::arg("path"), py::arg("weights"),
+        "Writes a weights file; replaces only a weights file cbbg wrote.");
+}
+
+void bind_results(py::module_& m) {
+  py::class_<experiments::SeedRun>(m, "SeedRun", "One (arm, seed) of an experiment.")
+      .def_readonly("arm", &experiments::SeedRun::arm)
+      .def_readonly("seed", &experiments::SeedRun::seed)
+      .def_readwrite("trials", &experiments::SeedRun::trials)
+      .def_readwrite("failures_before_success", &experiments::SeedRun::failures_before_success)
+      .def_readwrite("succeeded", &experiments::SeedRun::succeeded)
+      .def_readonly("trials_to_skill", &experiments::SeedRun::trials_to_skill)
+      .def_readonly("failures_to_skill", &experiments::SeedRun::failures_to_skill)
+      .def_readonly("evaluation", &experiments::SeedRun::evaluation)
+      .def_readonly("weights", &experiments::SeedRun::weights)
+      .def_readonly("weights_diverged", &experiments::SeedRun::weights_diverged)
+      .def_readwrite("figures", &experiments::SeedRun::figures)
+      .def("add_trial",
+           [](experiments::SeedRun& run, experiments::TrialRecord record) {
+             run.trials.push_back(std::move(record));
+           })
+      .def("add_figure", [](experiments::SeedRun& run, std::string name, double value) {
+        run.figures.push_back({std::move(name), value});
+      });
+  py::class_<ExperimentResults>(m, "ExperimentResults", "Every (arm, seed) run, arm-major.")
+      .def_readonly("experiment", &ExperimentResults::experiment)
+      .def_readonly("arms", &ExperimentResults::arms)
+      .def_readonly("seeds", &ExperimentResults::seeds)
+      .def_readonly("runs", &ExperimentResults::runs)
+      .def("run", &ExperimentResults::run, py::arg("arm"), py::arg("seed"),
+           py::return_value_policy::reference_internal, "By index: runs[arm * len(seeds) + seed].");
+}
+
+void bind_runs(py::module_& m) {
+  m.def(
+      "run_experiment",
+      [](const config::Parameters& p, int jobs, const LearntWeights* initial_weights) {
+        return experiments::run_experiment(p, options_of(jobs, initial_weights));
+      },
+      py::arg("parameters"), py::arg("jobs") = 1, py::arg("initial_weights") = nullptr,
+      py::call_guard<py::gil_scoped_release>(),
+      "The experiment the parameters name (a protocol, or one arm under exp1's), over its arms.");
+  using Runner = ExperimentResults (*)(const config::Parameters&, const std::vector<diagrams::Arm>&,
+                                       const ExperimentOptions&);
+  const auto def_runner = [&m](const char* name, Runner runner, const char* doc) {
+    m.def(
+        name,
+        [runner](const config::Parameters& p, const std::vector<diagrams::Arm>& arms, int jobs,
+                 const LearntWeights* initial_weights) {
+          return runner(p, arms, options_of(jobs, initial_weights));
+        },
+        py::arg("parameters"), py::arg("arms"), py::arg("jobs") = 1,
+        py::arg("initial_weights") = nullptr, py::call_guard<py::gil_scoped_release>(), doc);
+  };
+  def_runner("run_exp1", &experiments::run_exp1, "exp1 over `arms` (Arm objects, a user's too).");
+  def_runner("run_exp3", &experiments::run_exp3, "exp3 over `arms`.");
+  def_runner("run_evaluation", &experiments::run_evaluation,
+             "The weights learning starts from, evaluated as exp1 evaluates what it learnt.");
+  def_runner("run_transfer", &experiments::run_transfer,
+             "Train once, evaluate under each of transfer.conditions.");
+  m.def(
+      "run_exp2",
+      [](const config::Parameters& p, const diagrams::Arm& coordinated,
+         const diagrams::Arm& operant, int jobs) {
+        return experiments::run_exp2(p, coordinated, operant, options_of(jobs, nullptr));
+      },
+      py::arg("parameters"), py::arg("coordinated"), py::arg("operant"), py::arg("jobs") = 1,
+      py::call_guard<py::gil_scoped_release>());
+}
+
+// A per-seed body written in Python: per_seed(parameters, arm, seed_run, kit) fills seed_run.
+experiments::PerSeed per_seed_from(py::object per_seed) {
+  SharedPythonObject callable(std::move(per_seed));
+  return [callable](const config::Parameters& p, const diagrams::Arm& arm,
+                    const experiments::TelemetryOptions& telemetry,
+                    const LearntWeights* initial_weights, experiments::SeedRun& run) {
+    experiments::SeedLoop seed_loop(p, arm, telemetry, initial_weights, run.seed);
+    {
+      py::gil_scoped_acquire gil;
+      py::reinterpret_borrow<py::object>(callable.get())(
+          copy_of(p), py::cast(&arm, py::return_value_policy::reference),
+          py::cast(&run, py::return_value_policy::reference),
+          py::cast(&seed_loop, py::return_value_policy::reference));
+    }
+    experiments::finish_run(p, arm, seed_loop.loop, seed_loop.runner.context(), run);
+  };
+}
+
+void bind_kit(py::module_& m) {
+  py::class_<experiments::SeedLoop>(
+      m, "SeedLoop",
+      "One seed of an arm: its learning closed loop and the runner of its trials. Valid during "
+      "the per-seed call only.")
+      .def(
+          "trial",
+          [](experiments::SeedLoop& loop, const config::Parameters& p, int trial,
+             std::optional<double> theta0) {
+            return theta0 ? experiments::next_trial(p, loop.runner, trial, *theta0)
+                          : experiments::next_trial(p, loop.runner, trial);
+          },
+          py::arg("parameters"), py::arg("trial"), py::arg("theta0") = std::nullopt,
+          py::call_guard<py::gil_scoped_release>(),
+          "Runs trial number `trial` from trial.theta0 (or theta0) and returns its record.")
+      .def_property_readonly(
+          "context", [](experiments::SeedLoop& loop) -> Context& { return loop.runner.context(); },
+          py::return_value_policy::reference_internal);
+  m.def(
+      "register_protocol",
+      [](std::string name, std::string meaning, py::object per_seed, bool evaluates, bool paired,
+         std::vector<std::string> paired_figures) {
+        const experiments::PerSeed body = per_seed_from(std::move(per_seed));
+        experiments::ResultsShape shape;
+        shape.evaluates = evaluates;
+        shape.paired = paired;
+        shape.pairs_figure = [paired_figures](const std::string& figure) {
+          return std::find(paired_figures.begin(), paired_figures.end(), figure) !=
+                 paired_figures.end();
+        };
+        experiments::register_protocol(
+            {.name = name,
+             .meaning = std::move(meaning),
+             .run =
+                 [name, body](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+                              const ExperimentOptions& options) {
+                   return experiments::run_per_arm(name, body, p, arms, options);
+                 },
+             .results = shape});
+      },
+      py::arg("name"), py::arg("meaning"), py::arg("per_seed"), py::arg("evaluates") = true,
+      py::arg("paired") = true, py::arg("paired_figures") = std::vector<std::string>{},
+      "Adds a protocol `experiment` may name. per_seed(parameters, arm, run, loop) runs one "
+      "seed of one arm: loop.trial(parameters, k) runs trials, run.add_trial(record) and "
+      "run.add_figure(name, value) record them; the run is then finished as exp1's (weights "
+      "kept, evaluated when `evaluates`).");
+  m.def("protocol_names", [] {
+    std::vector<std::string> names;
+    for (const auto& protocol : experiments::protocols()) names.push_back(protocol.name);
+    return names;
+  });
+}
+
+}  // namespace
+
+void bind_protocols(py::module_& m) {
+  bind_records(m);
+  bind_results(m);
+  bind_runs(m);
+  bind_kit(m);
+  m.def(
+      "cli",
+      [](std::vector<std::string> args, const std::filesystem::path& share) {
+        args.insert(args.begin(), "cbbg");
+        std::vector<char*> argv;
+        for (std::string& arg : args) argv.push_back(arg.data());
+        return app::run_cli(static_cast<int>(argv.size()), argv.data(), share);
+      },
+      py::arg("args"), py::arg("share"), py::call_guard<py::gil_scoped_release>(),
+      "Runs the cbbg command line (run, eval, graph, plot, merge, ...) with this process's "
+      "registrations; returns its exit code. cbbg.main(args) supplies `share`.");
+}
+
+}  // namespace cbbg::python

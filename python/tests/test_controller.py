@@ -1,0 +1,152 @@
+"""The controller's slots, arms and plants from Python, through exp1."""
+
+import numpy as np
+import pytest
+
+import cbbg
+from pd_supervisor import PdSupervisor as PdSupervisorInPython
+from two_wheeler import RobotParams, TwoWheeler
+
+
+def python_supervised_cbbg():
+    options = cbbg.preset("cbbg").options
+    options.slots.supervisor = PdSupervisorInPython
+    return options
+
+
+def analytic(seeds=3, **settings):
+    return cbbg.parameters({"plant.kind": "analytic", "seeds": seeds, **settings})
+
+
+def per_seed_numbers(results):
+    """Everything exp1 records per seed, as plain values."""
+    return [(run.arm, run.seed, run.failures_before_success, run.succeeded,
+             [(t.trial, t.outcome.status, t.outcome.steps, t.outcome.final_theta,
+               t.outcome.mean_temperature, t.outcome.mean_entropy) for t in run.trials],
+             [(e.theta0, e.outcome.status, e.outcome.steps, e.outcome.final_theta)
+              for e in run.evaluation],
+             run.weights.actor.tolist() if run.weights else None)
+            for run in results.runs]
+
+
+def test_a_python_supervisor_gives_the_per_seed_exp1_numbers_of_the_cpp_pd_it_copies():
+    p = analytic()
+    python = cbbg.run_exp1(p, [cbbg.make_arm("cbbg", python_supervised_cbbg())], jobs=2)
+    native = cbbg.run_exp1(p, [cbbg.preset_arm("cbbg")], jobs=2)
+    assert per_seed_numbers(python) == per_seed_numbers(native)
+
+
+def test_a_python_block_in_the_loop_gives_the_same_results_in_one_thread_or_two():
+    p = analytic(seeds=2)
+    arms = [cbbg.make_arm("cbbg", python_supervised_cbbg())]
+    assert per_seed_numbers(cbbg.run_exp1(p, arms, jobs=1)) == per_seed_numbers(
+        cbbg.run_exp1(p, arms, jobs=2))
+
+
+def test_a_slot_reads_back_the_python_callable_it_was_given():
+    options = python_supervised_cbbg()
+    assert options.slots.supervisor is PdSupervisorInPython
+    assert options.slots.features is None
+    options.slots.supervisor = None
+    assert options.slots.supervisor is None
+
+
+class ConstantOmega(cbbg.LeafBlock):
+    def __init__(self, name, value):
+        super().__init__(name)
+        self.value = value
+        self.declare_output_port("omega", 1, self.calc)
+
+    def calc(self, context, out):
+        out[:] = self.value
+
+
+def test_a_python_omega_of_one_makes_cbbg_learn_as_the_basal_ganglia_alone():
+    options = cbbg.preset("cbbg").options
+    options.slots.omega = lambda name, p: ConstantOmega(name, 1.0)
+    loop = cbbg.make_arm("omega_one", options).learner(analytic())
+    assert loop.controller.block("omega").type_name == "ConstantOmega"
+    results = cbbg.run_exp1(analytic(seeds=1), [cbbg.make_arm("omega_one", options)])
+    assert results.runs[0].trials[0].outcome.mean_temperature > 0
+
+
+def test_a_python_plant_runs_exp1_as_the_analytic_plant_does():
+    p = analytic(seeds=1)
+    arm = cbbg.make_arm("cbbg", cbbg.preset("cbbg").options,
+                        plant=lambda name, q: TwoWheeler(name, RobotParams.of(q)))
+    python = cbbg.run_exp1(p, [arm])
+    native = cbbg.run_exp1(p, [cbbg.preset_arm("cbbg")])
+    ours, theirs = python.runs[0], native.runs[0]
+    assert ours.failures_before_success == theirs.failures_before_success
+    assert [e.outcome.status for e in ours.evaluation] == [e.outcome.status for e in theirs.evaluation]
+    # The same equations, solved by NumPy instead of Eigen's Cholesky: equal to rounding.
+    assert ours.trials[-1].outcome.final_theta == pytest.approx(
+        theirs.trials[-1].outcome.final_theta, abs=1e-9)
+
+
+def test_a_factory_that_returns_no_block_is_refused_by_name():
+    options = cbbg.preset("cbbg").options
+    options.slots.features = lambda name, p: 42
+    with pytest.raises(ValueError, match="the factory of slot 'features': expected a Block, got int"):
+        cbbg.make_arm("bad", options).learner(analytic())
+
+
+def test_an_exception_in_a_python_factory_keeps_its_type():
+    def broken(name, parameters):
+        raise KeyError("no such gain")
+
+    options = cbbg.preset("cbbg").options
+    options.slots.supervisor = broken
+    with pytest.raises(KeyError, match="no such gain"):
+        cbbg.run_exp1(analytic(seeds=1), [cbbg.make_arm("broken", options)], jobs=2)
+
+
+def test_settings_from_dicts_are_checked_key_by_key():
+    assert cbbg.parameters({"critic": {"gamma": 0.9}})["critic.gamma"] == 0.9
+    with pytest.raises(cbbg.ConfigError) as error:
+        cbbg.parameters({"critic.gama": 0.9})
+    assert str(error.value) == ("settings['critic.gama']: unknown key 'critic.gama'; did you mean "
+                                "'critic.gamma'?")
+    with pytest.raises(cbbg.ConfigError, match=r"critic.gamma must be in \(0, 1\]; got 2"):
+        cbbg.parameters({"critic.gamma": 2})
+
+
+def test_a_users_own_section_is_set_from_a_dict_and_read_by_a_factory():
+    cbbg.register_section("lean", {"gain": cbbg.number_key(40.0, "the lean gain", min=0.0)})
+    p = cbbg.parameters({"lean": {"gain": 55.0}})
+    assert p["lean.gain"] == 55.0
+    assert cbbg.parameters()["lean.gain"] == 40.0
+    with pytest.raises(cbbg.ConfigError, match=r"lean.gain must be >= 0; got -1"):
+        cbbg.parameters({"lean.gain": -1})
+    seen = []
+    options = cbbg.preset("cbbg").options
+
+    def supervisor(name, parameters):
+        seen.append(parameters["lean.gain"])
+        return PdSupervisorInPython(name, parameters)
+
+    options.slots.supervisor = supervisor
+    cbbg.make_arm("lean", options).learner(cbbg.parameters({"lean.gain": 12.5, "plant.kind": "analytic"}))
+    assert seen == [12.5]
+
+
+cbbg.register_arm("cbbg_python_pd", "cbbg with the PD supervisor written in Python",
+                  python_supervised_cbbg())
+cbbg.register_plant_kind("numpy_two_wheeler", "the two-wheeler written in Python with NumPy",
+                         lambda name, p: TwoWheeler(name, RobotParams.of(p)))
+
+
+def test_a_registered_python_arm_and_plant_run_exp1_into_a_results_directory(tmp_path):
+    assert "cbbg_python_pd" in cbbg.arm_names()
+    assert "numpy_two_wheeler" in cbbg.plant_kinds()
+    out = tmp_path / "python_pd"
+    assert cbbg.main(["run", "--set", "plant.kind=analytic", "--set", "arms=[cbbg_python_pd, cbbg]",
+                      "--seeds", "2", "--jobs", "2", "--no-figures", "--out", out]) == 0
+    arms = cbbg.load_results(out).summary["arms"]
+    assert arms["cbbg_python_pd"]["failures_before_success"] == arms["cbbg"]["failures_before_success"]
+    out = tmp_path / "numpy_plant"
+    assert cbbg.main(["run", "--set", "plant.kind=numpy_two_wheeler", "--set", "arms=[cbbg]",
+                      "--seeds", "1", "--no-figures", "--out", out]) == 0
+    results = cbbg.load_results(out)
+    assert results.summary["plant"] == "numpy_two_wheeler"
+    assert len(results.evaluation["balanced"]) == 5

@@ -1,0 +1,83 @@
+"""The protocols from Python: in memory, through the command line with its results
+directory, and one written in Python."""
+
+import os
+
+import numpy as np
+import pytest
+
+import cbbg
+
+QUICK = {"plant.kind": "analytic", "seeds": 2, "max_trials": 5}
+
+
+def test_exp3_and_exp2_run_and_return_their_records():
+    exp3 = cbbg.run_experiment(cbbg.parameters({**QUICK, "experiment": "exp3"}), jobs=2)
+    assert exp3.experiment == "exp3" and exp3.arms == ["cbbg", "bg_only"]
+    assert all(run.trials[0].actor_alone_passed is not None for run in exp3.runs)
+    exp2 = cbbg.run_experiment(
+        cbbg.parameters({**QUICK, "experiment": "exp2", "exp2.trials": 3}), jobs=2)
+    assert [len(run.trials) for run in exp2.runs] == [3, 3]
+    assert [t.k1 for t in exp2.runs[0].trials] == [10.0, 10.0, 10.0]
+
+
+def test_evaluate_runs_the_weights_exp1_learnt(tmp_path):
+    trained = cbbg.run_experiment(cbbg.parameters({**QUICK, "experiment": "cbbg", "seeds": 1}))
+    weights = trained.runs[0].weights
+    path = tmp_path / "weights.txt"
+    cbbg.save_weights(path, weights)
+    loaded = cbbg.load_weights(path)
+    np.testing.assert_array_equal(loaded.actor, weights.actor)
+    evaluated = cbbg.run_experiment(
+        cbbg.parameters({**QUICK, "experiment": "evaluate", "arms": ["cbbg"], "seeds": 1}),
+        initial_weights=loaded)
+    assert [e.outcome.status for e in evaluated.runs[0].evaluation] == [
+        e.outcome.status for e in trained.runs[0].evaluation]
+
+
+def test_the_command_line_writes_a_results_directory_that_loads_as_arrays(tmp_path):
+    out = tmp_path / "exp1"
+    assert cbbg.main(["run", "--set", "plant.kind=analytic", "--seeds", "2", "--no-figures",
+                      "--out", out]) == 0
+    results = cbbg.load_results(out)
+    in_memory = cbbg.run_experiment(cbbg.parameters({"plant.kind": "analytic", "seeds": 2}))
+    failures = [run.failures_before_success for run in in_memory.runs]
+    assert results.summary["arms"]["cbbg"]["failures_before_success"] == failures[:2]
+    assert results.summary["arms"]["bg_only"]["failures_before_success"] == failures[2:]
+    bg_only = results.table("trials", arm="bg_only")
+    assert bg_only["failed"].sum() == sum(failures[2:])
+    with pytest.raises(ValueError, match="is not a finished cbbg results directory"):
+        cbbg.load_results(tmp_path)
+
+
+def test_a_bad_setting_on_the_command_line_exits_two():
+    assert cbbg.main(["run", "--set", "critic.gamma=2", "--out", "/nonexistent/x"]) == 2
+
+
+def two_angles(parameters, arm, run, loop):
+    """A protocol of the user's: one trial from 0.05 rad, then one from trial.theta0."""
+    for number, theta0 in ((1, 0.05), (2, None)):
+        record = loop.trial(parameters, number, theta0)
+        run.add_trial(record)
+    run.succeeded = all(t.outcome.balanced for t in run.trials)
+    run.add_figure("balanced_trials", sum(t.outcome.balanced for t in run.trials))
+
+
+cbbg.register_protocol("two_angles", "a trial from 0.05 rad, then from trial.theta0", two_angles,
+                       paired_figures=["balanced_trials"])
+
+
+def test_a_protocol_written_in_python_runs_in_memory_and_through_the_command_line(tmp_path):
+    assert "two_angles" in cbbg.protocol_names()
+    p = cbbg.parameters({**QUICK, "experiment": "two_angles"})
+    results = cbbg.run_experiment(p, jobs=2)
+    assert results.experiment == "two_angles"
+    assert [len(run.trials) for run in results.runs] == [2, 2, 2, 2]
+    assert results.runs[0].figures[0].name == "balanced_trials"
+    assert results.runs[0].evaluation  # finished as exp1's: evaluated
+    out = tmp_path / "two"
+    assert cbbg.main(["run", "--experiment", "two_angles", "--set", "plant.kind=analytic",
+                      "--seeds", "2", "--no-figures", "--out", out]) == 0
+    figures = cbbg.load_results(out).figures
+    np.testing.assert_array_equal(figures["balanced_trials"],
+                                  [run.figures[0].value for run in results.runs])
