@@ -4,7 +4,7 @@
 # spring, the toolbox's PID and discrete LQR loops); a user's supervisor through experiment
 # 1 against the cbbg preset, writing a results directory, then sweeping the supervisor's own
 # keys over a 2 x 2 grid; and the cart-pole project through every command
-# (test_cartpole_project.sh).
+# (test_cartpole_project.sh); and the installed Python module through its example.
 # Also runs the installed `cbbg` command, which must find its plotting script by itself.
 #   test_find_package.sh BUILD_DIR
 set -euo pipefail
@@ -110,6 +110,15 @@ fi
 if strings "$scratch/prefix/bin/cbbg" | grep -q "$root"; then
   echo "the installed cbbg names the source tree $root" >&2
   exit 1
+fi
+# The installed Python module, away from the build tree, with its installed examples: a
+# Python supervisor through exp1 (the README's example), plotted.
+if [ -d "$scratch/prefix/lib" ] && [ -x /usr/bin/python3 ]; then
+  site="$(find "$scratch/prefix/lib" -type d -name cbbg -path '*-packages/cbbg' -printf '%h')"
+  (cd "$scratch" && PYTHONPATH="$site" /usr/bin/python3 \
+    "$scratch/prefix/share/doc/cbbg/examples/python/python_supervisor.py" --plant analytic \
+    --out "$scratch/python_failures.png" >/dev/null)
+  test -s "$scratch/python_failures.png"
 fi
 # A whole project of the user's (examples/cartpole) through every command, as installed.
 "$root/scripts/test_cartpole_project.sh" "$scratch/example/cartpole" "$scratch/cartpole"
