@@ -21,6 +21,15 @@ def test_exp3_and_exp2_run_and_return_their_records():
     assert [t.k1 for t in exp2.runs[0].trials] == [10.0, 10.0, 10.0]
 
 
+def test_transfer_records_each_conditions_figures():
+    p = cbbg.parameters({**QUICK, "experiment": "transfer",
+                         "transfer.conditions": ["evaluation.body_mass_scale=1.2"]})
+    results = cbbg.run_experiment(p, jobs=2)
+    assert [f.name for f in results.runs[0].figures] == [
+        "balanced@evaluation.body_mass_scale=1.2", "evaluated@evaluation.body_mass_scale=1.2"]
+    assert results.runs[0].figures[1].value == 5.0  # the five evaluation.angles
+
+
 def test_evaluate_runs_the_weights_exp1_learnt(tmp_path):
     trained = cbbg.run_experiment(cbbg.parameters({**QUICK, "experiment": "cbbg", "seeds": 1}))
     weights = trained.runs[0].weights
