@@ -19,7 +19,9 @@ Reward::Reward(std::string name, const RewardParams& params, double period)
       declare_discrete_state("has_previous", Vector::Zero(1), StateLifetime::kPerTrial);
   auto surface = [this, &measured](const BlockContext& context) {
     const auto y = context.input(measured);
-    return params_.a1 * y[kMeasuredThetaB] + params_.a2 * y[kMeasuredThetaBDot];
+    const double s = params_.a1 * y[kMeasuredThetaB] + params_.a2 * y[kMeasuredThetaBDot];
+    if (params_.k_phi == 0.0) return s;  // the paper's surface, bit for bit
+    return s + params_.k_phi * (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
   };
   declare_output_port(
       "reward", 1,

@@ -10,17 +10,23 @@ namespace cbbg::blocks {
 
 // Config keys reward.*.
 struct RewardParams {
-  double a1 = 10.0;  // reward.a1: weight of theta_b in the sliding surface, 1/rad
-  double a2 = 1.0;   // reward.a2: weight of theta_b', s/rad
+  double a1 = 10.0;    // reward.a1: weight of theta_b in the sliding surface, 1/rad
+  double a2 = 1.0;     // reward.a2: weight of theta_b', s/rad
+  double k_phi = 0.0;  // reward.k_phi: weight of the wheels' mean rate phi', s/rad
 
   static constexpr const char* kSection = "reward";
   template <class Archive>
   void describe(Archive& a) {
     a.number("a1", a1, "sliding surface weight on theta_b, 1/rad", kFinite);
     a.number("a2", a2, "sliding surface weight on theta_b', s/rad", kFinite);
+    a.number("k_phi", k_phi,
+             "sliding surface weight on the wheels' mean rate phi', s/rad; 0 = the paper's "
+             "surface (torque steers s for k_phi < 0.2385 a2 on the default robot: docs/model.md "
+             "2.9)",
+             kFinite);
   }
 
-  // Throws naming the key unless both are finite.
+  // Throws naming the key unless every weight is finite.
   void validate() const;
 };
 
@@ -32,11 +38,12 @@ struct RewardParams {
 /// | failed   | in  | 1    | 1 when the trial fails at this tick, else 0           |
 /// | reward   | out | 1    | r_{t-1}, the reward of the transition s_{t-1} -> s_t  |
 ///
-/// Equations: s(t) = a1 theta_b + a2 theta_b';
+/// Equations: s(t) = a1 theta_b + a2 theta_b' + k_phi phi', phi' = (phi_l' + phi_r') / 2 (with
+///   k_phi = 0, the paper's surface, computed without the term: the same bits);
 ///   r_{t-1} = -1 if failed, else 0 if s(t)^2 <= s(t-1)^2, else -1;
 /// 0 on the first tick of a trial without failure (there is no transition yet). The
 /// periodic update remembers s(t); a new trial forgets it.
-/// Parameters: a1 = reward.a1, a2 = reward.a2, the period trial.period.
+/// Parameters: a1 = reward.a1, a2 = reward.a2, k_phi = reward.k_phi, the period trial.period.
 ///
 /// Discrete state, per trial: previous_surface s(t-1), has_previous.
 class Reward final : public Block {

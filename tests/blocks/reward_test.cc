@@ -57,6 +57,25 @@ TEST(Reward, UsesConfiguredSurfaceWeights) {
   EXPECT_EQ(reward_at(harness, 1.0, 1.0), 0.0);   // s = -1
 }
 
+TEST(Reward, TheWheelRateWeightAddsTheWheelsMeanRateToTheSurface) {
+  RewardParams params;
+  params.k_phi = 0.5;  // s = 10 theta + theta' + 0.5 (phi_l' + phi_r') / 2
+  Harness harness("reward", params, kPeriod);
+  Vector y = Vector::Zero(kMeasuredSize);
+  y[kMeasuredPhiLeftDot] = 1.0;
+  y[kMeasuredPhiRightDot] = 3.0;
+  harness.set_input("measured", y);  // s = 1
+  harness.set_input("failed", 0.0);
+  harness.tick();
+  y[kMeasuredThetaB] = -0.09;  // s = -0.9 + 1 = 0.1: shrank
+  harness.set_input("measured", y);
+  EXPECT_EQ(harness.scalar_output("reward"), 0.0);
+  harness.tick();
+  y[kMeasuredThetaB] = 0.0;  // s = 1: grew, though the paper's surface (0) did not
+  harness.set_input("measured", y);
+  EXPECT_EQ(harness.scalar_output("reward"), -1.0);
+}
+
 TEST(Reward, StartTrialForgetsThePreviousSurface) {
   Harness harness("reward", RewardParams{}, kPeriod);
   EXPECT_EQ(reward_at(harness, 0.0, 0.0), 0.0);  // s = 0: anything after it is a growth
