@@ -6,9 +6,20 @@
 
 #include <pybind11/pybind11.h>
 
+#include <string>
+#include <vector>
+
 namespace cbbg::python {
 
 namespace py = pybind11;
+
+// The `name` of each entry of a registry (plant kinds, protocols), in its order.
+template <class Registry>
+std::vector<std::string> names_of(const Registry& entries) {
+  std::vector<std::string> names;
+  for (const auto& entry : entries) names.push_back(entry.name);
+  return names;
+}
 
 // Ports, blocks, the builder, diagrams, contexts, the simulator, logs, Graphviz.
 void bind_framework(py::module_& m);

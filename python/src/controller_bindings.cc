@@ -223,11 +223,7 @@ void bind_plant_kinds(py::module_& m) {
       "parameters, key, factor) -> {key: value} applying an evaluation's changed robot "
       "(key: evaluation.body_mass_scale or evaluation.com_height_scale), or None when it has "
       "no such parameter. Register before making any Config.");
-  m.def("plant_kinds", [] {
-    std::vector<std::string> names;
-    for (const auto& kind : diagrams::plant_kinds()) names.push_back(kind.name);
-    return names;
-  });
+  m.def("plant_kinds", [] { return names_of(diagrams::plant_kinds()); });
   m.def(
       "plant_factory",
       [](std::string_view kind) { return callable_of(diagrams::plant_kind(kind).make); },

@@ -6,6 +6,8 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <type_traits>
+
 #include "bindings.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/diagram.h"
@@ -31,6 +33,22 @@ py::list children(const Diagram& diagram, py::handle self) {
   py::list list;
   for (const auto& child : diagram.blocks()) list.append(child_object(*child, self));
   return list;
+}
+
+// A block's input or output ports, each keeping the block alive.
+template <class PortType>
+py::list ports_of(py::object self) {
+  const Block& block = self.cast<const Block&>();
+  constexpr bool inputs = std::is_same_v<PortType, InputPort>;
+  const int count = inputs ? block.num_input_ports() : block.num_output_ports();
+  py::list ports;
+  for (int i = 0; i < count; ++i) {
+    const Port& port = inputs ? static_cast<const Port&>(block.input_port(i))
+                              : static_cast<const Port&>(block.output_port(i));
+    ports.append(py::cast(&static_cast<const PortType&>(port),
+                          py::return_value_policy::reference_internal, self));
+  }
+  return ports;
 }
 
 template <class PortType>
@@ -98,28 +116,8 @@ void bind_block(py::module_& m) {
            py::arg("name"), py::return_value_policy::reference_internal)
       .def("output_port", py::overload_cast<int>(&Block::output_port, py::const_), py::arg("index"),
            py::return_value_policy::reference_internal)
-      .def_property_readonly(
-          "input_ports",
-          [](py::object self) {
-            const Block& block = self.cast<const Block&>();
-            py::list ports;
-            for (int i = 0; i < block.num_input_ports(); ++i) {
-              ports.append(py::cast(&block.input_port(i),
-                                    py::return_value_policy::reference_internal, self));
-            }
-            return ports;
-          })
-      .def_property_readonly(
-          "output_ports",
-          [](py::object self) {
-            const Block& block = self.cast<const Block&>();
-            py::list ports;
-            for (int i = 0; i < block.num_output_ports(); ++i) {
-              ports.append(py::cast(&block.output_port(i),
-                                    py::return_value_policy::reference_internal, self));
-            }
-            return ports;
-          })
+      .def_property_readonly("input_ports", &ports_of<InputPort>)
+      .def_property_readonly("output_ports", &ports_of<OutputPort>)
       .def_property_readonly("discrete_state_parts", &Block::discrete_state_parts)
       .def("discrete_state_part", &Block::discrete_state_part, py::arg("name"))
       .def_property_readonly("initial_discrete_state", &Block::initial_discrete_state)

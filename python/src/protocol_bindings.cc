@@ -206,11 +206,7 @@ void bind_kit(py::module_& m) {
       "seed of one arm: loop.trial(parameters, k) runs trials, run.add_trial(record) and "
       "run.add_figure(name, value) record them; the run is then finished as exp1's (weights "
       "kept, evaluated when `evaluates`).");
-  m.def("protocol_names", [] {
-    std::vector<std::string> names;
-    for (const auto& protocol : experiments::protocols()) names.push_back(protocol.name);
-    return names;
-  });
+  m.def("protocol_names", [] { return names_of(experiments::protocols()); });
 }
 
 }  // namespace
