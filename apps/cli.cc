@@ -146,8 +146,13 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
                        "initial pitches, rad, comma-separated (default: evaluation.angles)");
   eval_app->add_option("--repeats", eval.repeats, "runs per angle, seeds seed, seed + 1, ...");
   eval_app->add_option("--push-time", eval.push_time,
-                       "push start, s (with --push-torque, --push-duration)");
-  eval_app->add_option("--push-torque", eval.push_torque, "push torque added to both wheels, N m");
+                       "push start, s (with --push-duration and a push size)");
+  eval_app->add_option("--push-torque", eval.push_torque,
+                       "push through the motors: N m added to both wheels' torque");
+  eval_app->add_option("--push-force", eval.push_force,
+                       "push from outside: N at the body's centre of mass, along the heading");
+  eval_app->add_option("--push-pitch-torque", eval.push_pitch_torque,
+                       "push from outside: N m on the body about the axle");
   eval_app->add_option("--push-duration", eval.push_duration, "push length, s");
   eval_app->add_option("--out,-o", eval.out, "write DIR/evaluation.csv");
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <iostream>
 #include <stdexcept>
+#include <tuple>
 
 #include "cbbg/config/config.h"
 #include "cbbg/diagrams/presets.h"
@@ -33,21 +34,23 @@ std::string format_number(double value) {
   return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
 }
 
-// The push of --push-time, --push-torque and --push-duration: all three or none.
+// The push of --push-time, --push-duration and its sizes (--push-torque, --push-force,
+// --push-pitch-torque, at least one): all of the push or none.
 std::optional<blocks::PushParams> push_from(const EvalOptions& options) {
-  const int given =
-      (options.push_time ? 1 : 0) + (options.push_torque ? 1 : 0) + (options.push_duration ? 1 : 0);
-  if (given == 0) return std::nullopt;
-  if (given < 3) {
-    std::string missing;
-    for (const auto& [name, value] :
-         {std::pair<const char*, const std::optional<double>*>{"--push-time", &options.push_time},
-          {"--push-torque", &options.push_torque},
-          {"--push-duration", &options.push_duration}}) {
-      if (!*value) missing += (missing.empty() ? "" : " and ") + std::string(name);
-    }
+  const bool sized = options.push_torque || options.push_force || options.push_pitch_torque;
+  if (!sized && !options.push_time && !options.push_duration) return std::nullopt;
+  std::string missing;
+  for (const auto& [name, given] :
+       {std::pair{"--push-time", options.push_time.has_value()},
+        {"--push-duration", options.push_duration.has_value()},
+        {"--push-torque, --push-force or --push-pitch-torque", sized}}) {
+    if (!given) missing += (missing.empty() ? "" : " and ") + std::string(name);
+  }
+  if (!missing.empty()) {
     throw config::ConfigError(
-        "--push-time, --push-torque and --push-duration go together; missing " + missing);
+        "a push needs --push-time, --push-duration and at least one of --push-torque, "
+        "--push-force and --push-pitch-torque; missing " +
+        missing);
   }
   auto require = [](const char* name, double value, bool ok, const char* range) {
     if (!std::isfinite(value) || !ok) {
@@ -56,9 +59,17 @@ std::optional<blocks::PushParams> push_from(const EvalOptions& options) {
     }
   };
   require("--push-time", *options.push_time, *options.push_time >= 0.0, ">= 0 (s)");
-  require("--push-torque", *options.push_torque, true, "(N m)");
   require("--push-duration", *options.push_duration, *options.push_duration > 0.0, "> 0 (s)");
-  return blocks::PushParams{*options.push_time, *options.push_torque, *options.push_duration};
+  blocks::PushParams push{*options.push_time, 0.0, *options.push_duration};
+  for (const auto& [name, given, size, unit] :
+       {std::tuple{"--push-torque", &options.push_torque, &push.torque, "(N m)"},
+        {"--push-force", &options.push_force, &push.force, "(N)"},
+        {"--push-pitch-torque", &options.push_pitch_torque, &push.pitch_torque, "(N m)"}}) {
+    if (!*given) continue;
+    require(name, **given, true, unit);
+    *size = **given;
+  }
+  return push;
 }
 
 // --angles as typed: finite numbers separated by single commas ("0.1,,0.2" is refused).
@@ -127,9 +138,17 @@ void print_table(const experiments::PolicyEvaluation& evaluation, const config::
               from.plant.c_str());
   std::printf("policy alone on the %s plant for %g s, seeds %lld..%lld", p.plant.kind.c_str(),
               p.trial.duration, evaluation.first_seed, evaluation.first_seed + options.repeats - 1);
-  if (options.push_time) {
-    std::printf("; push %g N m on each wheel from %g s for %g s", *options.push_torque,
-                *options.push_time, *options.push_duration);
+  if (const std::optional<blocks::PushParams> push = push_from(options)) {
+    std::printf("; push");
+    const char* joint = " ";
+    for (const auto& [size, unit] : {std::pair{push->torque, "N m on each wheel"},
+                                     {push->force, "N at the centre of mass"},
+                                     {push->pitch_torque, "N m on the body"}}) {
+      if (size == 0.0) continue;
+      std::printf("%s%g %s", joint, size, unit);
+      joint = " and ";
+    }
+    std::printf(" from %g s for %g s", push->start, push->duration);
   }
   if (const std::string conditions = experiments::describe_conditions(p.evaluation);
       !conditions.empty()) {

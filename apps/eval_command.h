@@ -18,11 +18,14 @@ struct EvalOptions {
   std::string angles;                  // --angles as typed: rad, comma-separated; empty: the
                                        // config's evaluation.angles
   int repeats = 1;                     // --repeats: runs per angle, >= 1
-  // --push-time (s, >= 0), --push-torque (N m, added to both wheels), --push-duration (s, > 0):
-  // all three or none.
+  // --push-time (s, >= 0) and --push-duration (s, > 0) with at least one of --push-torque
+  // (N m through the motors, added to both wheels), --push-force (N at the body's centre of
+  // mass) and --push-pitch-torque (N m on the body), the last two from outside; or none.
   std::optional<double> push_time;
   std::optional<double> push_torque;
   std::optional<double> push_duration;
+  std::optional<double> push_force;
+  std::optional<double> push_pitch_torque;
   // --out: a directory that receives evaluation.csv (theta0, seed, balanced, steps,
   // final_theta, status: one row per run); empty: no file. An evaluation.csv there is
   // replaced only when cbbg wrote it (the directory's .cbbg-written lists it).

@@ -17,10 +17,10 @@
 #include "cbbg/blocks/normaliser.h"
 #include "cbbg/blocks/omega_schedule.h"
 #include "cbbg/blocks/pd_supervisor.h"
+#include "cbbg/blocks/push_params.h"
 #include "cbbg/blocks/rbf_features.h"
 #include "cbbg/blocks/reward.h"
 #include "cbbg/blocks/sensors.h"
-#include "cbbg/blocks/torque_push.h"
 #include "cbbg/blocks/tropism.h"
 #include "cbbg/config/config.h"
 #include "cbbg/config/own_sections.h"
@@ -141,6 +141,8 @@ struct EvaluationParams {
   double push_torque = 0.0;
   double push_start = 5.0;
   double push_duration = 0.2;
+  double push_force = 0.0;
+  double push_pitch_torque = 0.0;
 
   template <class Archive>
   void describe(Archive& a) {
@@ -156,7 +158,15 @@ struct EvaluationParams {
              "rate (rad/s), on top of sensors.noise_std",
              kNonNegative);
     a.number("push_torque", push_torque,
-             "evaluation only: a push of this many N m on each wheel; 0 = push.* as set", kFinite);
+             "evaluation only: a push through the motors, N m on each wheel (push.torque)",
+             kFinite);
+    a.number("push_force", push_force,
+             "evaluation only: a push from outside, N at the body's centre of mass (push.force)",
+             kFinite);
+    a.number("push_pitch_torque", push_pitch_torque,
+             "evaluation only: a push from outside, N m on the body (push.pitch_torque); with "
+             "push_torque and push_force all 0, push.* as set",
+             kFinite);
     a.number("push_start", push_start, "evaluation only: when that push begins, s", kNonNegative);
     a.number("push_duration", push_duration, "evaluation only: how long that push lasts, s",
              kPositive);

@@ -3,15 +3,19 @@
 #include <limits>
 #include <stdexcept>
 
+#include "cbbg/blocks/external_push.h"
 #include "cbbg/blocks/failure_detector.h"
 #include "cbbg/blocks/reward.h"
 #include "cbbg/blocks/sensors.h"
+#include "cbbg/blocks/torque_push.h"
+#include "cbbg/config/config.h"
 #include "cbbg/config/parameters.h"
 #include "cbbg/framework/diagram_builder.h"
 #include "cbbg/framework/primitives/constant_source.h"
 #include "cbbg/framework/primitives/multiplexer.h"
 #include "cbbg/framework/primitives/selector.h"
 #include "cbbg/framework/primitives/zero_order_hold.h"
+#include "cbbg/plant/plant_ports.h"
 
 namespace cbbg::diagrams {
 namespace {
@@ -34,13 +38,45 @@ plant::SignalIndex check_plant(const plant::RobotPlant& robot) {
   return plant::index_signals(robot.name(), signals);
 }
 
-// The push of push.*, when push.torque is not zero.
+// The push of push.*, when it pushes at all.
 std::optional<blocks::PushParams> configured_push(const config::Parameters& parameters) {
-  if (parameters.push.torque == 0.0) return std::nullopt;
+  if (!parameters.push.any()) return std::nullopt;
   return parameters.push;
 }
 
-// The action sampled every tick and held (zero-order hold), optionally pushed, to both wheels.
+// The plant of the arm's own factory or of plant.kind's, built for the loop's push (a kind's
+// plant declares its input "disturbance" when push.* pushes from outside).
+std::shared_ptr<plant::RobotPlant> make_plant(const config::Parameters& p,
+                                              const ClosedLoopOptions& options) {
+  if (options.push) {
+    config::Parameters pushed = p;
+    pushed.push = *options.push;
+    return make_plant(pushed, ClosedLoopOptions{options.plant, std::nullopt});
+  }
+  return options.plant ? options.plant("plant", p) : plant_kind(p.plant.kind).make("plant", p);
+}
+
+// A push from outside into the plant's input "disturbance"; a plant that declares the input
+// gets zero without one.
+void wire_disturbance(DiagramBuilder& builder, double period, const plant::RobotPlant& robot,
+                      const std::optional<blocks::PushParams>& push) {
+  const InputPort* disturbance = robot.disturbance_input();
+  if (!push || !push->from_outside()) {
+    if (disturbance != nullptr) builder.fix_input(*disturbance, Vector::Zero(disturbance->size()));
+    return;
+  }
+  if (disturbance == nullptr || disturbance->size() != plant::kDisturbanceSize) {
+    throw config::ConfigError(
+        "push.force and push.pitch_torque push the robot from outside, but plant '" + robot.name() +
+        "' has no input \"disturbance\" of size 2 (force, pitch torque); keep "
+        "them 0 for this plant, or push through the motors (push.torque)");
+  }
+  auto& pusher = builder.emplace<blocks::ExternalPush>("external_push", *push, period);
+  builder.connect(pusher.output_port("disturbance"), *disturbance);
+}
+
+// The action sampled every tick and held (zero-order hold), optionally pushed through the
+// motors, to both wheels.
 void wire_actuation(DiagramBuilder& builder, double period, const OutputPort& action,
                     const plant::RobotPlant& robot, const std::optional<blocks::PushParams>& push) {
   auto& hold = builder.emplace<ZeroOrderHold>("hold", 1, period);
@@ -48,7 +84,7 @@ void wire_actuation(DiagramBuilder& builder, double period, const OutputPort& ac
       "wheel_torques", std::vector<Multiplexer::Input>{{"left", 1}, {"right", 1}});
   builder.connect(action, hold.input_port("u"));
   const OutputPort* wheel_torque = &hold.output_port("y");
-  if (push) {
+  if (push && push->through_motors()) {
     auto& pusher = builder.emplace<blocks::TorquePush>("push", *push, period);
     builder.connect(*wheel_torque, pusher.input_port("action"));
     wheel_torque = &pusher.output_port("torque");
@@ -155,8 +191,8 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   loop.accuracy = p.plant.robot.accuracy;
   const double period = p.trial.period;
   DiagramBuilder builder(std::move(name));
-  std::shared_ptr<plant::RobotPlant> made =
-      options.plant ? options.plant("plant", p) : plant_kind(p.plant.kind).make("plant", p);
+  const std::optional<blocks::PushParams> push = options.push ? options.push : configured_push(p);
+  std::shared_ptr<plant::RobotPlant> made = make_plant(p, options);
   loop.plant_of_kind = !options.plant;
   if (!made) throw std::invalid_argument("the plant factory returned null");
   loop.signals = check_plant(*made);
@@ -186,8 +222,8 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   if (const InputPort* ends_on = brain.find_input_port("failed")) {
     builder.connect(failure.output_port("failed"), *ends_on);
   }
-  wire_actuation(builder, period, brain.output_port("action"), robot,
-                 options.push ? options.push : configured_push(p));
+  wire_actuation(builder, period, brain.output_port("action"), robot, push);
+  wire_disturbance(builder, period, robot, push);
   loop.telemetry =
       &wire_telemetry(builder, measured, brain, reward.output_port("reward"), robot, loop.signals);
   loop.diagram = builder.build();

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/blocks/torque_push.h"
+#include "cbbg/blocks/push_params.h"
 #include "cbbg/diagrams/cbbg_controller.h"
 #include "cbbg/diagrams/controller_ports.h"
 #include "cbbg/diagrams/plant_kinds.h"
@@ -56,8 +56,9 @@ struct ClosedLoopOptions {
   // Empty: plant.kind's (plant_kinds.h). A plant given here is the arm's own: an evaluation
   // that changes the robot refuses it (the change reaches a plant through its kind).
   PlantFactory plant{};
-  // A torque pulse between the hold and the wheels (cbbg eval --push-*); empty: push.*'s,
-  // if push.torque is not zero.
+  // The push (cbbg eval --push-*): its torque between the hold and the wheels (TorquePush),
+  // its force and pitch torque into the plant's input "disturbance" (ExternalPush). Empty:
+  // push.*'s, if it pushes at all.
   std::optional<blocks::PushParams> push{};
 };
 
@@ -65,7 +66,8 @@ struct ClosedLoopOptions {
 // one) into the closed loop named `name`. Its learners (blocks::WeightLearner, blocks::Tropism)
 // are found wherever they sit in it. Throws std::invalid_argument when the controller's or
 // the plant's ports or signals do not fit, naming them, or the controller has two learners
-// of a kind.
+// of a kind; config::ConfigError when the push comes from outside (push.force,
+// push.pitch_torque) and the plant has no input "disturbance".
 ClosedLoop build_closed_loop(std::string name, const config::Parameters& parameters,
                              std::shared_ptr<Diagram> controller,
                              const ClosedLoopOptions& options = {});

@@ -42,16 +42,24 @@ plant::LinearModel linearize_two_wheeler(const config::Parameters& p) {
   return plant::linearize_planar_upright(p.plant.robot);
 }
 
+// The library plants declare the input "disturbance" when push.* pushes from outside.
+plant::DisturbanceInput disturbance_input(const config::Parameters& p) {
+  return p.push.from_outside() ? plant::DisturbanceInput::kDeclared
+                               : plant::DisturbanceInput::kNone;
+}
+
 std::vector<PlantKind>& kinds() {
   static std::vector<PlantKind> all{
       {"simbody", "3-D multibody, reference",
        [](const std::string& name, const config::Parameters& p) {
-         return std::make_unique<plant::SimbodyPlant>(name, p.plant.robot, p.trial.theta0);
+         return std::make_unique<plant::SimbodyPlant>(name, p.plant.robot, p.trial.theta0,
+                                                      disturbance_input(p));
        },
        change_two_wheeler, linearize_two_wheeler},
       {"analytic", "fast",
        [](const std::string& name, const config::Parameters& p) {
-         return std::make_unique<plant::AnalyticPlant>(name, p.plant.robot, p.trial.theta0);
+         return std::make_unique<plant::AnalyticPlant>(name, p.plant.robot, p.trial.theta0,
+                                                       disturbance_input(p));
        },
        change_two_wheeler, linearize_two_wheeler}};
   return all;

@@ -31,9 +31,11 @@ config::Parameters evaluation_parameters(const config::Parameters& training) {
       noise = std::hypot(noise, evaluation.noise_std);
     }
   }
-  if (evaluation.push_torque != 0.0) {
+  if (evaluation.push_torque != 0.0 || evaluation.push_force != 0.0 ||
+      evaluation.push_pitch_torque != 0.0) {
     p.push =
-        blocks::PushParams{evaluation.push_start, evaluation.push_torque, evaluation.push_duration};
+        blocks::PushParams{evaluation.push_start, evaluation.push_torque, evaluation.push_duration,
+                           evaluation.push_force, evaluation.push_pitch_torque};
   }
   return p;
 }
@@ -67,6 +69,21 @@ void check_plant_takes_conditions(const config::EvaluationParams& evaluation,
   }
 }
 
+bool pushes_from_outside(const config::EvaluationParams& evaluation) {
+  return evaluation.push_force != 0.0 || evaluation.push_pitch_torque != 0.0;
+}
+
+void check_plant_takes_push(const config::Parameters& training,
+                            const diagrams::ClosedLoopFactory& loop) {
+  if (!pushes_from_outside(training.evaluation)) return;
+  try {
+    (void)loop(evaluation_parameters(training));
+  } catch (const config::ConfigError& error) {
+    throw config::ConfigError("evaluation.push_force and evaluation.push_pitch_torque: " +
+                              std::string(error.what()));
+  }
+}
+
 std::string describe_conditions(const config::EvaluationParams& evaluation) {
   std::string words;
   auto add = [&words](const std::string& part) {
@@ -80,10 +97,17 @@ std::string describe_conditions(const config::EvaluationParams& evaluation) {
     add("CoM height x" + format_number(evaluation.com_height_scale));
   }
   if (evaluation.noise_std != 0.0) add("pitch noise " + format_number(evaluation.noise_std));
-  if (evaluation.push_torque != 0.0) {
-    add("push " + format_number(evaluation.push_torque) + " N m from " +
-        format_number(evaluation.push_start) + " s for " + format_number(evaluation.push_duration) +
-        " s");
+  std::string push;
+  auto add_push = [&push](double value, const char* what) {
+    if (value == 0.0) return;
+    push += (push.empty() ? "" : " and ") + format_number(value) + what;
+  };
+  add_push(evaluation.push_torque, " N m on each wheel");
+  add_push(evaluation.push_force, " N at the centre of mass");
+  add_push(evaluation.push_pitch_torque, " N m on the body");
+  if (!push.empty()) {
+    add("push " + push + " from " + format_number(evaluation.push_start) + " s for " +
+        format_number(evaluation.push_duration) + " s");
   }
   return words;
 }

@@ -10,10 +10,12 @@
 //                                inertias about its own centre of mass kept), or the kind's
 //   evaluation.noise_std         Gaussian noise of this std added, in quadrature, to
 //                                sensors.noise_std's pitch and pitch rate
-//   evaluation.push_torque       when non-zero, push.* becomes this torque from
-//                                evaluation.push_start for evaluation.push_duration
+//   evaluation.push_torque,      when any is non-zero, push.* becomes this push (through
+//   evaluation.push_force,       the motors; from outside, at the centre of mass; from
+//   evaluation.push_pitch_torque outside, on the body) from evaluation.push_start for
+//                                evaluation.push_duration
 //
-// At their defaults (1, 1, 0, 0) the evaluation parameters equal the training ones. A plant
+// At their defaults (1, 1, 0, 0, 0, 0) the evaluation parameters equal the training ones. A plant
 // parameter read by a controller at build time (supervisor.kind = lqr designs its gains
 // from plant.*) sees the perturbed value: the PD supervisor has fixed gains.
 
@@ -42,6 +44,15 @@ bool changes_robot(const config::EvaluationParams& evaluation);
 // arm's own (ClosedLoopOptions::plant), not plant.kind's, which applies the change.
 void check_plant_takes_conditions(const config::EvaluationParams& evaluation,
                                   const diagrams::ClosedLoop& loop);
+
+// Whether `evaluation` pushes from outside (evaluation.push_force, evaluation.push_pitch_torque),
+// which needs a plant with the input "disturbance".
+bool pushes_from_outside(const config::EvaluationParams& evaluation);
+
+// Before any training: throws config::ConfigError naming the key when `training`'s evaluation
+// pushes from outside and the plant the arm `loop` builds would have no input "disturbance".
+void check_plant_takes_push(const config::Parameters& training,
+                            const diagrams::ClosedLoopFactory& loop);
 
 // The perturbations of `evaluation` in words ("body mass x1.3, pitch noise 0.02"), or "" at
 // their defaults.

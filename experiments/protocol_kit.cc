@@ -101,11 +101,13 @@ ExperimentResults run_per_arm(const std::string& experiment, const PerSeed& prot
       }
     }
   }
-  // Before any training: every arm's plant sees the robot its evaluation changes.
+  // Before any training: every arm's plant sees the robot its evaluation changes and takes
+  // its push.
   for (const auto& arm : arms) {
     if (changes_robot(p.evaluation)) {
       check_plant_takes_conditions(p.evaluation, arm.learner(p));
     }
+    check_plant_takes_push(p, arm.learner);
   }
   // Tasks are arm-major: the arm of a run is found by its name.
   auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {

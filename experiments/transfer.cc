@@ -64,10 +64,12 @@ std::vector<TransferCondition> check_transfer(const config::Parameters& p,
                                               const std::vector<diagrams::Arm>& arms) {
   std::vector<TransferCondition> conditions = transfer_conditions(p);
   for (const auto& condition : conditions) {
-    if (!changes_robot(condition.parameters.evaluation)) continue;
     for (const auto& arm : arms) {
-      check_plant_takes_conditions(condition.parameters.evaluation,
-                                   arm.learner(condition.parameters));
+      if (changes_robot(condition.parameters.evaluation)) {
+        check_plant_takes_conditions(condition.parameters.evaluation,
+                                     arm.learner(condition.parameters));
+      }
+      check_plant_takes_push(condition.parameters, arm.learner);
     }
   }
   return conditions;

@@ -1,6 +1,7 @@
 #include "cbbg/plant/analytic_plant.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "cbbg/framework/block_context.h"
@@ -45,11 +46,28 @@ Vector to_continuous(const Vector& y) {
 
 }  // namespace
 
-AnalyticPlant::AnalyticPlant(std::string name, const RobotParams& params, double initial_pitch)
+// The generalised forces of the input "disturbance" (zero when the plant has none or it is zero).
+std::optional<Coordinates> external_forces(const RobotPlant& plant, const RobotParams& params,
+                                           const BlockContext& context,
+                                           const InputPort* disturbance, double theta_b) {
+  if (disturbance == nullptr) return std::nullopt;
+  const ConstVectorView d = context.input(*disturbance);
+  if (d[kPushForce] == 0.0 && d[kPushPitchTorque] == 0.0) return std::nullopt;
+  check_disturbance_finite(plant, d);
+  return disturbance_forces(params, theta_b, d[kPushForce], d[kPushPitchTorque]);
+}
+
+AnalyticPlant::AnalyticPlant(std::string name, const RobotParams& params, double initial_pitch,
+                             DisturbanceInput disturbance)
     : RobotPlant(std::move(name)), params_(params) {
   params_.validate();
   const InputPort& torque = declare_input_port(
       "torque", kTorqueSize, "tau_l, tau_r: motor torques body -> wheel, N m (saturated here)");
+  const InputPort* pushed = disturbance == DisturbanceInput::kDeclared
+                                ? &declare_input_port("disturbance", kDisturbanceSize,
+                                                      "F at the centre of mass along the "
+                                                      "heading, N; pitch torque, N m")
+                                : nullptr;
   declare_output_port(
       "state", kStateSize,
       [this](const BlockContext& context, VectorRef y) {
@@ -58,7 +76,7 @@ AnalyticPlant::AnalyticPlant(std::string name, const RobotParams& params, double
       {}, "theta_b, theta_b', phi_l, phi_r, phi_l', phi_r', x, y, yaw, yaw rate");
   declare_continuous_state(
       to_continuous(initial_state_vector(initial_pitch)),
-      [this, &torque](const BlockContext& context, VectorRef x_dot) {
+      [this, &torque, pushed](const BlockContext& context, VectorRef x_dot) {
         const ConstVectorView tau = context.input(torque);
         // One inline test at every stage; the call that names the culprit only when it fails
         // (a sum of finite torques is finite unless they are huge, which the call then clears).
@@ -75,7 +93,10 @@ AnalyticPlant::AnalyticPlant(std::string name, const RobotParams& params, double
         const double v = forward_speed(params_, q_dot[1], q_dot[2]);
         const double yaw = x[kPose + 2];
         x_dot.segment<3>(kQ) = q_dot;
-        x_dot.segment<3>(kQDot) = accelerations(params_, q, q_dot, applied);
+        const std::optional<Coordinates> external =
+            external_forces(*this, params_, context, pushed, q[0]);
+        x_dot.segment<3>(kQDot) = external ? accelerations(params_, q, q_dot, applied, *external)
+                                           : accelerations(params_, q, q_dot, applied);
         x_dot[kPose] = v * std::cos(yaw);
         x_dot[kPose + 1] = v * std::sin(yaw);
         x_dot[kPose + 2] = yaw_rate(params_, q_dot[1], q_dot[2]);

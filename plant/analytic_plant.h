@@ -17,21 +17,26 @@ namespace cbbg::plant {
 /// |--------|-----|------|------------------------------------------------------------------|
 /// | torque | in  | 2    | tau_l, tau_r: motor torques body -> wheel, N m (any value; the   |
 /// |        |     |      | plant saturates each to [-torque_limit, torque_limit])           |
+/// | disturbance | in | 2 | with DisturbanceInput::kDeclared only: F, a horizontal force at   |
+/// |        |     |      | the body's centre of mass along the heading, N; tau_ext, a torque |
+/// |        |     |      | on the body about the axle, N m (neither saturated)              |
 /// | state  | out | 10   | theta_b (rad, > 0 leans forward), theta_b' (rad/s), phi_l, phi_r |
 /// |        |     |      | (absolute wheel angles, rad), phi_l', phi_r' (rad/s), x, y (axle |
 /// |        |     |      | midpoint, m), yaw (rad), yaw rate (rad/s); see plant_ports.h     |
 ///
-/// Equations: M(q) q'' + N(q, q') = E sat(T) with q = (theta_b, phi_l, phi_r) (see
+/// Equations: M(q) q'' + N(q, q') = E sat(T) + Q_ext with Q_ext = disturbance_forces(F, tau_ext)
+/// (zero without the input),  q = (theta_b, phi_l, phi_r) (see
 /// robot_dynamics.h); x' = v cos(yaw), y' = v sin(yaw), yaw' = R (phi_r' - phi_l') / d,
 /// v = R (phi_l' + phi_r') / 2 (rolling without slip).
 /// Continuous state (9): theta_b, phi_l, phi_r, theta_b', phi_l', phi_r', x, y, yaw. The
 /// state output reads only this state, never the torque directly.
 /// Parameters: RobotParams (plant.*); the initial pitch (trial.theta0), the rest zero.
-/// Errors: a non-finite torque or state throws SimulationError naming the block.
+/// Errors: a non-finite torque, disturbance or state throws SimulationError naming the block.
 class AnalyticPlant final : public RobotPlant {
  public:
   AnalyticPlant(std::string name, const RobotParams& params,
-                double initial_pitch = kDefaultInitialPitch);
+                double initial_pitch = kDefaultInitialPitch,
+                DisturbanceInput disturbance = DisturbanceInput::kNone);
 
   const RobotParams& params() const { return params_; }
 

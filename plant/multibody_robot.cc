@@ -73,6 +73,10 @@ void MultibodyRobotRun::set_torque(double tau_left, double tau_right) {
   robot_->model_->set_torque(integration_->integrator.updAdvancedState(), tau_left, tau_right);
 }
 
+void MultibodyRobotRun::set_disturbance(double force, double pitch_torque) {
+  robot_->model_->set_disturbance(integration_->integrator.updAdvancedState(), force, pitch_torque);
+}
+
 void MultibodyRobotRun::advance_to(double end_time) {
   SimTK::Integrator& integrator = integration_->integrator;
   // The first call after initialize() returns at once (start of a continuous interval).

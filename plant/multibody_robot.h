@@ -63,6 +63,9 @@ class MultibodyRobotRun {
   void set_state(double time, const Eigen::Ref<const Eigen::VectorXd>& state);
   // Applied as given (saturation is the plant's job) until the next call.
   void set_torque(double tau_left, double tau_right);
+  // A push from outside, held likewise: a horizontal force at the body's centre of mass along
+  // the heading, N, and a torque on the body about the axle, N m.
+  void set_disturbance(double force, double pitch_torque);
   // Integrates to `end_time` (>= time()). Simbody's exceptions pass through.
   void advance_to(double end_time);
 

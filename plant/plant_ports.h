@@ -6,6 +6,14 @@ namespace cbbg::plant {
 // Input port "torque" (size 2): motor torques, body -> wheel, N m.
 enum TorqueIndex : int { kTauLeft = 0, kTauRight = 1, kTorqueSize = 2 };
 
+// Input port "disturbance" (size 2), on a plant that takes one (RobotPlant::disturbance_input):
+// forces on the robot from outside, which do not pass through its motors or their limit.
+enum DisturbanceIndex : int {
+  kPushForce = 0,    // horizontal force at the body's centre of mass, along the heading, N
+  kPushPitchTorque,  // torque on the body about the axle, N m; > 0 leans it forward
+  kDisturbanceSize
+};
+
 // Output port "state" (size 10).
 enum StateIndex : int {
   kThetaB = 0,   // body pitch, rad; > 0 leans forward (+x)

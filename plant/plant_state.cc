@@ -59,6 +59,14 @@ void check_torque_finite(const Block& plant, const Eigen::Ref<const Eigen::Vecto
                         ", tau_r = " + format_number(torque[kTauRight]) + ")");
 }
 
+void check_disturbance_finite(const Block& plant,
+                              const Eigen::Ref<const Eigen::VectorXd>& disturbance) {
+  if (disturbance.allFinite()) return;
+  throw SimulationError("block '" + plant.path() + "': disturbance input is not finite (force = " +
+                        format_number(disturbance[kPushForce]) +
+                        ", pitch torque = " + format_number(disturbance[kPushPitchTorque]) + ")");
+}
+
 void check_state_finite(const Block& plant, const Eigen::Ref<const Eigen::VectorXd>& state,
                         double time) {
   if (state.allFinite()) return;

@@ -19,6 +19,9 @@ void check_state_argument(const Block& plant, const Vector& state);
 // During a simulation, cbbg::SimulationError naming the block:
 // "block 'robot/plant': torque input is not finite (tau_l = nan, tau_r = 0)".
 void check_torque_finite(const Block& plant, const Eigen::Ref<const Eigen::VectorXd>& torque);
+// "block 'robot/plant': disturbance input is not finite (force = nan, pitch torque = 0)".
+void check_disturbance_finite(const Block& plant,
+                              const Eigen::Ref<const Eigen::VectorXd>& disturbance);
 // "block 'robot/plant': state is not finite at t = 1.25 (theta_b = inf, theta_b' = 0, ...)".
 void check_state_finite(const Block& plant, const Eigen::Ref<const Eigen::VectorXd>& state,
                         double time);

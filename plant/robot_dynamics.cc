@@ -74,6 +74,19 @@ Coordinates accelerations(const RobotParams& p, const Coordinates& q, const Coor
   return mass_matrix(p, q[0]).llt().solve(generalised_force);
 }
 
+Coordinates disturbance_forces(const RobotParams& p, double theta_b, double force,
+                               double pitch_torque) {
+  const double along_heading = force * p.wheel_radius / 2.0;
+  return {force * p.com_height * std::cos(theta_b) + pitch_torque, along_heading, along_heading};
+}
+
+Coordinates accelerations(const RobotParams& p, const Coordinates& q, const Coordinates& q_dot,
+                          const Torques& torque, const Coordinates& external) {
+  const Coordinates generalised_force =
+      torque_input_matrix() * torque - bias_forces(p, q, q_dot) + external;
+  return mass_matrix(p, q[0]).llt().solve(generalised_force);
+}
+
 double mechanical_energy(const RobotParams& p, const Coordinates& q, const Coordinates& q_dot) {
   const double kinetic = 0.5 * q_dot.dot(mass_matrix(p, q[0]) * q_dot);
   return kinetic + p.body_mass * p.gravity * p.com_height * std::cos(q[0]);

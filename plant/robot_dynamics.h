@@ -47,6 +47,16 @@ Eigen::Matrix<double, 3, 2> torque_input_matrix();
 Coordinates accelerations(const RobotParams& params, const Coordinates& q, const Coordinates& q_dot,
                           const Torques& torque);
 
+// The generalised forces of a horizontal force `force` at the body's centre of mass, along
+// the heading, and a torque `pitch_torque` on the body about the axle. By virtual work on the
+// centre of mass's travel along the heading, R (phi_l + phi_r) / 2 + L sin theta_b:
+//   Q = (F L cos theta_b + tau_ext, F R / 2, F R / 2).
+Coordinates disturbance_forces(const RobotParams& params, double theta_b, double force,
+                               double pitch_torque);
+// The same with `external` generalised forces (disturbance_forces) beside the motors'.
+Coordinates accelerations(const RobotParams& params, const Coordinates& q, const Coordinates& q_dot,
+                          const Torques& torque, const Coordinates& external);
+
 // Kinetic plus gravitational energy, zero with the body's centre of mass at axle height:
 // q'^T M(q) q' / 2 + M g L cos theta_b. Constant when friction and torques are off.
 double mechanical_energy(const RobotParams& params, const Coordinates& q, const Coordinates& q_dot);

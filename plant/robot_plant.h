@@ -14,12 +14,18 @@
 
 namespace cbbg::plant {
 
+// Whether a library plant declares the input "disturbance" (plant_ports.h). Declared, it must
+// be connected or fixed as every input is; the closed loop does so when push.force or
+// push.pitch_torque asks for it. Not declared, the motors are the only forces but gravity's.
+enum class DisturbanceInput { kNone, kDeclared };
+
 /// RobotPlant: a robot balanced through wheel torque, as a block.
 ///
 /// | port   | dir | size | meaning                                                       |
 /// |--------|-----|------|---------------------------------------------------------------|
 /// | torque | in  | 2    | tau_l, tau_r: motor torques body -> wheel, N m                |
 /// | state  | out | n    | the signals signals() names (two-wheeler: plant_ports.h's 10) |
+/// | disturbance | in | 2 | optional: F at the centre of mass, N; pitch torque, N m        |
 ///
 /// A subclass declares both ports with these names, names its state output's signals when
 /// they are not the two-wheeler's (plant_signals.h says which the loop needs), and implements
@@ -28,6 +34,9 @@ class RobotPlant : public Block {
  public:
   const InputPort& torque_input() const { return input_port("torque"); }
   const OutputPort& state_output() const { return output_port("state"); }
+  // The input "disturbance" (plant_ports.h's DisturbanceIndex), or null for a plant that
+  // takes none: a push from outside (push.force, push.pitch_torque) needs it.
+  const InputPort* disturbance_input() const { return find_input_port("disturbance"); }
 
   // Puts the robot at theta_b = initial_pitch, at rest, at the origin, in `context` (a
   // context of the root diagram). Only rewrites this block's state.

@@ -54,17 +54,24 @@ class SimbodyPlant::Scratch final : public BlockScratch {
   Eigen::Matrix<double, kStateSize, 1> synced_state = Eigen::Matrix<double, kStateSize, 1>::Zero();
 };
 
-SimbodyPlant::SimbodyPlant(std::string name, const RobotParams& params, double initial_pitch)
+SimbodyPlant::SimbodyPlant(std::string name, const RobotParams& params, double initial_pitch,
+                           DisturbanceInput disturbance)
     : RobotPlant(std::move(name)), params_(params) {
   params_.validate_rigid_bodies();
   const InputPort& torque = declare_input_port(
       "torque", kTorqueSize, "tau_l, tau_r: motor torques body -> wheel, N m (saturated here)");
+  const InputPort* pushed = disturbance == DisturbanceInput::kDeclared
+                                ? &declare_input_port("disturbance", kDisturbanceSize,
+                                                      "F at the centre of mass along the "
+                                                      "heading, N; pitch torque, N m")
+                                : nullptr;
   declare_output_port(
       "state", kStateSize,
       [](const BlockContext& context, VectorRef y) { y = context.continuous_state(); }, {},
       "theta_b, theta_b', phi_l, phi_r, phi_l', phi_r', x, y, yaw, yaw rate");
   declare_self_integrated_state(
-      initial_state_vector(initial_pitch), [this, &torque](BlockContext& context, double end_time) {
+      initial_state_vector(initial_pitch),
+      [this, &torque, pushed](BlockContext& context, double end_time) {
         const ConstVectorView tau = context.input(torque);
         check_torque_finite(*this, tau);
         Scratch& scratch = context.scratch<Scratch>();
@@ -74,6 +81,11 @@ SimbodyPlant::SimbodyPlant(std::string name, const RobotParams& params, double i
         const Torques applied =
             saturate_torque(Torques(tau[kTauLeft], tau[kTauRight]), params_.torque_limit);
         scratch.run.set_torque(applied[kTauLeft], applied[kTauRight]);
+        if (pushed != nullptr) {
+          const ConstVectorView push = context.input(*pushed);
+          check_disturbance_finite(*this, push);
+          scratch.run.set_disturbance(push[kPushForce], push[kPushPitchTorque]);
+        }
         try {
           scratch.run.advance_to(end_time);
         } catch (const std::exception& error) {

@@ -20,13 +20,17 @@ namespace cbbg::plant {
 /// |--------|-----|------|------------------------------------------------------------------|
 /// | torque | in  | 2    | tau_l, tau_r: motor torques body -> wheel, N m (any value; the   |
 /// |        |     |      | plant saturates each to [-torque_limit, torque_limit])           |
+/// | disturbance | in | 2 | with DisturbanceInput::kDeclared only: F, a horizontal force at   |
+/// |        |     |      | the body's centre of mass along the heading, N; tau_ext, a torque |
+/// |        |     |      | on the body about the axle, N m (held like the torque)            |
 /// | state  | out | 10   | theta_b (rad, > 0 leans forward), theta_b' (rad/s), phi_l, phi_r |
 /// |        |     |      | (absolute wheel angles, rad), phi_l', phi_r' (rad/s), x, y (axle |
 /// |        |     |      | midpoint, m), yaw (rad), yaw rate (rad/s); see plant_ports.h     |
 ///
 /// Equations: Simbody's, of the same mechanics as robot_dynamics.h (a test holds the two to
 /// 1e-6 rad); motor torque +tau on a wheel, -tau on the body; viscous friction mu_l phi'
-/// (wheel-ground) and mu_w (phi' - theta_b') (axle).
+/// (wheel-ground) and mu_w (phi' - theta_b') (axle); the disturbance as a force applied at the
+/// body's mass centre and a torque on the body, never through the motors.
 /// Continuous state (10): the state output itself. Each Context's scratch holds its own
 /// multibody system, built once when the context is created, with a Simbody state and
 /// integrator. (One system shared by all contexts would be cheaper, but Simbody's System is
@@ -36,12 +40,13 @@ namespace cbbg::plant {
 /// integrator from the context's state; a reset rebuilds nothing.
 /// Parameters: RobotParams (plant.*, validated with validate_rigid_bodies); the initial
 /// pitch (trial.theta0), the rest zero.
-/// Errors: a non-finite torque or state, or a Simbody failure, throws SimulationError naming
-/// the block.
+/// Errors: a non-finite torque, disturbance or state, or a Simbody failure, throws SimulationError
+/// naming the block.
 class SimbodyPlant final : public RobotPlant {
  public:
   SimbodyPlant(std::string name, const RobotParams& params,
-               double initial_pitch = kDefaultInitialPitch);
+               double initial_pitch = kDefaultInitialPitch,
+               DisturbanceInput disturbance = DisturbanceInput::kNone);
   ~SimbodyPlant() override;
 
   const RobotParams& params() const { return params_; }

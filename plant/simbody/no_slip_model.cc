@@ -68,7 +68,7 @@ class NoSlipModel final : public RobotModel {
                                 matter_.Ground(), wheel_right_);
     SimTK::Constraint::NoSlip1D(base_, Vec3(0, 0, -p.wheel_radius), SimTK::UnitVec3(SimTK::YAxis),
                                 matter_.Ground(), base_);
-    finish_topology();
+    finish_topology(base_, body_);
   }
 
   void set_state(SimTK::State& state, const Eigen::Ref<const Eigen::VectorXd>& y) const override {

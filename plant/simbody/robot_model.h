@@ -38,11 +38,15 @@ class RobotModel {
   virtual void get_state(const SimTK::State& state, Eigen::Ref<Eigen::VectorXd> y) const = 0;
   // Held in discrete variables: a change invalidates the cached forces of `state`.
   virtual void set_torque(SimTK::State& state, double tau_left, double tau_right) const = 0;
+  // Held in discrete variables too: a horizontal force at the body's centre of mass along the
+  // heading, N, and a torque on the body about the axle, N m (plant_ports.h's DisturbanceIndex).
+  void set_disturbance(SimTK::State& state, double force, double pitch_torque) const;
 
  protected:
   explicit RobotModel(const RobotParams& params);
-  // Called last by each formulation's constructor, once every body and force is in place.
-  void finish_topology() { default_state_ = system_.realizeTopology(); }
+  // Called last by each formulation's constructor, once every body and force is in place:
+  // adds the disturbance's force element on `body`, pitching on the level `base`.
+  void finish_topology(const SimTK::MobilizedBody& base, const SimTK::MobilizedBody& body);
 
   // A Pin turns about its frames' common z axis; this rotation takes that axis to the base's
   // y axis (the axle), so a positive pin angle rotates about +y: the body leans forward (+x)
@@ -59,6 +63,8 @@ class RobotModel {
   SimTK::Force::DiscreteForces motors_;
 
  private:
+  class BodyPush;
+  const BodyPush* push_ = nullptr;  // owned by its force element in forces_
   SimTK::State default_state_;
 };
 

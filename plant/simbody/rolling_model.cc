@@ -100,7 +100,7 @@ class RollingModel final : public RobotModel {
     mobilizer_->attach(base_.getMobilizedBodyIndex());
     SimTK::Force::Custom(forces_,
                          new WheelFriction(base_, body_, p.wheel_ground_friction, p.axle_friction));
-    finish_topology();
+    finish_topology(base_, body_);
   }
 
   void set_state(SimTK::State& state, const Eigen::Ref<const Eigen::VectorXd>& y) const override {

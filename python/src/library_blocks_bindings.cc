@@ -15,6 +15,7 @@
 #include "cbbg/blocks/boltzmann_sampler.h"
 #include "cbbg/blocks/critic.h"
 #include "cbbg/blocks/entropy.h"
+#include "cbbg/blocks/external_push.h"
 #include "cbbg/blocks/failure_detector.h"
 #include "cbbg/blocks/lqr_supervisor.h"
 #include "cbbg/blocks/mixer.h"
@@ -306,7 +307,9 @@ of every trial, so a trial never reuses the previous one's last draw. Parameters
 sensors.noise_std, q = sensors.quantisation (both off by default), the period trial.period.)";
 
 constexpr const char* kTorquePushDoc =
-    R"(TorquePush: a disturbance, as a torque pulse added to the held action of both wheels.
+    R"(TorquePush: a disturbance through the motors, as a torque pulse (push.torque) added to the
+held action of both wheels. The motors' limit bounds the sum, so it models a command
+fault more than a blow: ExternalPush is the push from outside.
 
 | port   | dir | size | meaning                                    |
 |--------|-----|------|--------------------------------------------|
@@ -314,7 +317,7 @@ constexpr const char* kTorquePushDoc =
 | torque | out | 1    | a + p, the torque each wheel gets, N m     |
 
 Equations: at each tick t_k = k Ts the periodic update sets
-  p = torque if start <= t_k < start + duration, else 0
+  p = torque if start <= t_k < start + duration (PushParams::on_at), else 0
 (comparisons within the simulator's 1e-9 * max(1, |t|) of simultaneity) and p holds until
 t_{k+1}. The push therefore switches only at tick instants, where the action does too: the
 torque is piecewise constant between ticks and both plants integrate it exactly. It starts
@@ -323,6 +326,23 @@ plant saturates the sum a + p (plant.torque_limit).
 Parameters: PushParams, the period Ts = trial.period.
 
 Discrete state: [p].)";
+
+constexpr const char* kExternalPushDoc =
+    R"(ExternalPush: a disturbance from outside the robot, for a plant's input "disturbance":
+a pulse of horizontal force at the body's centre of mass (push.force) and of torque on the
+body about the axle (push.pitch_torque). Unlike TorquePush it does not pass through the
+motors, so their limit does not bound it.
+
+| port        | dir | size | meaning                                      |
+|-------------|-----|------|----------------------------------------------|
+| disturbance | out | 2    | F, N; tau_ext, N m (zero outside the pulse)  |
+
+Equations: at each tick t_k = k Ts the periodic update sets
+  (F, tau_ext) = (force, pitch_torque) if PushParams::on_at(t_k), else (0, 0)
+and holds it until t_{k+1}, exactly as TorquePush does with its torque.
+Parameters: PushParams, the period Ts = trial.period.
+
+Discrete state: [F, tau_ext].)";
 
 constexpr const char* kTropismDoc =
     R"(Tropism: the exploration temperature from the critic's value (docs/model.md §2.5).
@@ -454,20 +474,34 @@ void bind_plant_models(py::module_& m) {
   m.def("two_wheeler_signals", &plant::two_wheeler_signals, py::return_value_policy::copy);
 }
 
+// A library plant's constructor; disturbance_input=True declares its input "disturbance"
+// (force N, pitch torque N m).
+template <class Plant>
+auto plant_init() {
+  return py::init([](std::string name, const plant::RobotParams& params, double initial_pitch,
+                     bool disturbance_input) {
+    return std::make_unique<Plant>(
+        std::move(name), params, initial_pitch,
+        disturbance_input ? plant::DisturbanceInput::kDeclared : plant::DisturbanceInput::kNone);
+  });
+}
+
 void bind_plants(py::module_& m) {
   using plant::AnalyticPlant;
   using plant::SimbodyPlant;
   // Copies of params: a block's own parameters never change once it is made.
   py::class_<AnalyticPlant, plant::RobotPlant>(m, "AnalyticPlant", kAnalyticPlantDoc)
-      .def(py::init<std::string, const plant::RobotParams&, double>(), py::arg("name"),
-           py::arg("params"), py::arg("initial_pitch") = plant::kDefaultInitialPitch)
+      .def(plant_init<AnalyticPlant>(), py::arg("name"), py::arg("params"),
+           py::arg("initial_pitch") = plant::kDefaultInitialPitch,
+           py::arg("disturbance_input") = false)
       .def_property_readonly("params", [](const AnalyticPlant& p) { return p.params(); })
       .def("set_state", &AnalyticPlant::set_state, py::arg("context"), py::arg("state"),
            "Sets the whole state from a vector in the output layout; the yaw rate is not "
            "stored.");
   py::class_<SimbodyPlant, plant::RobotPlant>(m, "SimbodyPlant", kSimbodyPlantDoc)
-      .def(py::init<std::string, const plant::RobotParams&, double>(), py::arg("name"),
-           py::arg("params"), py::arg("initial_pitch") = plant::kDefaultInitialPitch)
+      .def(plant_init<SimbodyPlant>(), py::arg("name"), py::arg("params"),
+           py::arg("initial_pitch") = plant::kDefaultInitialPitch,
+           py::arg("disturbance_input") = false)
       .def_property_readonly("params", [](const SimbodyPlant& p) { return p.params(); })
       .def("set_state", &SimbodyPlant::set_state, py::arg("context"), py::arg("state"),
            "Sets the whole state from a vector in the output layout; the yaw rate is not read.")
@@ -582,6 +616,9 @@ void bind_task(py::module_& m) {
            py::arg("signals") = plant::two_wheeler_index(),
            py::arg("state_size") = static_cast<int>(plant::kStateSize));
   py::class_<blocks::TorquePush, Block>(m, "TorquePush", kTorquePushDoc)
+      .def(py::init<std::string, const blocks::PushParams&, double>(), py::arg("name"),
+           py::arg("params"), py::arg("period"));
+  py::class_<blocks::ExternalPush, Block>(m, "ExternalPush", kExternalPushDoc)
       .def(py::init<std::string, const blocks::PushParams&, double>(), py::arg("name"),
            py::arg("params"), py::arg("period"));
 }

@@ -138,12 +138,16 @@ def test_learners_weights_and_schedules():
 # --- Plants ---------------------------------------------------------------------------------
 
 
-def falling_pitch(plant, duration):
-    """The pitch of `plant` after `duration` s without torque, integrated to 1e-9."""
+def falling_pitch(plant, duration, push=None):
+    """The pitch of `plant` after `duration` s without torque, integrated to 1e-9; `push`, a
+    cbbg.PushParams, drives its input "disturbance" through an ExternalPush."""
     builder = cbbg.DiagramBuilder("fall")
     torque = builder.add(cbbg.ConstantSource("torque", [0.0, 0.0]))
     builder.add(plant)
     builder.connect(torque, "y", plant, "torque")
+    if push is not None:
+        pusher = builder.add(cbbg.ExternalPush("push", push, 0.01))
+        builder.connect(pusher, "disturbance", plant, "disturbance")
     diagram = builder.build()
     simulator = cbbg.Simulator(diagram, cbbg.SimulatorOptions(accuracy=1e-9))
     simulator.initialize()
@@ -163,6 +167,18 @@ def test_plants_are_robot_plants_that_fall_alike():
     pitch = falling_pitch(analytic, 0.2)
     assert pitch > 0.1  # it falls forward
     assert falling_pitch(simbody, 0.2) == pytest.approx(pitch, abs=1e-6)
+
+
+def test_plants_take_a_push_from_outside_alike():
+    robot = cbbg.RobotParams(accuracy=1e-9)
+    push = cbbg.PushParams(force=-30.0, pitch_torque=0.5, start=0.0, duration=0.1)
+    pitches = [falling_pitch(kind("robot", robot, initial_pitch=0.1, disturbance_input=True),
+                             0.2, push) for kind in (cbbg.AnalyticPlant, cbbg.SimbodyPlant)]
+    assert pitches[1] == pytest.approx(pitches[0], abs=1e-6)
+    # Pushed backwards at the centre of mass, it leans forward less than it falls alone.
+    assert pitches[0] < falling_pitch(cbbg.AnalyticPlant("robot", robot, initial_pitch=0.1), 0.2)
+    assert "disturbance" not in [port.name for port in
+                                 cbbg.AnalyticPlant("robot", robot).input_ports]
 
 
 def test_sensors_read_the_plant_state():

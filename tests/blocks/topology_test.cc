@@ -14,6 +14,7 @@
 #include "cbbg/blocks/boltzmann_sampler.h"
 #include "cbbg/blocks/critic.h"
 #include "cbbg/blocks/entropy.h"
+#include "cbbg/blocks/external_push.h"
 #include "cbbg/blocks/failure_detector.h"
 #include "cbbg/blocks/lqr_supervisor.h"
 #include "cbbg/blocks/mixer.h"
@@ -128,6 +129,14 @@ std::vector<Topology> topologies() {
        {{"x", 2}},
        {{"features", n, {"x"}}},
        {}},
+      {"ExternalPush",
+       [] {
+         return std::make_unique<ExternalPush>("push", PushParams{0.0, 0.0, 0.1, 20.0, 1.0},
+                                               kPeriod);
+       },
+       {},
+       {{"disturbance", 2, {}}},
+       {{"push", 2, kTrial}}},
       {"Reward",
        [] { return std::make_unique<Reward>("reward", RewardParams{}, kPeriod); },
        {{"measured", 6}, {"failed", 1}},

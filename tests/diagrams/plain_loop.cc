@@ -139,8 +139,10 @@ PlainLoop::PlainLoop(const config::Config& config, std::uint64_t root_seed, std:
   }
   require_all_zero(config, "sensors.noise_std");
   require_all_zero(config, "sensors.quantisation");
-  if (config.number("push.torque") != 0.0) {
-    throw std::invalid_argument("PlainLoop has no push: push.torque must be 0");
+  for (const char* push : {"push.torque", "push.force", "push.pitch_torque"}) {
+    if (config.number(push) != 0.0) {
+      throw std::invalid_argument(std::string("PlainLoop has no push: ") + push + " must be 0");
+    }
   }
   diagrams::validated_parameters(config);
 

@@ -184,5 +184,53 @@ TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
   EXPECT_NO_THROW(experiments::run_exp1(heavier, {preset_arm("pd_only")}));  // the robot's plant
 }
 
+// A push from outside reaches a user's plant through its input "disturbance"; a plant without
+// one is refused it, before any training, rather than run unpushed.
+TEST(Slots, AUsersPlantTakesAPushFromOutsideThroughItsDisturbanceInput) {
+  auto pendulum_arm = [](plant::DisturbanceInput disturbance) {
+    ClosedLoopOptions options;
+    options.plant = [disturbance](const std::string& name, const config::Parameters&) {
+      return std::make_unique<PendulumRobot>(name, disturbance);
+    };
+    return options;
+  };
+  config::Parameters pushed = config::read_parameters(quick_config());
+  pushed.push.pitch_torque = 30.0;
+  pushed.push.start = 1.0;
+  pushed.push.duration = 0.5;
+  const ClosedLoopOptions taking = pendulum_arm(plant::DisturbanceInput::kDeclared);
+  // Unpushed (the input fixed at zero) it balances; pushed harder than the motors can answer
+  // (30 N m on the body against 10 N m), it falls.
+  config::Parameters unpushed = pushed;
+  unpushed.push = blocks::PushParams{};
+  const ClosedLoop still = build_preset("pd_only", unpushed, taking);
+  experiments::TrialRunner calm(still, 1, 0.01);
+  EXPECT_EQ(calm.run_trial(0.05, 3.0).status, experiments::TrialStatus::kSuccess);
+  const ClosedLoop loop = build_preset("pd_only", pushed, taking);
+  auto has_block = [&loop](const char* name) {
+    const auto& blocks = loop.diagram->blocks();
+    return std::any_of(blocks.begin(), blocks.end(),
+                       [name](const auto& block) { return block->name() == name; });
+  };
+  EXPECT_TRUE(has_block("external_push"));
+  EXPECT_FALSE(has_block("push"));  // nothing through the motors
+  experiments::TrialRunner shoved(loop, 1, 0.01);
+  EXPECT_EQ(shoved.run_trial(0.05, 3.0).status, experiments::TrialStatus::kFailed);
+
+  const ClosedLoopOptions deaf = pendulum_arm(plant::DisturbanceInput::kNone);
+  EXPECT_THAT([&] { build_preset("pd_only", pushed, deaf); },
+              ThrowsMessage<config::ConfigError>(
+                  "push.force and push.pitch_torque push the robot from outside, but plant "
+                  "'plant' has no input \"disturbance\" of size 2 (force, pitch torque); keep "
+                  "them 0 for this plant, or push through the motors (push.torque)"));
+  config::Parameters evaluated_pushed = config::read_parameters(quick_config());
+  evaluated_pushed.evaluation.push_force = 50.0;
+  EXPECT_THAT(
+      [&] { experiments::run_exp1(evaluated_pushed, {preset_arm("bg_only", deaf)}); },
+      ThrowsMessage<config::ConfigError>(::testing::StartsWith(
+          "evaluation.push_force and evaluation.push_pitch_torque: push.force and "
+          "push.pitch_torque push the robot from outside, but plant 'plant' has no input")));
+}
+
 }  // namespace
 }  // namespace cbbg::diagrams

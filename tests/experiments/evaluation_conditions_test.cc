@@ -41,7 +41,35 @@ TEST(EvaluationConditions, AreDescribedInWordsOnlyWhenChanged) {
   config.set("evaluation.push_torque=5");
   config.set("evaluation.push_duration=0.5");
   EXPECT_EQ(describe_conditions(config::read_parameters(config).evaluation),
-            "body mass x0.7, CoM height x1.15, pitch noise 0.02, push 5 N m from 5 s for 0.5 s");
+            "body mass x0.7, CoM height x1.15, pitch noise 0.02, push 5 N m on each wheel from 5 s "
+            "for 0.5 s");
+  config.set("evaluation.push_torque=0");
+  config.set("evaluation.push_force=40");
+  config.set("evaluation.push_pitch_torque=-2");
+  EXPECT_EQ(describe_conditions(config::read_parameters(config).evaluation),
+            "body mass x0.7, CoM height x1.15, pitch noise 0.02, push 40 N at the centre of mass "
+            "and -2 N m on the body from 5 s for 0.5 s");
+}
+
+TEST(EvaluationConditions, APushFromOutsideBecomesThePushOfTheEvaluation) {
+  config::Config training = analytic_config();
+  training.set("push.torque=1");  // the training's own push gives way to the evaluation's
+  training.set("evaluation.push_force=40");
+  training.set("evaluation.push_start=2");
+  training.set("evaluation.push_duration=0.5");
+  const blocks::PushParams push = evaluated(training).push;
+  EXPECT_EQ(push.torque, 0.0);
+  EXPECT_EQ(push.force, 40.0);
+  EXPECT_EQ(push.pitch_torque, 0.0);
+  EXPECT_EQ(push.start, 2.0);
+  EXPECT_EQ(push.duration, 0.5);
+  EXPECT_TRUE(pushes_from_outside(config::read_parameters(training).evaluation));
+  training.set("evaluation.push_force=0");
+  training.set("evaluation.push_pitch_torque=3");
+  EXPECT_EQ(evaluated(training).push.pitch_torque, 3.0);
+  training.set("evaluation.push_pitch_torque=0");
+  EXPECT_EQ(evaluated(training).push.torque, 1.0);  // no evaluation push: push.* as set
+  EXPECT_FALSE(pushes_from_outside(config::read_parameters(training).evaluation));
 }
 
 TEST(EvaluationConditions, TheMassScaleMakesTheBodyDenserAndLeavesTheWheels) {

@@ -282,8 +282,9 @@ TEST_F(EvalCommand, BadOptionsExitTwoWithOneLine) {
   bad = options();
   bad.push_time = 1.0;
   EXPECT_EQ(refused(bad),
-            "cbbg: error: --push-time, --push-torque and --push-duration go together; missing "
-            "--push-torque and --push-duration\n");
+            "cbbg: error: a push needs --push-time, --push-duration and at least one of "
+            "--push-torque, --push-force and --push-pitch-torque; missing --push-duration and "
+            "--push-torque, --push-force or --push-pitch-torque\n");
   bad.push_torque = 2.0;
   bad.push_duration = 0.0;
   EXPECT_EQ(refused(bad), "cbbg: error: --push-duration must be a finite number > 0 (s); got 0\n");
@@ -339,6 +340,28 @@ TEST_F(EvalCommand, AFallIsAResultNotAnError) {
   EXPECT_THAT(outcome.out, HasSubstr("      0.05        0/1\n"));
 }
 
+// Through the motors a push is bounded by their limit; from outside it is not: 150 N at the
+// centre of mass for 0.5 s fells what a 5 N m push through the motors only nudges.
+TEST_F(EvalCommand, APushFromOutsideIsNotBoundedByTheMotors) {
+  app::EvalOptions through_motors = options();
+  through_motors.push_time = 1.0;
+  through_motors.push_torque = 1.0;
+  through_motors.push_duration = 0.5;
+  Outcome outcome = run(through_motors);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_THAT(outcome.out, HasSubstr("      0.05        1/1\n"));
+  app::EvalOptions from_outside = options();
+  from_outside.push_time = 1.0;
+  from_outside.push_force = 150.0;
+  from_outside.push_pitch_torque = 2.0;
+  from_outside.push_duration = 0.5;
+  outcome = run(from_outside);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_THAT(outcome.out, HasSubstr("push 150 N at the centre of mass and 2 N m on the body from "
+                                     "1 s for 0.5 s"));
+  EXPECT_THAT(outcome.out, HasSubstr("      0.05        0/1\n"));
+}
+
 TEST_F(EvalCommand, SaysWhenTheRobotIsNotTheOneTrained) {
   app::EvalOptions changed = options();
   EXPECT_THAT(run(changed).out, ::testing::Not(HasSubstr("changed robot")));
@@ -347,7 +370,7 @@ TEST_F(EvalCommand, SaysWhenTheRobotIsNotTheOneTrained) {
   const Outcome outcome = run(changed);
   EXPECT_EQ(outcome.exit_code, 0) << outcome.err;
   EXPECT_THAT(outcome.out, HasSubstr("; evaluated on a changed robot: body mass x1.3, push -2 N m "
-                                     "from 5 s for 0.2 s\n"));
+                                     "on each wheel from 5 s for 0.2 s\n"));
 }
 
 }  // namespace

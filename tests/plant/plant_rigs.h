@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -96,17 +97,22 @@ struct Rig {
   }
 };
 
+// With `disturbance` (force N, pitch torque N m), the plant declares its input "disturbance"
+// and it is fixed to that value.
 inline Rig make_rig(PlantKind kind, const RobotParams& params, double pitch, Control control,
-                    double sigma = 1.0) {
+                    double sigma = 1.0, const std::optional<Vector>& disturbance = std::nullopt) {
   DiagramBuilder builder("robot");
   Rig rig;
   rig.kind = kind;
-  Block* plant = nullptr;
+  const DisturbanceInput pushed =
+      disturbance ? DisturbanceInput::kDeclared : DisturbanceInput::kNone;
+  RobotPlant* plant = nullptr;
   if (kind == PlantKind::kAnalytic) {
-    plant = &builder.emplace<AnalyticPlant>("plant", params, pitch);
+    plant = &builder.emplace<AnalyticPlant>("plant", params, pitch, pushed);
   } else {
-    plant = &builder.emplace<SimbodyPlant>("plant", params, pitch);
+    plant = &builder.emplace<SimbodyPlant>("plant", params, pitch, pushed);
   }
+  if (disturbance) builder.fix_input(*plant->disturbance_input(), *disturbance);
   rig.plant = plant;
   if (control == Control::kFixedTorque) {
     builder.export_input(plant->input_port("torque"), "torque");

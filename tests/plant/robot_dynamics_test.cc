@@ -57,6 +57,32 @@ TEST(RobotDynamics, TorquesPushTheWheelsForwardAndTheBodyBack) {
   EXPECT_EQ(saturate_torque(Torques(4.0, -2.0), 5.0), Torques(4.0, -2.0));
 }
 
+// The generalised forces of a push from outside do the work of the force on the centre of
+// mass's velocity along the heading and of the torque on the pitch rate, whatever the state.
+TEST(RobotDynamics, APushFromOutsideDoesTheWorkOfItsForceAndTorque) {
+  const RobotParams p;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> any(-2.0, 2.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    const double theta = any(random);
+    const Coordinates q_dot(any(random), any(random), any(random));
+    const double force = 10.0 * any(random);
+    const double pitch_torque = any(random);
+    const double com_speed =
+        p.wheel_radius * (q_dot[1] + q_dot[2]) / 2.0 + p.com_height * std::cos(theta) * q_dot[0];
+    EXPECT_NEAR(disturbance_forces(p, theta, force, pitch_torque).dot(q_dot),
+                force * com_speed + pitch_torque * q_dot[0], 1e-12);
+  }
+  // Zero disturbance, the motors' accelerations; a pitch torque alone leans the body forward.
+  const Coordinates q(0.1, 0.0, 0.0);
+  const Coordinates q_dot(0.2, 1.0, 1.0);
+  const Torques torque(1.0, 1.0);
+  EXPECT_EQ(accelerations(p, q, q_dot, torque, disturbance_forces(p, q[0], 0.0, 0.0)),
+            accelerations(p, q, q_dot, torque));
+  EXPECT_GT(accelerations(p, q, q_dot, torque, disturbance_forces(p, q[0], 0.0, 1.0))[0],
+            accelerations(p, q, q_dot, torque)[0]);
+}
+
 // An independent route to the equations: the kinetic energy written from 3-D kinematics in
 // the robot's heading frame, as a function of the pitch and the velocities
 // z = (theta_b', xi, eta, psi', phi_l', phi_r') (xi, eta: the axle's forward and sideways

@@ -2,6 +2,9 @@
 // A plant of the user's for the tests of every place a plant fits: the pitch as a linear
 // inverted pendulum and one wheel angle for both wheels, theta'' = 24.5 theta - (tau_l +
 // tau_r) / 2, phi'' = tau_l + tau_r; its own signals, in its own order: one wheel, no pose.
+// Made with DisturbanceInput::kDeclared it takes a push from outside as the robots do: its
+// input "disturbance" (force, pitch torque) adds the pitch torque to theta'' (the force it
+// ignores).
 
 #include <string>
 #include <vector>
@@ -15,12 +18,19 @@ namespace cbbg::testing {
 
 class PendulumRobot final : public plant::RobotPlant {
  public:
-  explicit PendulumRobot(std::string name) : RobotPlant(std::move(name)) {
+  explicit PendulumRobot(std::string name,
+                         plant::DisturbanceInput disturbance = plant::DisturbanceInput::kNone)
+      : RobotPlant(std::move(name)) {
     const InputPort& torque = declare_input_port("torque", plant::kTorqueSize);
-    declare_continuous_state(Vector::Zero(4), [&torque](const BlockContext& context, VectorRef d) {
+    const InputPort* pushed = disturbance == plant::DisturbanceInput::kDeclared
+                                  ? &declare_input_port("disturbance", plant::kDisturbanceSize)
+                                  : nullptr;
+    declare_continuous_state(Vector::Zero(4), [&torque, pushed](const BlockContext& context,
+                                                                VectorRef d) {
       const auto x = context.continuous_state();  // theta, theta', phi, phi'
       const double tau = context.input(torque).sum();
-      d << x[1], 24.5 * x[0] - tau / 2.0, x[3], tau;
+      const double push = pushed == nullptr ? 0.0 : context.input(*pushed)[plant::kPushPitchTorque];
+      d << x[1], 24.5 * x[0] - tau / 2.0 + push, x[3], tau;
     });
     declare_output_port("state", 4,
                         [](const BlockContext& context, VectorRef y) {

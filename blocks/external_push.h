@@ -1,0 +1,33 @@
+#pragma once
+
+#include <string>
+
+#include "cbbg/blocks/push_params.h"
+#include "cbbg/framework/block.h"
+
+namespace cbbg::blocks {
+
+/// ExternalPush: a disturbance from outside the robot, for a plant's input "disturbance"
+/// (plant/plant_ports.h): a pulse of horizontal force at the body's centre of mass
+/// (push.force) and of torque on the body about the axle (push.pitch_torque). Unlike
+/// TorquePush it does not pass through the motors, so their limit does not bound it.
+///
+/// | port        | dir | size | meaning                                      |
+/// |-------------|-----|------|----------------------------------------------|
+/// | disturbance | out | 2    | F, N; tau_ext, N m (zero outside the pulse)  |
+///
+/// Equations: at each tick t_k = k Ts the periodic update sets
+///   (F, tau_ext) = (force, pitch_torque) if PushParams::on_at(t_k), else (0, 0)
+/// and holds it until t_{k+1}, exactly as TorquePush does with its torque.
+/// Parameters: PushParams, the period Ts = trial.period.
+///
+/// Discrete state: [F, tau_ext].
+class ExternalPush final : public Block {
+ public:
+  ExternalPush(std::string name, const PushParams& params, double period);
+
+ private:
+  PushParams params_;
+};
+
+}  // namespace cbbg::blocks
