@@ -154,6 +154,8 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
   eval_app->add_option("--push-pitch-torque", eval.push_pitch_torque,
                        "push from outside: N m on the body about the axle");
   eval_app->add_option("--push-duration", eval.push_duration, "push length, s");
+  eval_app->add_flag("--linearise", eval.linearise,
+                     "also print the actor's slopes at rest and the closed loop's modes");
   eval_app->add_option("--out,-o", eval.out, "write DIR/evaluation.csv");
 
   CLI::App* list_app =

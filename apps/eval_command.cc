@@ -14,6 +14,7 @@
 #include "cbbg/config/config.h"
 #include "cbbg/diagrams/presets.h"
 #include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/actor_linearisation.h"
 #include "cbbg/experiments/evaluation_conditions.h"
 #include "cbbg/experiments/policy_evaluation.h"
 #include "cbbg/store/files.h"
@@ -162,6 +163,35 @@ void print_table(const experiments::PolicyEvaluation& evaluation, const config::
   }
 }
 
+// --linearise's analysis; a plant kind without a linearisation is the user's choice.
+experiments::ActorLinearisation linearised(const config::Parameters& parameters,
+                                           const diagrams::ClosedLoopFactory& policy,
+                                           const experiments::LearntWeights& weights) {
+  try {
+    return experiments::linearise_actor(parameters, policy, weights);
+  } catch (const std::invalid_argument& error) {
+    throw config::ConfigError(std::string("--linearise: ") + error.what());
+  }
+}
+
+void print_linearisation(const experiments::ActorLinearisation& linear, double period) {
+  std::printf("\nthe actor near rest: slopes of its action at x = 0 (N m per rad, per rad/s)\n");
+  for (int i = 0; i < 4; ++i) {
+    std::printf("%10s %12.4g\n", experiments::kLinearisedStates[static_cast<size_t>(i)],
+                linear.slopes[i]);
+  }
+  std::printf("the robot upright closed by those slopes, the action held for %g s: its modes\n",
+              period);
+  std::printf("%10s %22s %10s\n", "|z|", "s = ln(z) / period, 1/s", "leans on");
+  for (const experiments::ClosedLoopMode& mode : linear.modes) {
+    char s[64];
+    std::snprintf(s, sizeof s, "%+.4g %+.4gi", mode.s.real(), mode.s.imag());
+    std::printf("%10.5f %22s %10s%s\n", std::abs(mode.z), s,
+                experiments::kLinearisedStates[static_cast<size_t>(mode.leans_on)],
+                std::abs(mode.z) > 1.0 ? "  grows" : "");
+  }
+}
+
 // The learnt actor alone of the arm that learnt the weights (a preset's, or one the program
 // registered, with its own features and controller); learnt_actor for an arm it does not know.
 diagrams::ClosedLoopFactory policy_of(const std::string& arm,
@@ -183,6 +213,7 @@ int eval_command(const EvalOptions& options) {
   experiments::EvaluationSettings settings;
   diagrams::ClosedLoopOptions loop;
   diagrams::ClosedLoopFactory policy;
+  std::optional<experiments::ActorLinearisation> linear;
   try {
     if (options.weights_file.empty()) throw config::ConfigError("--load-weights FILE is required");
     if (options.repeats < 1 || options.repeats > kMaxRepeats) {
@@ -200,6 +231,7 @@ int eval_command(const EvalOptions& options) {
     store::check_layout(weights, policy(parameters).layout, options.weights_file);
     settings.angles = parameters.evaluation.angles;
     settings.repeats = options.repeats;
+    if (options.linearise) linear = linearised(parameters, policy, weights);
   } catch (const config::ConfigError& error) {
     return report_error(kUserError, error.what());
   } catch (const std::exception& error) {
@@ -215,6 +247,7 @@ int eval_command(const EvalOptions& options) {
       store::write_atomically(options.out / kEvaluationFile, evaluation_csv(evaluation));
     }
     print_table(evaluation, parameters, weights, options);
+    if (linear) print_linearisation(*linear, parameters.trial.period);
   } catch (const std::exception& error) {
     return report_error(kMachineError, describe(error));
   }

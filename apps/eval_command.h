@@ -26,6 +26,9 @@ struct EvalOptions {
   std::optional<double> push_duration;
   std::optional<double> push_force;
   std::optional<double> push_pitch_torque;
+  // --linearise: also print the actor's slopes at rest and the modes of the robot it closes
+  // (experiments/actor_linearisation.h).
+  bool linearise = false;
   // --out: a directory that receives evaluation.csv (theta0, seed, balanced, steps,
   // final_theta, status: one row per run); empty: no file. An evaluation.csv there is
   // replaced only when cbbg wrote it (the directory's .cbbg-written lists it).

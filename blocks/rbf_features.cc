@@ -1,5 +1,6 @@
 #include "cbbg/blocks/rbf_features.h"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -23,15 +24,24 @@ void RbfParams::validate() const {
   }
 }
 
-RbfFeatures::RbfFeatures(std::string name, const RbfParams& params)
-    : Block(std::move(name)), params_(params) {
+RbfFeatures::RbfFeatures(std::string name, const RbfParams& params, int dimensions)
+    : Block(std::move(name)), params_(params), dimensions_(dimensions) {
   params_.validate();
+  if (dimensions < 1 || dimensions > kMaxDimensions) {
+    throw std::invalid_argument(
+        "RbfFeatures '" + this->name() + "': dimensions must be from 1 to " +
+        std::to_string(kMaxDimensions) + "; got " + std::to_string(dimensions));
+  }
   inverse_two_width_squared_ = 1.0 / (2.0 * params_.width * params_.width);
-  const InputPort& x = declare_input_port("x", 2, "normalised (theta_b, theta_b')");
+  const InputPort& x = declare_input_port("x", dimensions, "normalised inputs, grid units");
   declare_output_port(
       "features", num_features(),
       [this, &x](const BlockContext& context, VectorRef features) {
         const auto point = context.input(x);
+        if (dimensions_ != 2) {
+          grid_features(point, features);
+          return;
+        }
         const int m = static_cast<int>(params_.centres.size());
         for (int i = 0; i < m; ++i) {
           const double d0 = point[0] - params_.centres[static_cast<size_t>(i)];
@@ -41,17 +51,51 @@ RbfFeatures::RbfFeatures(std::string name, const RbfParams& params)
           }
         }
       },
-      {&x}, "Gaussian features on the centres x centres grid");
+      {&x}, "Gaussian features on the grid of centres per axis");
+}
+
+void RbfFeatures::grid_features(const ConstVectorView& point, VectorRef features) const {
+  const std::vector<double>& c = params_.centres;
+  const int m = static_cast<int>(c.size());
+  const int d = dimensions_;
+  std::array<int, kMaxDimensions> digit{};
+  // partial[a]: the squared distance over the axes up to a, for the current digits.
+  std::array<double, kMaxDimensions> partial{};
+  auto refresh_from = [&](int axis) {
+    for (int a = axis; a < d; ++a) {
+      const double delta = point[a] - c[static_cast<size_t>(digit[static_cast<size_t>(a)])];
+      partial[static_cast<size_t>(a)] =
+          (a == 0 ? 0.0 : partial[static_cast<size_t>(a - 1)]) + delta * delta;
+    }
+  };
+  refresh_from(0);
+  const int units = num_features();
+  for (int k = 0; k < units; ++k) {
+    features[k] = std::exp(-partial[static_cast<size_t>(d - 1)] * inverse_two_width_squared_);
+    int axis = d - 1;  // the last axis turns fastest; a full turn carries to the one before
+    while (axis >= 0 && ++digit[static_cast<size_t>(axis)] == m) {
+      digit[static_cast<size_t>(axis)] = 0;
+      --axis;
+    }
+    if (axis >= 0) refresh_from(axis);
+  }
 }
 
 int RbfFeatures::num_features() const {
   const int m = static_cast<int>(params_.centres.size());
-  return m * m;
+  int units = 1;
+  for (int a = 0; a < dimensions_; ++a) units *= m;
+  return units;
 }
 
 FeatureLayout RbfFeatures::layout() const { return declared_layout(params_); }
 
 std::string RbfFeatures::layout_note() const {
+  if (dimensions_ != 2) {
+    return "Weight k belongs to the unit whose digits in base m = " +
+           std::to_string(params_.centres.size()) + " index rbf.centres on each of the " +
+           std::to_string(dimensions_) + " axes, the first axis the most significant.";
+  }
   return "Weight k belongs to the unit at (rbf.centres[k / m], rbf.centres[k % m]), m = " +
          std::to_string(params_.centres.size()) + ".";
 }

@@ -32,26 +32,35 @@ struct RbfParams {
 ///
 /// | port     | dir | size | meaning                                  |
 /// |----------|-----|------|------------------------------------------|
-/// | x        | in  | 2    | normalised (theta_b, theta_b')            |
-/// | features | out | m^2  | phi(x), unit k = i m + j at (c_i, c_j)    |
+/// | x        | in  | d    | normalised (theta_b, theta_b'), d = 2     |
+/// | features | out | m^d  | phi(x), unit k = i m + j at (c_i, c_j)    |
 ///
 /// Equations: phi_k(x) = exp(-((x_0 - c_i)^2 + (x_1 - c_j)^2) / (2 b^2)), k = i m + j, for
 /// i, j in [0, m): pitch picks the row i, pitch rate the column j. Since V = w . phi and
 /// a_A = theta . phi, phi is also the gradient of both with respect to their weights.
+/// With d = 3 or 4 inputs (normaliser.inputs) the grid has an axis per input, the first the
+/// slowest: phi_k(x) = exp(-sum_a (x_a - c_{k_a})^2 / (2 b^2)), k = sum_a k_a m^(d-1-a).
 /// Parameters: c = rbf.centres (m of them), b = rbf.width. Its layout (feature_layout.h):
 /// rbf.centres and rbf.width.
 class RbfFeatures final : public Block, public DescribesLayout {
  public:
-  RbfFeatures(std::string name, const RbfParams& params);
+  // `dimensions`, d: the size of x, from 1 to kMaxDimensions (NormaliserParams::size()).
+  RbfFeatures(std::string name, const RbfParams& params, int dimensions = 2);
 
-  // m^2, the size of the "features" port.
+  static constexpr int kMaxDimensions = 4;
+
+  // m^d, the size of the "features" port.
   int num_features() const;
 
   FeatureLayout layout() const override;
   std::string layout_note() const override;
 
  private:
+  // The grid of d > 2 axes, an odometer over the units that keeps each axis's partial sum.
+  void grid_features(const ConstVectorView& point, VectorRef features) const;
+
   RbfParams params_;
+  int dimensions_;
   double inverse_two_width_squared_;
 };
 

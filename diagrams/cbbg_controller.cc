@@ -30,7 +30,7 @@ std::shared_ptr<Block> configured_normaliser(const std::string& name, const conf
 }
 
 std::shared_ptr<Block> configured_features(const std::string& name, const config::Parameters& p) {
-  return std::make_unique<blocks::RbfFeatures>(name, p.rbf);
+  return std::make_unique<blocks::RbfFeatures>(name, p.rbf, p.normaliser.size());
 }
 
 // The slot's block: the user's where a factory is given, else the parameters'.

@@ -74,7 +74,10 @@ std::vector<Protocol>& registry() {
        {},
        [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
           const ExperimentOptions& options) { return run_transfer(p, arms, options); },
-       {.pairs_figure = [](const std::string& figure) { return figure.starts_with("balanced@"); }},
+       {.pairs_figure =
+            [](const std::string& figure) {
+              return figure.starts_with("balanced@") || figure == "trials_to_skill";
+            }},
        [](const config::Parameters& p, const LearntWeights*) {
          check_transfer(p, named_arms(p.run.arms));
        }},

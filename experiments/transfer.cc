@@ -78,9 +78,8 @@ std::vector<TransferCondition> check_transfer(const config::Parameters& p,
 ExperimentResults run_transfer(const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
                                const ExperimentOptions& options) {
   const std::vector<TransferCondition> conditions = check_transfer(p, arms);
-  const PerSeed train = p.transfer.training == config::TransferTraining::kUntilSuccess
-                            ? PerSeed(run_until_success)
-                            : PerSeed(run_until_skill);
+  const bool until_skill = p.transfer.training == config::TransferTraining::kUntilSkill;
+  const PerSeed train = until_skill ? PerSeed(run_until_skill) : PerSeed(run_until_success);
   const PerSeed per_seed = [&](const config::Parameters& q, const diagrams::Arm& arm,
                                const TelemetryOptions& telemetry,
                                const LearntWeights* initial_weights, SeedRun& run) {
@@ -90,6 +89,13 @@ ExperimentResults run_transfer(const config::Parameters& p, const std::vector<di
           condition.changes_nothing ? run.evaluation : evaluate_run(condition.parameters, arm, run);
       run.figures.push_back({"balanced@" + condition.name, double(balanced(records))});
       run.figures.push_back({"evaluated@" + condition.name, double(records.size())});
+    }
+    if (until_skill) {
+      // exp3's own figures, so that one run answers "how fast" beside "how robust": whether
+      // the actor came to balance alone (never, for an arm without one) and the trials it
+      // took (all it ran, up to max_trials, when it never did).
+      run.figures.push_back({"skilled", run.trials_to_skill ? 1.0 : 0.0});
+      run.figures.push_back({"trials_to_skill", double(run.trials.size())});
     }
   };
   return run_per_arm("transfer", per_seed, p, arms, options);

@@ -882,6 +882,20 @@ def temporary_name(folder, name):
     return os.path.join(folder, f".{name}{TEMPORARY_TAG}{socket.gethostname()}-{os.getpid()}-0")
 
 
+def write_atomically(path, write):
+    """write(temporary path), then the rename: a reader never sees half a file. The temporary
+    has cbbg's temporary name, so a run after a kill removes what the kill left."""
+    temporary = temporary_name(os.path.dirname(path), os.path.basename(path))
+    try:
+        write(temporary)
+        os.chmod(temporary, 0o644)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.unlink(temporary)
+        raise
+
+
 def remove_stale_temporaries(folder, names):
     """Remove the temporaries of `names` in `folder` that a killed process of this host left."""
     for entry in os.listdir(folder):

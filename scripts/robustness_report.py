@@ -32,8 +32,11 @@ LABELS = {
     "evaluation.body_mass_scale": "body mass and inertias x",
     "evaluation.com_height_scale": "centre-of-mass height x",
     "evaluation.noise_std": "pitch and pitch-rate noise std (rad, rad/s)",
-    "evaluation.push_torque": "push on each wheel (N m)",
+    "evaluation.push_force": "push at the centre of mass, from outside (N)",
+    "evaluation.push_pitch_torque": "torque on the body, from outside (N m)",
+    "evaluation.push_torque": "push through the motors, on each wheel (N m)",
 }
+PUSH_KEYS = {"evaluation.push_force", "evaluation.push_pitch_torque", "evaluation.push_torque"}
 
 
 def read_study(directory):
@@ -72,7 +75,7 @@ def push_label(label, config):
 
 
 def label_of(key, label, config):
-    return push_label(label, config) if key == "evaluation.push_torque" else label
+    return push_label(label, config) if key in PUSH_KEYS else label
 
 
 def markdown_table(study):
@@ -114,19 +117,6 @@ def figure(study):
     return fig
 
 
-def write_atomically(path, write):
-    """write(temporary path), then the rename: a reader never sees half a file. The temporary
-    has cbbg's temporary name, so a report run after a kill removes what the kill left."""
-    temporary = plot_results.temporary_name(os.path.dirname(path), os.path.basename(path))
-    try:
-        write(temporary)
-        os.chmod(temporary, 0o644)
-        os.replace(temporary, path)
-    except BaseException:
-        os.unlink(temporary)
-        raise
-
-
 def main(argv):
     if len(argv) != 2:
         print("usage: robustness_report.py DIR", file=sys.stderr)
@@ -152,9 +142,9 @@ def main(argv):
             file.write(table)
 
     try:
-        write_atomically(outputs[0], write_table)
+        plot_results.write_atomically(outputs[0], write_table)
         fig = figure(study)
-        write_atomically(outputs[1], lambda path: fig.savefig(path, format="png"))
+        plot_results.write_atomically(outputs[1], lambda path: fig.savefig(path, format="png"))
     except OSError as error:
         print(f"robustness_report.py: {directory}: cannot write the report ({error.strerror})",
               file=sys.stderr)

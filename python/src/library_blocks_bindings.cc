@@ -219,17 +219,22 @@ Equation: a = omega a_E + (1 - omega) a_S. The plant saturates the torque, not t
 No parameters.)";
 
 constexpr const char* kNormaliserDoc =
-    R"(Normaliser: pitch and pitch rate in grid units, saturated to the RBF grid (docs/model.md §2.2).
+    R"(Normaliser: pitch and pitch rate in grid units, saturated to the RBF grid (docs/model.md §2.2),
+and, with normaliser.inputs, the wheels' mean angle and rate likewise.
 
-| port     | dir | size | meaning                                  |
-|----------|-----|------|------------------------------------------|
-| measured | in  | 6    | the Sensors output (measured_signals.h)   |
-| x        | out | 2    | normalised (theta_b, theta_b')            |
+| port     | dir | size  | meaning                                               |
+|----------|-----|-------|-------------------------------------------------------|
+| measured | in  | 6     | the Sensors output (measured_signals.h)               |
+| x        | out | 2 - 4 | normalised (theta_b, theta_b'[, phi][, phi'])         |
 
-Equations: x = clamp((theta_b / n_theta, theta_b' / n_dtheta), -S, S). Without the clamp
-the pitch rate leaves the grid and every feature vanishes. Parameters: n_theta =
-normaliser.scale_theta, n_dtheta = normaliser.scale_dtheta, S = normaliser.saturation.
-Its layout (feature_layout.h): those three, as normaliser.*.)";
+Equations: x = clamp((theta_b / n_theta, theta_b' / n_dtheta), -S, S), then, as the inputs
+ask, clamp(phi / n_phi, -S, S) and clamp(phi' / n_dphi, -S, S), with phi = (phi_l + phi_r) / 2
+and phi' = (phi_l' + phi_r') / 2. Without the clamp the pitch rate leaves the grid and every
+feature vanishes. Parameters: n_theta = normaliser.scale_theta, n_dtheta =
+normaliser.scale_dtheta, S = normaliser.saturation, normaliser.inputs, n_phi =
+normaliser.scale_phi, n_dphi = normaliser.scale_dphi.
+Its layout (feature_layout.h): the scales of what it sees and S, as normaliser.* (the
+paper's inputs: n_theta, n_dtheta and S only, so its weights files keep their layout).)";
 
 constexpr const char* kOmegaScheduleDoc =
     R"(OmegaSchedule: the coordination factor between cerebellum and basal ganglia (docs/model.md
@@ -264,12 +269,14 @@ constexpr const char* kRbfFeaturesDoc =
 
 | port     | dir | size | meaning                                  |
 |----------|-----|------|------------------------------------------|
-| x        | in  | 2    | normalised (theta_b, theta_b')            |
-| features | out | m^2  | phi(x), unit k = i m + j at (c_i, c_j)    |
+| x        | in  | d    | normalised (theta_b, theta_b'), d = 2     |
+| features | out | m^d  | phi(x), unit k = i m + j at (c_i, c_j)    |
 
 Equations: phi_k(x) = exp(-((x_0 - c_i)^2 + (x_1 - c_j)^2) / (2 b^2)), k = i m + j, for
 i, j in [0, m): pitch picks the row i, pitch rate the column j. Since V = w . phi and
 a_A = theta . phi, phi is also the gradient of both with respect to their weights.
+With d = 3 or 4 inputs (normaliser.inputs) the grid has an axis per input, the first the
+slowest: phi_k(x) = exp(-sum_a (x_a - c_{k_a})^2 / (2 b^2)), k = sum_a k_a m^(d-1-a).
 Parameters: c = rbf.centres (m of them), b = rbf.width. Its layout (feature_layout.h):
 rbf.centres and rbf.width.)";
 
@@ -328,10 +335,10 @@ Parameters: PushParams, the period Ts = trial.period.
 Discrete state: [p].)";
 
 constexpr const char* kExternalPushDoc =
-    R"(ExternalPush: a disturbance from outside the robot, for a plant's input "disturbance":
-a pulse of horizontal force at the body's centre of mass (push.force) and of torque on the
-body about the axle (push.pitch_torque). Unlike TorquePush it does not pass through the
-motors, so their limit does not bound it.
+    R"(ExternalPush: a disturbance from outside the robot, for a plant's input "disturbance"
+(plant/plant_ports.h): a pulse of horizontal force at the body's centre of mass
+(push.force) and of torque on the body about the axle (push.pitch_torque). Unlike
+TorquePush it does not pass through the motors, so their limit does not bound it.
 
 | port        | dir | size | meaning                                      |
 |-------------|-----|------|----------------------------------------------|
@@ -365,17 +372,21 @@ at SimulatorOptions::accuracy (the experiments set it from plant.accuracy).
 |--------|-----|------|------------------------------------------------------------------|
 | torque | in  | 2    | tau_l, tau_r: motor torques body -> wheel, N m (any value; the   |
 |        |     |      | plant saturates each to [-torque_limit, torque_limit])           |
+| disturbance | in | 2 | with DisturbanceInput::kDeclared only: F, a horizontal force at   |
+|        |     |      | the body's centre of mass along the heading, N; tau_ext, a torque |
+|        |     |      | on the body about the axle, N m (neither saturated)              |
 | state  | out | 10   | theta_b (rad, > 0 leans forward), theta_b' (rad/s), phi_l, phi_r |
 |        |     |      | (absolute wheel angles, rad), phi_l', phi_r' (rad/s), x, y (axle |
 |        |     |      | midpoint, m), yaw (rad), yaw rate (rad/s); see plant_ports.h     |
 
-Equations: M(q) q'' + N(q, q') = E sat(T) with q = (theta_b, phi_l, phi_r) (see
+Equations: M(q) q'' + N(q, q') = E sat(T) + Q_ext with Q_ext = disturbance_forces(F, tau_ext)
+(zero without the input),  q = (theta_b, phi_l, phi_r) (see
 robot_dynamics.h); x' = v cos(yaw), y' = v sin(yaw), yaw' = R (phi_r' - phi_l') / d,
 v = R (phi_l' + phi_r') / 2 (rolling without slip).
 Continuous state (9): theta_b, phi_l, phi_r, theta_b', phi_l', phi_r', x, y, yaw. The
 state output reads only this state, never the torque directly.
 Parameters: RobotParams (plant.*); the initial pitch (trial.theta0), the rest zero.
-Errors: a non-finite torque or state throws SimulationError naming the block.)";
+Errors: a non-finite torque, disturbance or state throws SimulationError naming the block.)";
 
 constexpr const char* kSimbodyPlantDoc =
     R"(SimbodyPlant: the reference model of the robot, a 3-D Simbody multibody system
@@ -388,13 +399,17 @@ torque held (zero-order hold), by the Simbody integrator plant.simbody_integrato
 |--------|-----|------|------------------------------------------------------------------|
 | torque | in  | 2    | tau_l, tau_r: motor torques body -> wheel, N m (any value; the   |
 |        |     |      | plant saturates each to [-torque_limit, torque_limit])           |
+| disturbance | in | 2 | with DisturbanceInput::kDeclared only: F, a horizontal force at   |
+|        |     |      | the body's centre of mass along the heading, N; tau_ext, a torque |
+|        |     |      | on the body about the axle, N m (held like the torque)            |
 | state  | out | 10   | theta_b (rad, > 0 leans forward), theta_b' (rad/s), phi_l, phi_r |
 |        |     |      | (absolute wheel angles, rad), phi_l', phi_r' (rad/s), x, y (axle |
 |        |     |      | midpoint, m), yaw (rad), yaw rate (rad/s); see plant_ports.h     |
 
 Equations: Simbody's, of the same mechanics as robot_dynamics.h (a test holds the two to
 1e-6 rad); motor torque +tau on a wheel, -tau on the body; viscous friction mu_l phi'
-(wheel-ground) and mu_w (phi' - theta_b') (axle).
+(wheel-ground) and mu_w (phi' - theta_b') (axle); the disturbance as a force applied at the
+body's mass centre and a torque on the body, never through the motors.
 Continuous state (10): the state output itself. Each Context's scratch holds its own
 multibody system, built once when the context is created, with a Simbody state and
 integrator. (One system shared by all contexts would be cheaper, but Simbody's System is
@@ -404,8 +419,8 @@ Context::reset_all_state, a restored or cloned context), the scratch restarts it
 integrator from the context's state; a reset rebuilds nothing.
 Parameters: RobotParams (plant.*, validated with validate_rigid_bodies); the initial
 pitch (trial.theta0), the rest zero.
-Errors: a non-finite torque or state, or a Simbody failure, throws SimulationError naming
-the block.)";
+Errors: a non-finite torque, disturbance or state, or a Simbody failure, throws SimulationError
+naming the block.)";
 
 void bind_all_params(py::module_& m) {
   bind_params<plant::RobotParams>(
@@ -540,7 +555,8 @@ void bind_features(py::module_& m) {
            py::arg("params"))
       .def("layout", [](const blocks::Normaliser& b) { return layout_dict(b.layout()); });
   py::class_<blocks::RbfFeatures, Block>(m, "RbfFeatures", kRbfFeaturesDoc)
-      .def(py::init<std::string, const blocks::RbfParams&>(), py::arg("name"), py::arg("params"))
+      .def(py::init<std::string, const blocks::RbfParams&, int>(), py::arg("name"),
+           py::arg("params"), py::arg("dimensions") = 2)
       .def_property_readonly("num_features", &blocks::RbfFeatures::num_features)
       .def("layout", [](const blocks::RbfFeatures& b) { return layout_dict(b.layout()); })
       .def("layout_note", &blocks::RbfFeatures::layout_note);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -70,6 +72,54 @@ TEST(Normaliser, UsesConfiguredScalesAndSaturation) {
   EXPECT_EQ(x[1], 1.5);
 }
 
+TEST(Normaliser, SeesTheWheelsMeanAngleAndRateWhenAsked) {
+  Vector y = measured(0.5 * 0.05817764, 0.0);
+  y[kMeasuredPhiLeft] = 1.0;
+  y[kMeasuredPhiRight] = 3.0;  // mean 2 rad: 1 unit of 2 rad
+  y[kMeasuredPhiLeftDot] = -2.0;
+  y[kMeasuredPhiRightDot] = -20.0;  // mean -11 rad/s: -5.5 units of 2 rad/s, saturated to -3
+  NormaliserParams params;
+  params.inputs = NormalisedInputs::kPitchWheelRate;
+  Harness rate("normaliser", params);
+  rate.set_input("measured", y);
+  Vector x = rate.output("x");
+  ASSERT_EQ(x.size(), 3);
+  EXPECT_NEAR(x[0], 0.5, 1e-15);
+  EXPECT_EQ(x[2], -3.0);
+  params.inputs = NormalisedInputs::kPitchWheels;
+  params.scale_dphi = 5.0;
+  Harness wheels("normaliser", params);
+  wheels.set_input("measured", y);
+  x = wheels.output("x");
+  ASSERT_EQ(x.size(), 4);
+  EXPECT_EQ(x[2], 1.0);
+  EXPECT_NEAR(x[3], -2.2, 1e-15);
+}
+
+// The paper's inputs keep the paper's layout (weights files made before the option load);
+// each wider view lists the scales of what it sees.
+TEST(Normaliser, ItsLayoutNamesTheScalesOfWhatItSees) {
+  auto keys = [](NormalisedInputs inputs) {
+    NormaliserParams params;
+    params.inputs = inputs;
+    std::vector<std::string> names;
+    for (const LayoutEntry& entry : Normaliser("normaliser", params).layout()) {
+      names.push_back(entry.key);
+    }
+    return names;
+  };
+  EXPECT_EQ(keys(NormalisedInputs::kPitch),
+            (std::vector<std::string>{"normaliser.scale_theta", "normaliser.scale_dtheta",
+                                      "normaliser.saturation"}));
+  EXPECT_EQ(keys(NormalisedInputs::kPitchWheelRate),
+            (std::vector<std::string>{"normaliser.scale_theta", "normaliser.scale_dtheta",
+                                      "normaliser.saturation", "normaliser.scale_dphi"}));
+  EXPECT_EQ(keys(NormalisedInputs::kPitchWheels),
+            (std::vector<std::string>{"normaliser.scale_theta", "normaliser.scale_dtheta",
+                                      "normaliser.saturation", "normaliser.scale_phi",
+                                      "normaliser.scale_dphi"}));
+}
+
 TEST(Normaliser, RejectsNonPositiveOrNonFiniteParameters) {
   NormaliserParams zero_scale;
   zero_scale.scale_theta = 0.0;
@@ -86,6 +136,11 @@ TEST(Normaliser, RejectsNonPositiveOrNonFiniteParameters) {
   EXPECT_THAT([&] { Normaliser("normaliser", nan_saturation); },
               ThrowsMessage<std::invalid_argument>(
                   StrEq("normaliser.saturation must be finite and > 0; got nan")));
+  NormaliserParams zero_wheel_rate;
+  zero_wheel_rate.scale_dphi = 0.0;
+  EXPECT_THAT([&] { Normaliser("normaliser", zero_wheel_rate); },
+              ThrowsMessage<std::invalid_argument>(
+                  StrEq("normaliser.scale_dphi must be finite and > 0; got 0")));
 }
 
 }  // namespace

@@ -74,6 +74,42 @@ TEST(RbfFeatures, MatchDirectEvaluationOnAnyGrid) {
   }
 }
 
+// Three and four axes (the normaliser's wider views): unit k's digits in base m, the first
+// axis the most significant, pick its centre on each axis.
+TEST(RbfFeatures, MatchDirectEvaluationOnAGridOfThreeOrFourAxes) {
+  RbfParams params;
+  params.centres = {-1.0, 0.0, 0.5};
+  params.width = 0.6;
+  std::mt19937_64 generator(5);
+  std::uniform_real_distribution<double> uniform(-1.5, 1.5);
+  for (const int d : {3, 4}) {
+    testing::BlockHarness<RbfFeatures> harness("rbf", params, d);
+    const int units = d == 3 ? 27 : 81;
+    EXPECT_EQ(harness.block().num_features(), units);
+    for (int trial = 0; trial < 5; ++trial) {
+      Vector x(d);
+      for (int a = 0; a < d; ++a) x[a] = uniform(generator);
+      harness.set_input("x", x);
+      const Vector phi = harness.output("features");
+      ASSERT_EQ(phi.size(), units);
+      for (int k = 0; k < units; ++k) {
+        double distance = 0.0;
+        for (int a = 0, rest = k; a < d; ++a) {
+          int place = 1;  // m^(d - 1 - a), m = 3
+          for (int b = a + 1; b < d; ++b) place *= 3;
+          const int digit = rest / place;
+          rest %= place;
+          distance += std::pow(x[a] - params.centres[static_cast<size_t>(digit)], 2);
+        }
+        EXPECT_NEAR(phi[k], std::exp(-distance / (2.0 * 0.36)), 1e-15) << "d " << d << ", k " << k;
+      }
+    }
+  }
+  EXPECT_THAT([] { RbfFeatures("rbf", RbfParams{}, 5); },
+              ThrowsMessage<std::invalid_argument>(
+                  StrEq("RbfFeatures 'rbf': dimensions must be from 1 to 4; got 5")));
+}
+
 TEST(RbfFeatures, AreTheGradientOfTheValueWithRespectToTheWeights) {
   DiagramBuilder builder("value");
   const auto& rbf = builder.emplace<RbfFeatures>("rbf", RbfParams{});

@@ -362,6 +362,18 @@ TEST_F(EvalCommand, APushFromOutsideIsNotBoundedByTheMotors) {
   EXPECT_THAT(outcome.out, HasSubstr("      0.05        0/1\n"));
 }
 
+TEST_F(EvalCommand, LinearisesTheActorOnRequest) {
+  app::EvalOptions linearised = options();
+  linearised.linearise = true;
+  const Outcome outcome = run(linearised);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_THAT(outcome.out, HasSubstr("\nthe actor near rest: slopes of its action at x = 0 (N m "
+                                     "per rad, per rad/s)\n   theta_b "));
+  EXPECT_THAT(outcome.out, HasSubstr("\n       phi            0\n"));
+  EXPECT_THAT(outcome.out, HasSubstr("the robot upright closed by those slopes, the action held "
+                                     "for 0.01 s: its modes\n"));
+}
+
 TEST_F(EvalCommand, SaysWhenTheRobotIsNotTheOneTrained) {
   app::EvalOptions changed = options();
   EXPECT_THAT(run(changed).out, ::testing::Not(HasSubstr("changed robot")));

@@ -56,13 +56,17 @@ TEST(Transfer, AConditionsFiguresAreThoseOfExp3RunWithItsSetting) {
     const ExperimentResults exp3 = run_experiment(diagrams::validated_parameters(alone));
     for (std::size_t task = 0; task < transfer.runs.size(); ++task) {
       const SeedRun& run = transfer.runs[task];
-      ASSERT_EQ(run.figures.size(), 4U);
+      ASSERT_EQ(run.figures.size(), 6U);
       EXPECT_EQ(run.figures[2 * c].name, "balanced@" + conditions[c].first);
       EXPECT_EQ(run.figures[2 * c].value, balanced(exp3.runs[task].evaluation)) << task;
       EXPECT_EQ(run.figures[2 * c + 1].name, "evaluated@" + conditions[c].first);
       EXPECT_EQ(run.figures[2 * c + 1].value, double(exp3.runs[task].evaluation.size()));
-      // The training is exp3's, whatever the evaluation.
+      // The training is exp3's, whatever the evaluation, and so are its figures.
       EXPECT_EQ(run.trials.size(), exp3.runs[task].trials.size());
+      EXPECT_EQ(run.figures[4].name, "skilled");
+      EXPECT_EQ(run.figures[4].value, exp3.runs[task].trials_to_skill ? 1.0 : 0.0);
+      EXPECT_EQ(run.figures[5].name, "trials_to_skill");
+      EXPECT_EQ(run.figures[5].value, double(exp3.runs[task].trials.size()));
     }
   }
 }
@@ -76,7 +80,8 @@ TEST(Transfer, ItsRecordAndResultsKeepTheFigures) {
   EXPECT_THAT(csv, HasSubstr("arm,seed,balanced@evaluation.body_mass_scale=1.3,"
                              "evaluated@evaluation.body_mass_scale=1.3,"
                              "balanced@evaluation.noise_std=0.05; evaluation.push_torque=2,"));
-  EXPECT_THAT(csv, HasSubstr("\npd_only,1,2,2,2,2\n"));  // the supervisor alone copes
+  // The supervisor alone copes; it has no actor to come to balance alone.
+  EXPECT_THAT(csv, HasSubstr("\npd_only,1,2,2,2,2,0,1\n"));
   const std::string summary = store::summary_json(results, config);
   EXPECT_THAT(summary, HasSubstr("\"figures\": {\"balanced@evaluation.body_mass_scale=1.3\": 4"));
   // Paired over the balanced figures, not over how many ran.

@@ -79,15 +79,17 @@ class SweepReports(unittest.TestCase):
         return directory
 
     def study(self):
-        """Two seeds of cbbg and pd_only under two masses and two pushes, 5 angles each."""
+        """Two seeds of cbbg and pd_only under two masses, two pushes from outside and one
+        through the motors, 5 angles each."""
         os.makedirs(self.root, exist_ok=True)
         open(os.path.join(self.root, ".cbbg-robustness-study"), "w").close()
         conditions = ["evaluation.body_mass_scale=0.7", "evaluation.body_mass_scale=1.3",
-                      "evaluation.push_torque=0", "evaluation.push_torque=5"]
+                      "evaluation.push_force=0", "evaluation.push_force=74",
+                      "evaluation.push_torque=5"]
         columns = [f"{what}@{condition}" for condition in conditions
                    for what in ("balanced", "evaluated")]
-        balanced = {("cbbg", 1): [5, 2, 5, 0], ("cbbg", 2): [4, 2, 4, 0],
-                    ("pd_only", 1): [5, 5, 5, 4], ("pd_only", 2): [5, 5, 5, 3]}
+        balanced = {("cbbg", 1): [5, 2, 5, 0, 1], ("cbbg", 2): [4, 2, 4, 0, 0],
+                    ("pd_only", 1): [5, 5, 5, 4, 5], ("pd_only", 2): [5, 5, 5, 3, 5]}
         rows = [[arm, seed] + [field for b in counts for field in (b, 5)]
                 for (arm, seed), counts in balanced.items()]
         return self.write_transfer(columns, rows)
@@ -130,11 +132,12 @@ class SweepReports(unittest.TestCase):
             "|---|---|---|---|",
             "| body mass and inertias x | 0.7 | 9/10 | 10/10 |",
             "| body mass and inertias x | 1.3 | 4/10 | 10/10 |",
-            "| push on each wheel (N m, 0.5 s from 5 s) | 0 | 9/10 | 10/10 |",
-            "| push on each wheel (N m, 0.5 s from 5 s) | 5 | 0/10 | 7/10 |",
+            "| push at the centre of mass, from outside (N, 0.5 s from 5 s) | 0 | 9/10 | 10/10 |",
+            "| push at the centre of mass, from outside (N, 0.5 s from 5 s) | 74 | 0/10 | 7/10 |",
+            "| push through the motors, on each wheel (N m, 0.5 s from 5 s) | 5 | 1/10 | 10/10 |",
         ])
         width, height = png_size(os.path.join(self.root, "robustness.png"))
-        self.assertEqual((width, height), (1040, 360))
+        self.assertEqual((width, height), (1040, 720))  # three panels, two rows
         leftovers = [n for n in os.listdir(self.root) if n.startswith(".robustness")]
         self.assertEqual(leftovers, [])
 
