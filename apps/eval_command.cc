@@ -186,9 +186,11 @@ void print_linearisation(const experiments::ActorLinearisation& linear, double p
   for (const experiments::ClosedLoopMode& mode : linear.modes) {
     char s[64];
     std::snprintf(s, sizeof s, "%+.4g %+.4gi", mode.s.real(), mode.s.imag());
-    std::printf("%10.5f %22s %10s%s\n", std::abs(mode.z), s,
-                experiments::kLinearisedStates[static_cast<size_t>(mode.leans_on)],
-                std::abs(mode.z) > 1.0 ? "  grows" : "");
+    // |z| = 1 to rounding (the position, which nothing but the actor restores) holds.
+    const double size = std::abs(mode.z);
+    const char* fate = size > 1.0 + 1e-9 ? "  grows" : size > 1.0 - 1e-9 ? "  holds" : "";
+    std::printf("%10.5f %22s %10s%s\n", size, s,
+                experiments::kLinearisedStates[static_cast<size_t>(mode.leans_on)], fate);
   }
 }
 

@@ -48,12 +48,13 @@ std::optional<blocks::PushParams> configured_push(const config::Parameters& para
 // plant declares its input "disturbance" when push.* pushes from outside).
 std::shared_ptr<plant::RobotPlant> make_plant(const config::Parameters& p,
                                               const ClosedLoopOptions& options) {
+  config::Parameters pushed;
   if (options.push) {
-    config::Parameters pushed = p;
+    pushed = p;
     pushed.push = *options.push;
-    return make_plant(pushed, ClosedLoopOptions{options.plant, std::nullopt});
   }
-  return options.plant ? options.plant("plant", p) : plant_kind(p.plant.kind).make("plant", p);
+  const config::Parameters& q = options.push ? pushed : p;
+  return options.plant ? options.plant("plant", q) : plant_kind(q.plant.kind).make("plant", q);
 }
 
 // A push from outside into the plant's input "disturbance"; a plant that declares the input

@@ -25,9 +25,13 @@ def test_transfer_records_each_conditions_figures():
     p = cbbg.parameters({**QUICK, "experiment": "transfer",
                          "transfer.conditions": ["evaluation.body_mass_scale=1.2"]})
     results = cbbg.run_experiment(p, jobs=2)
+    # Trained as exp3 (the default), exp3's own figures follow the conditions'.
     assert [f.name for f in results.runs[0].figures] == [
-        "balanced@evaluation.body_mass_scale=1.2", "evaluated@evaluation.body_mass_scale=1.2"]
+        "balanced@evaluation.body_mass_scale=1.2", "evaluated@evaluation.body_mass_scale=1.2",
+        "skilled", "trials_to_skill"]
     assert results.runs[0].figures[1].value == 5.0  # the five evaluation.angles
+    run = results.runs[0]
+    assert run.figures[3].value == len(run.trials)
 
 
 def test_evaluate_runs_the_weights_exp1_learnt(tmp_path):
