@@ -6,7 +6,9 @@ Usage: /usr/bin/python3 scripts/teacher_report.py DIR
 DIR/VARIANT/transfer is a `cbbg run --experiment transfer` trained as exp3 (figures.csv: per
 arm and seed, skilled, trials_to_skill and balanced@/evaluated@ per condition) and
 DIR/VARIANT/exp2 an exp2 run (trials.csv: mean_forward_speed and pitch_rms per trial), for
-the variant `paper` and the others of the study. Writes DIR/teacher.md:
+the variant `paper` and the others of the study. Writes DIR/teacher.md and DIR/teacher.png
+(per variant and arm: trials to skill, the share balanced under the noise and under the push,
+with the teacher's, and the share of seeds holding their ground in exp2). teacher.md holds:
   - trials to skill per variant and arm, and bg_only's extra trials over cbbg's;
   - balanced runs under each condition (the PD supervisor alone from the paper's run);
   - exp2's trials 23-30 (exp2 trains cbbg): mean forward speed and pitch RMS of the trials
@@ -17,7 +19,8 @@ the variant `paper` and the others of the study. Writes DIR/teacher.md:
 each variant paired with the paper's learner seed by seed: the mean difference with a 95 %
 bootstrap interval (10000 resamples of the seeds, seeded) and the exact two-sided sign test.
 
-It replaces teacher.md only in a study teacher_study.sh made.
+It replaces its outputs only in a study teacher_study.sh made. Needs Debian's
+python3-matplotlib (/usr/bin/python3).
 Exit status: 0 done, 2 a missing or malformed input (one line on stderr naming the file),
 1 the table could not be written.
 """
@@ -29,8 +32,8 @@ import random
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import plot_results  # noqa: E402  (the figures.csv reader, the atomic publishing)
-from plot_results import InputError  # noqa: E402
+import plot_results  # noqa: E402  (the figures.csv reader, the figure style, publishing)
+from plot_results import InputError, plt  # noqa: E402
 
 STUDY_MARKER = ".cbbg-teacher-study"
 ARMS = ("cbbg", "bg_only")
@@ -261,6 +264,58 @@ def moonshot_lines(study):
     return lines
 
 
+def figure(study):
+    """Four panels of bars, a group per variant, a bar per arm."""
+    variants = list(study)
+    conditions = study["paper"]["conditions"]
+    noise = "evaluation.noise_std=0.05"
+    push = next((c for c in conditions if c.startswith("evaluation.push_force=")), None)
+    width, height = plot_results.FIGURE_SIZE
+    fig, axes = plt.subplots(2, 2, figsize=(width * 1.5, height * 1.4),
+                             dpi=plot_results.FIGURE_DPI, layout="constrained")
+
+    def rate(rows, condition):
+        evaluated = sum(column(rows, "evaluated@" + condition))
+        return sum(column(rows, "balanced@" + condition)) / evaluated if evaluated else math.nan
+
+    def holding(data, arm):
+        seeds = late_seeds(data, arm)
+        return sum(seed.holds for seed in seeds) / len(seeds) if seeds else math.nan
+
+    def median(values):
+        ordered = sorted(values)
+        middle = len(ordered) // 2
+        return ordered[middle] if len(ordered) % 2 else (ordered[middle - 1] + ordered[middle]) / 2
+
+    panels = [
+        ("trials to skill (median over seeds)",
+         lambda data, arm: median(column(data["transfer"][arm], "trials_to_skill")), None),
+        ("balanced under pitch noise 0.05 rad", lambda data, arm: rate(data["transfer"][arm], noise),
+         noise),
+        (f"balanced under a push of {push.partition('=')[2] if push else '?'} N from outside",
+         lambda data, arm: rate(data["transfer"][arm], push) if push else math.nan, push),
+        ("seeds holding their ground in exp2 (trials 23-30)", holding, None),
+    ]
+    positions = range(len(variants))
+    for ax, (title, value, condition) in zip(axes.flat, panels):
+        for offset, arm in ((-0.2, "cbbg"), (0.2, "bg_only")):
+            heights = [value(study[v], arm) if arm in study[v]["transfer"] else math.nan
+                       for v in variants]
+            if all(math.isnan(h) for h in heights):
+                continue  # exp2 trains cbbg alone
+            ax.bar([p + offset for p in positions], heights, width=0.4, label=arm)
+        paper = study["paper"]["transfer"]
+        if condition is not None and "pd_only" in paper:
+            ax.axhline(rate(paper["pd_only"], condition), color="black", linestyle="--",
+                       label="PD supervisor (the teacher)")
+        ax.set_xticks(list(positions), variants, rotation=20, ha="right", fontsize="small")
+        ax.set_title(title, fontsize="medium")
+        ax.grid(True, axis="y", alpha=0.3)
+        ax.legend(fontsize="small")
+    fig.suptitle("can the learner outgrow its teacher? each variant against the paper's learner")
+    return fig
+
+
 def report(study):
     lines = ["## Trials to skill (exp3's training)", ""] + skill_table(study)
     lines += ["", "## Balanced runs under each condition (seeds x evaluation angles)", ""]
@@ -277,25 +332,30 @@ def main(argv):
         return 2
     directory = argv[1]
     try:
-        table = report(read_study(directory))
+        study = read_study(directory)
+        table = report(study)
     except InputError as error:
         print(f"teacher_report.py: {error}", file=sys.stderr)
         return 2
-    output = os.path.join(directory, "teacher.md")
-    if os.path.exists(output) and not os.path.isfile(os.path.join(directory, STUDY_MARKER)):
-        print(f"teacher_report.py: {output} exists and this is not a study of teacher_study.sh: "
-              "move it away first", file=sys.stderr)
-        return 2
-    plot_results.remove_stale_temporaries(directory, ["teacher.md"])
+    outputs = [os.path.join(directory, name) for name in ("teacher.md", "teacher.png")]
+    made_here = os.path.isfile(os.path.join(directory, STUDY_MARKER))
+    for path in outputs:
+        if os.path.exists(path) and not made_here:
+            print(f"teacher_report.py: {path} exists and this is not a study of "
+                  "teacher_study.sh: move it away first", file=sys.stderr)
+            return 2
+    plot_results.remove_stale_temporaries(directory, ["teacher.md", "teacher.png"])
 
     def write_table(path):
         with open(path, "w", encoding="utf-8") as file:
             file.write(table)
 
     try:
-        plot_results.write_atomically(output, write_table)
+        plot_results.write_atomically(outputs[0], write_table)
+        fig = figure(study)
+        plot_results.write_atomically(outputs[1], lambda path: fig.savefig(path, format="png"))
     except OSError as error:
-        print(f"teacher_report.py: {directory}: cannot write the table ({error.strerror})",
+        print(f"teacher_report.py: {directory}: cannot write the report ({error.strerror})",
               file=sys.stderr)
         return 1
     sys.stdout.write(table)

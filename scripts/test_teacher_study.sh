@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The teacher study end to end, small (analytic plant, 2 seeds, two variants): a refused
-# command leaves nothing; it writes the report's four tables, each variant paired with the
-# paper's learner; stopped by cbbg's fault hook while training and run again, it ends with the
-# bytes of an uninterrupted study; a further variant, a user's own config, joins a finished
-# study; a folder it did not make, or of other settings, is refused.
+# command leaves nothing; it writes the report's four tables and its figure, each variant
+# paired with the paper's learner; stopped by cbbg's fault hook while training and run again,
+# it ends with the bytes of an uninterrupted study; a further variant, a user's own config,
+# joins a finished study; a folder it did not make, or of other settings, is refused.
 #   test_teacher_study.sh BUILD_DIR
 set -euo pipefail
 export CBBG="$(cd "$1" && pwd)/apps/cbbg"
@@ -34,6 +34,8 @@ for section in "## Trials to skill" "## Balanced runs under each condition" \
                "## exp2, trials 23-30" "## The moonshot"; do
   grep -qF "$section" "$whole/teacher.md" || fail "teacher.md has no '$section'"
 done
+[[ "$(head -c 8 "$whole/teacher.png" | od -An -tx1 | tr -d ' \n')" == 89504e470d0a1a0a ]] ||
+  fail "teacher.png is not a PNG"
 grep -q '^| wheel_rate_reward | cbbg | .* | .*/2 | .*, p = ' "$whole/teacher.md" ||
   fail "the variant's trials to skill are not paired with the paper's"
 grep -q '^| PD supervisor | pd_only | 10/10 |' "$whole/teacher.md" ||
@@ -66,5 +68,5 @@ status=0
 "$study" --plant analytic --seeds 3 --out "$whole" 2>"$scratch/err" || status=$?
 [[ "$status" == 2 ]] && grep -q "holds a study with plant=analytic seeds=2" "$scratch/err" ||
   fail "a study of other settings was not refused: $(cat "$scratch/err")"
-echo "test_teacher_study: refusals leave nothing; four tables, variants paired with the paper;" \
+echo "test_teacher_study: refusals leave nothing; four tables and the figure, variants paired with the paper;" \
   "stopped while training and run again to the same bytes; a user's own config joins; foreign folders refused"
