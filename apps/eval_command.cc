@@ -131,15 +131,17 @@ std::string evaluation_csv(const experiments::PolicyEvaluation& evaluation) {
   return csv;
 }
 
+// `push`: the flags' push (push_from), already checked.
 void print_table(const experiments::PolicyEvaluation& evaluation, const config::Parameters& p,
-                 const experiments::LearntWeights& weights, const EvalOptions& options) {
+                 const experiments::LearntWeights& weights, const EvalOptions& options,
+                 const std::optional<blocks::PushParams>& push) {
   const experiments::WeightsProvenance& from = weights.provenance;
   std::printf("weights %s: %s, seed %lld, %lld trial(s) on the %s plant\n",
               options.weights_file.string().c_str(), from.arm.c_str(), from.seed, from.trials,
               from.plant.c_str());
   std::printf("policy alone on the %s plant for %g s, seeds %lld..%lld", p.plant.kind.c_str(),
               p.trial.duration, evaluation.first_seed, evaluation.first_seed + options.repeats - 1);
-  if (const std::optional<blocks::PushParams> push = push_from(options)) {
+  if (push) {
     std::printf("; push");
     const char* joint = " ";
     for (const auto& [size, unit] : {std::pair{push->torque, "N m on each wheel"},
@@ -248,7 +250,7 @@ int eval_command(const EvalOptions& options) {
       manifest.add({kEvaluationFile});
       store::write_atomically(options.out / kEvaluationFile, evaluation_csv(evaluation));
     }
-    print_table(evaluation, parameters, weights, options);
+    print_table(evaluation, parameters, weights, options, loop.push);
     if (linear) print_linearisation(*linear, parameters.trial.period);
   } catch (const std::exception& error) {
     return report_error(kMachineError, describe(error));

@@ -896,6 +896,35 @@ def write_atomically(path, write):
         raise
 
 
+def publish_study_report(program, directory, marker, script, name, table, make_figure):
+    """A study report's NAME.md (`table`) and NAME.png (make_figure()) in `directory`, each
+    atomically, replacing them only in a folder `script` marked with `marker`; the table on
+    stdout. Returns the exit status: 0, 2 (outputs not the study's), 1 (not written)."""
+    outputs = [os.path.join(directory, f"{name}.{kind}") for kind in ("md", "png")]
+    made_here = os.path.isfile(os.path.join(directory, marker))
+    for path in outputs:
+        if os.path.exists(path) and not made_here:
+            print(f"{program}: {path} exists and this is not a study of {script}: move it away "
+                  "first", file=sys.stderr)
+            return 2
+    remove_stale_temporaries(directory, [os.path.basename(path) for path in outputs])
+
+    def write_table(path):
+        with open(path, "w", encoding="utf-8") as file:
+            file.write(table)
+
+    try:
+        write_atomically(outputs[0], write_table)
+        fig = make_figure()
+        write_atomically(outputs[1], lambda path: fig.savefig(path, format="png"))
+    except OSError as error:
+        print(f"{program}: {directory}: cannot write the report ({error.strerror})",
+              file=sys.stderr)
+        return 1
+    sys.stdout.write(table)
+    return 0
+
+
 def remove_stale_temporaries(folder, names):
     """Remove the temporaries of `names` in `folder` that a killed process of this host left."""
     for entry in os.listdir(folder):

@@ -127,31 +127,9 @@ def main(argv):
     except InputError as error:
         print(f"robustness_report.py: {error}", file=sys.stderr)
         return 2
-    outputs = [os.path.join(directory, name) for name in ("robustness.md", "robustness.png")]
-    made_here = os.path.isfile(os.path.join(directory, STUDY_MARKER))
-    for path in outputs:
-        if os.path.exists(path) and not made_here:
-            print(f"robustness_report.py: {path} exists and this is not a study of "
-                  "robustness_study.sh: move it away first", file=sys.stderr)
-            return 2
-    table = markdown_table(study)
-    plot_results.remove_stale_temporaries(directory, ["robustness.md", "robustness.png"])
-
-    def write_table(path):
-        with open(path, "w", encoding="utf-8") as file:
-            file.write(table)
-
-    try:
-        plot_results.write_atomically(outputs[0], write_table)
-        fig = figure(study)
-        plot_results.write_atomically(outputs[1], lambda path: fig.savefig(path, format="png"))
-    except OSError as error:
-        print(f"robustness_report.py: {directory}: cannot write the report ({error.strerror})",
-              file=sys.stderr)
-        return 1
-    sys.stdout.write(table)
-    return 0
-
+    return plot_results.publish_study_report(
+        "robustness_report.py", directory, STUDY_MARKER, "robustness_study.sh", "robustness",
+        markdown_table(study), lambda: figure(study))
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv))

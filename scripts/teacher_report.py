@@ -136,10 +136,6 @@ def read_study(directory):
     return study
 
 
-def seeds_of(rows):
-    return [row["seed"] for row in rows]
-
-
 def column(rows, name):
     return [row[name] for row in rows]
 
@@ -165,9 +161,9 @@ def skill_table(study):
               "cbbg's, seed by seed.", "", "| variant | bg_only - cbbg |", "|---|---|"]
     for variant, data in study.items():
         transfer = data["transfer"]
-        lines.append(f"| {variant} | " + paired_text(column(transfer["cbbg"], "trials_to_skill"),
-                                                      column(transfer["bg_only"], "trials_to_skill"))
-                     + " |")
+        difference = paired_text(column(transfer["cbbg"], "trials_to_skill"),
+                                 column(transfer["bg_only"], "trials_to_skill"))
+        lines.append(f"| {variant} | {difference} |")
     return lines
 
 
@@ -290,8 +286,8 @@ def figure(study):
     panels = [
         ("trials to skill (median over seeds)",
          lambda data, arm: median(column(data["transfer"][arm], "trials_to_skill")), None),
-        ("balanced under pitch noise 0.05 rad", lambda data, arm: rate(data["transfer"][arm], noise),
-         noise),
+        ("balanced under pitch noise 0.05 rad",
+         lambda data, arm: rate(data["transfer"][arm], noise), noise),
         (f"balanced under a push of {push.partition('=')[2] if push else '?'} N from outside",
          lambda data, arm: rate(data["transfer"][arm], push) if push else math.nan, push),
         ("seeds holding their ground in exp2 (trials 23-30)", holding, None),
@@ -337,30 +333,9 @@ def main(argv):
     except InputError as error:
         print(f"teacher_report.py: {error}", file=sys.stderr)
         return 2
-    outputs = [os.path.join(directory, name) for name in ("teacher.md", "teacher.png")]
-    made_here = os.path.isfile(os.path.join(directory, STUDY_MARKER))
-    for path in outputs:
-        if os.path.exists(path) and not made_here:
-            print(f"teacher_report.py: {path} exists and this is not a study of "
-                  "teacher_study.sh: move it away first", file=sys.stderr)
-            return 2
-    plot_results.remove_stale_temporaries(directory, ["teacher.md", "teacher.png"])
-
-    def write_table(path):
-        with open(path, "w", encoding="utf-8") as file:
-            file.write(table)
-
-    try:
-        plot_results.write_atomically(outputs[0], write_table)
-        fig = figure(study)
-        plot_results.write_atomically(outputs[1], lambda path: fig.savefig(path, format="png"))
-    except OSError as error:
-        print(f"teacher_report.py: {directory}: cannot write the report ({error.strerror})",
-              file=sys.stderr)
-        return 1
-    sys.stdout.write(table)
-    return 0
-
+    return plot_results.publish_study_report(
+        "teacher_report.py", directory, STUDY_MARKER, "teacher_study.sh", "teacher", table,
+        lambda: figure(study))
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv))
