@@ -73,7 +73,10 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& paramet
                              const ClosedLoopOptions& options = {});
 
 // Builds the closed loop of one arm from the run's typed parameters; called once per task
-// (maybe in several threads at once, each with its own result).
+// (maybe in several threads at once, each with its own result). The seed reaches the loop
+// through its blocks' random generators (BlockContext::random_generator) alone, never
+// through parameters.run.seed: the arms of a seed then draw the same numbers, and a run
+// that drew none is every seed's (transfer shares such an evaluation across the seeds).
 using ClosedLoopFactory = std::function<ClosedLoop(const config::Parameters& parameters)>;
 
 // Builds a controller (any diagram with a controller's ports) from the run's parameters (a

@@ -56,6 +56,7 @@ PolicyEvaluation evaluate(const config::Parameters& parameters,
       context.reseed(static_cast<std::uint64_t>(result.first_seed + repeat));
       if (weights != nullptr) load_learnt_weights(loop, context, *weights);
       angle.runs.push_back(runner.run_trial(theta0, parameters.trial.duration));
+      result.seed_free = result.seed_free && context.generators_at_seed();
     }
     result.angles.push_back(std::move(angle));
   }

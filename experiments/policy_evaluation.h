@@ -41,6 +41,9 @@ struct AngleEvaluation {
 struct PolicyEvaluation {
   long long first_seed = 0;  // the parameters' seed
   std::vector<AngleEvaluation> angles;
+  // No run drew a random number (Context::generators_at_seed): the runs are those of any
+  // seed, since the seed reaches a closed loop only through its blocks' generators.
+  bool seed_free = true;
 };
 
 // Runs the policy of `weights` in the closed loop `policy` builds from `parameters` (plant.kind,

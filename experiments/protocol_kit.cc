@@ -34,9 +34,8 @@ void keep_weights(LearntWeights weights, SeedRun& run) {
   }
 }
 
-std::vector<EvaluationRecord> evaluate_weights(const config::Parameters& training,
-                                               const diagrams::Arm& arm,
-                                               const LearntWeights* weights, long long seed) {
+SeedEvaluation evaluate_seed(const config::Parameters& training, const diagrams::Arm& arm,
+                             const LearntWeights* weights, long long seed) {
   const config::Parameters p = with_seed(evaluation_parameters(training), seed);
   EvaluationSettings settings;
   settings.angles = p.evaluation.angles;
@@ -46,11 +45,18 @@ std::vector<EvaluationRecord> evaluate_weights(const config::Parameters& trainin
   } else if (arm.policy) {
     evaluation = evaluate_policy(p, arm.policy, *weights, settings);
   }
-  std::vector<EvaluationRecord> records;
+  SeedEvaluation result;
+  result.seed_free = evaluation.seed_free;
   for (const AngleEvaluation& angle : evaluation.angles) {
-    records.push_back({angle.theta0, angle.runs.front()});
+    result.records.push_back({angle.theta0, angle.runs.front()});
   }
-  return records;
+  return result;
+}
+
+std::vector<EvaluationRecord> evaluate_weights(const config::Parameters& training,
+                                               const diagrams::Arm& arm,
+                                               const LearntWeights* weights, long long seed) {
+  return evaluate_seed(training, arm, weights, seed).records;
 }
 
 std::vector<EvaluationRecord> evaluate_run(const config::Parameters& training,

@@ -38,6 +38,14 @@ std::vector<EvaluationRecord> evaluate_weights(const config::Parameters& trainin
                                                const diagrams::Arm& arm,
                                                const LearntWeights* weights, long long seed);
 
+// evaluate_weights' records, and whether they are every seed's (PolicyEvaluation::seed_free).
+struct SeedEvaluation {
+  std::vector<EvaluationRecord> records;
+  bool seed_free = true;
+};
+SeedEvaluation evaluate_seed(const config::Parameters& training, const diagrams::Arm& arm,
+                             const LearntWeights* weights, long long seed);
+
 // What `run` leaves, tested so with its seed: its learnt weights, or, for an arm that learns
 // nothing, its closed loop; nothing for a learner whose weights diverged.
 std::vector<EvaluationRecord> evaluate_run(const config::Parameters& training,

@@ -7,6 +7,7 @@
 #include "cbbg/experiments/evaluation_conditions.h"
 #include "cbbg/experiments/experiments.h"
 #include "cbbg/experiments/protocol_kit.h"
+#include "cbbg/experiments/shared_evaluations.h"
 
 namespace cbbg::experiments {
 namespace {
@@ -49,6 +50,25 @@ int balanced(const std::vector<EvaluationRecord>& records) {
   return count;
 }
 
+// What `run` left, evaluated under each condition. An arm that learns nothing is evaluated
+// as it is, the same under every seed unless a block draws a random number: the seeds share
+// such an evaluation.
+std::vector<std::vector<EvaluationRecord>> evaluate_conditions(
+    const std::vector<TransferCondition>& conditions, const diagrams::Arm& arm, const SeedRun& run,
+    SharedEvaluations& shared) {
+  const bool learns_nothing = !run.weights && !run.weights_diverged;
+  const SharedEvaluations::Evaluate evaluate = [&](std::size_t c) -> SeedEvaluation {
+    const TransferCondition& condition = conditions[c];
+    if (condition.changes_nothing) return {run.evaluation, false};  // this seed's own, at hand
+    if (learns_nothing) return evaluate_seed(condition.parameters, arm, nullptr, run.seed);
+    return {evaluate_run(condition.parameters, arm, run), false};
+  };
+  if (learns_nothing) return shared.evaluate(arm.name, conditions.size(), evaluate);
+  std::vector<std::vector<EvaluationRecord>> evaluations;
+  for (std::size_t c = 0; c < conditions.size(); ++c) evaluations.push_back(evaluate(c).records);
+  return evaluations;
+}
+
 }  // namespace
 
 std::vector<TransferCondition> transfer_conditions(const config::Parameters& p) {
@@ -80,15 +100,16 @@ ExperimentResults run_transfer(const config::Parameters& p, const std::vector<di
   const std::vector<TransferCondition> conditions = check_transfer(p, arms);
   const bool until_skill = p.transfer.training == config::TransferTraining::kUntilSkill;
   const PerSeed train = until_skill ? PerSeed(run_until_skill) : PerSeed(run_until_success);
+  SharedEvaluations shared;
   const PerSeed per_seed = [&](const config::Parameters& q, const diagrams::Arm& arm,
                                const TelemetryOptions& telemetry,
                                const LearntWeights* initial_weights, SeedRun& run) {
     train(q, arm, telemetry, initial_weights, run);
-    for (const TransferCondition& condition : conditions) {
-      const std::vector<EvaluationRecord> records =
-          condition.changes_nothing ? run.evaluation : evaluate_run(condition.parameters, arm, run);
-      run.figures.push_back({"balanced@" + condition.name, double(balanced(records))});
-      run.figures.push_back({"evaluated@" + condition.name, double(records.size())});
+    const std::vector<std::vector<EvaluationRecord>> evaluations =
+        evaluate_conditions(conditions, arm, run, shared);
+    for (std::size_t c = 0; c < conditions.size(); ++c) {
+      run.figures.push_back({"balanced@" + conditions[c].name, double(balanced(evaluations[c]))});
+      run.figures.push_back({"evaluated@" + conditions[c].name, double(evaluations[c].size())});
     }
     if (until_skill) {
       // exp3's own figures, so that one run answers "how fast" beside "how robust": whether

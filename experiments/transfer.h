@@ -10,7 +10,9 @@
 //
 // Since the training does not depend on the evaluation, a condition's figures are those of
 // the training protocol run with that setting: a sweep over evaluation.* keys, which trains
-// again at every point, in one training.
+// again at every point, in one training. An arm that learns nothing (pd_only) is the same
+// closed loop under every seed: a condition's evaluation of it that drew no random number
+// (no noise) runs once and the other seeds take its records (shared_evaluations.h).
 
 #include <string>
 #include <vector>

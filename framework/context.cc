@@ -156,6 +156,14 @@ void Context::reseed(std::uint64_t root_seed) {
   }
 }
 
+bool Context::generators_at_seed() const {
+  for (const auto& leaf : diagram_->leaves()) {
+    const RandomGenerator seeded(derive_seed(root_seed_, leaf.stream_name));
+    if (generators_[static_cast<size_t>(leaf.index)] != seeded) return false;
+  }
+  return true;
+}
+
 void Context::fix_input(const InputPort& diagram_input, const Vector& value) {
   if (&diagram_input.block() != diagram_) {
     throw std::invalid_argument("fix_input: '" + diagram_input.path() +

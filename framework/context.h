@@ -63,6 +63,10 @@ class Context {
   void continue_from(const Context& other);
   // Re-seeds every block's generator from `root_seed` and its path below the root diagram.
   void reseed(std::uint64_t root_seed);
+  // Whether every block's generator is where the seed put it (at creation or the last
+  // reseed): no block has drawn a random number since, so what ran since is the same under
+  // any seed (a closed loop takes its randomness from these generators alone).
+  bool generators_at_seed() const;
 
   // The value of an input port the root diagram exports: it must be set before simulating.
   void fix_input(const InputPort& diagram_input, const Vector& value);

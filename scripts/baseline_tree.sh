@@ -15,7 +15,10 @@ if [[ -e "$baseline" && ! -f "$baseline/.cbbg-bench-baseline" ]]; then
   exit 1
 fi
 if [[ "$(cat "$baseline/.cbbg-bench-baseline" 2>/dev/null)" != "$commit" ]]; then
-  rm -rf "$baseline/src"  # only ever a git archive this script extracted
+  # Only ever a git archive this script extracted and its build. The build goes too: the
+  # archive's files keep the commit's times, older than another commit's objects, which a
+  # build kept would take for up to date and link with this commit's.
+  rm -rf "$baseline/src" "$baseline/build"
   mkdir -p "$baseline/src"
   echo "$commit" > "$baseline/.cbbg-bench-baseline"
   git -C "$root" archive "$commit" | tar -x -C "$baseline/src"
@@ -24,6 +27,11 @@ fi
 [[ -e "$baseline/src/replay/page/node_modules" ]] ||
   ln -s "$root/replay/page/node_modules" "$baseline/src/replay/page/node_modules"
 echo "building the baseline $commit in $baseline ..." >&2
-cmake -S "$baseline/src" -B "$baseline/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$baseline/build" --parallel "$(nproc)" --target "$@" >/dev/null
+log="$baseline/build.log"
+if ! { cmake -S "$baseline/src" -B "$baseline/build" -G Ninja -DCMAKE_BUILD_TYPE=Release &&
+       cmake --build "$baseline/build" --parallel "$(nproc)" --target "$@"; } >"$log" 2>&1; then
+  echo "baseline_tree.sh: building $commit failed; the end of $log:" >&2
+  tail -n 15 "$log" >&2
+  exit 1
+fi
 echo "$baseline"

@@ -3,14 +3,20 @@
 
 #include "cbbg/experiments/transfer.h"
 
+#include <atomic>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "cbbg/blocks/measured_signals.h"
 #include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/experiments.h"
 #include "cbbg/experiments/protocols.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/diagram_builder.h"
 #include "cbbg/store/results_writer.h"
 #include "cbbg/store/task_store.h"
 
@@ -143,6 +149,73 @@ TEST(Transfer, TheConfigChecksEachSettingAsItArrives) {
   config::Config back;
   back.merge_yaml(config.to_yaml(), "config.yaml");
   EXPECT_EQ(back, config);
+}
+
+// A user's control law on the pitch; with `dither`, plus a small random action drawn from its
+// generator every tick.
+class PitchLaw final : public Block {
+ public:
+  PitchLaw(std::string name, bool dither) : Block(std::move(name)) {
+    const InputPort& measured = declare_input_port("measured", blocks::kMeasuredSize);
+    declare_discrete_state("dither", Vector::Zero(1), StateLifetime::kPerTrial);
+    declare_output_port("action", 1,
+                        [&measured](const BlockContext& context, VectorRef action) {
+                          const auto y = context.input(measured);
+                          action[0] = 40.0 * y[blocks::kMeasuredThetaB] +
+                                      8.0 * y[blocks::kMeasuredThetaBDot] +
+                                      context.discrete_state()[0];
+                        },
+                        {&measured});
+    if (!dither) return;
+    declare_periodic_update(0.01, 0.0, [](BlockContext& context, VectorRef next) {
+      next[0] = 0.5 * draw_standard_normal(context.random_generator());
+      return EventStatus::succeeded();
+    });
+  }
+};
+
+// An arm of the user's that learns nothing, counting the closed loops it builds.
+diagrams::Arm pitch_law_arm(bool dither, std::atomic<int>& builds) {
+  const diagrams::ControllerFactory controller = [dither, &builds](const config::Parameters&) {
+    ++builds;
+    DiagramBuilder builder("pitch_law");
+    auto& law = builder.emplace<PitchLaw>("law", dither);
+    builder.export_input(law.input_port("measured"));
+    builder.export_output(law.output_port("action"));
+    return std::shared_ptr<Diagram>(builder.build());
+  };
+  return {"pitch_law", diagrams::closed_loop_factory("pitch_law", controller), {}};
+}
+
+// The seeds of an arm that learns nothing share a condition's evaluation when it drew no
+// random number, with the figures each seed would have alone; one that drew is each seed's.
+TEST(Transfer, SeedsShareTheEvaluationsThatDrewNoRandomNumber) {
+  config::Config config = small_transfer();
+  config.set("seeds=3");
+  config.set(
+      "transfer.conditions=[evaluation.body_mass_scale=1.3, evaluation.com_height_scale=1.3]");
+  const config::Parameters p = diagrams::validated_parameters(config);
+  std::vector<int> builds_of;
+  for (const bool dither : {false, true}) {
+    std::atomic<int> builds{0};
+    const std::vector<diagrams::Arm> arms{pitch_law_arm(dither, builds)};
+    const ExperimentResults transfer = run_transfer(p, arms, {.jobs = 2});
+    builds_of.push_back(builds.load());
+    for (const std::string setting :
+         {"evaluation.body_mass_scale=1.3", "evaluation.com_height_scale=1.3"}) {
+      config::Config alone = config;
+      alone.set(setting);
+      const ExperimentResults exp3 = run_exp3(diagrams::validated_parameters(alone), arms);
+      const std::size_t c = setting.starts_with("evaluation.body") ? 0 : 1;
+      for (std::size_t task = 0; task < 3; ++task) {
+        EXPECT_EQ(transfer.runs[task].figures[2 * c].value, balanced(exp3.runs[task].evaluation))
+            << setting << " dither " << dither << " task " << task;
+      }
+    }
+  }
+  // Two conditions, three seeds: the dithering law runs each condition for the two seeds
+  // that the other takes from the first.
+  EXPECT_EQ(builds_of[1] - builds_of[0], 2 * 2);
 }
 
 TEST(Transfer, IsARegisteredProtocolWhoseResultsPairTheBalancedFigures) {

@@ -115,6 +115,21 @@ TEST(Context, ReseedingRepeatsTheDraws) {
   EXPECT_EQ(context->random_generator(*second)(), a);
 }
 
+TEST(Context, KnowsWhetherABlockHasDrawnSinceTheSeed) {
+  auto [diagram, first, second] = make_noise_diagram();
+  auto context = diagram->create_context(3);
+  EXPECT_TRUE(context->generators_at_seed());
+  context->random_generator (*second)();
+  EXPECT_FALSE(context->generators_at_seed());
+  context->reseed(4);
+  EXPECT_TRUE(context->generators_at_seed());
+  // A block that draws in its update: two ticks of a simulation move its generator.
+  Simulator simulator(*diagram, SimulatorOptions{}, 5);
+  EXPECT_TRUE(simulator.context().generators_at_seed());
+  simulator.advance_to(0.02);
+  EXPECT_FALSE(simulator.context().generators_at_seed());
+}
+
 TEST(Context, ParametersChangePerContext) {
   auto [diagram, first, second] = make_noise_diagram();
   Simulator simulator(*diagram, SimulatorOptions{}, 1);
