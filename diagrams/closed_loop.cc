@@ -48,13 +48,13 @@ std::optional<blocks::PushParams> configured_push(const config::Parameters& para
 // plant declares its input "disturbance" when push.* pushes from outside).
 std::shared_ptr<plant::RobotPlant> make_plant(const config::Parameters& p,
                                               const ClosedLoopOptions& options) {
-  config::Parameters pushed;
-  if (options.push) {
-    pushed = p;
-    pushed.push = *options.push;
-  }
-  const config::Parameters& q = options.push ? pushed : p;
-  return options.plant ? options.plant("plant", q) : plant_kind(q.plant.kind).make("plant", q);
+  const auto make = [&options](const config::Parameters& q) {
+    return options.plant ? options.plant("plant", q) : plant_kind(q.plant.kind).make("plant", q);
+  };
+  if (!options.push) return make(p);
+  config::Parameters pushed = p;  // a copy only for a loop of its own push
+  pushed.push = *options.push;
+  return make(pushed);
 }
 
 // A push from outside into the plant's input "disturbance"; a plant that declares the input

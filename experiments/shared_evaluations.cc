@@ -1,7 +1,6 @@
 #include "cbbg/experiments/shared_evaluations.h"
 
 #include <chrono>
-#include <exception>
 
 namespace cbbg::experiments {
 

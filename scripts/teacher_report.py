@@ -29,6 +29,7 @@ import csv
 import math
 import os
 import random
+import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -153,8 +154,7 @@ def skill_table(study):
             skilled = int(sum(column(rows, "skilled")))
             versus = "" if variant == "paper" else paired_text(
                 column(paper[arm], "trials_to_skill"), column(rows, "trials_to_skill"))
-            median = trials[len(trials) // 2] if len(trials) % 2 else (
-                trials[len(trials) // 2 - 1] + trials[len(trials) // 2]) / 2
+            median = statistics.median(trials)
             lines.append(f"| {variant} | {arm} | {median:g} [{trials[0]:g}, {trials[-1]:g}] | "
                          f"{skilled}/{len(rows)} | {versus} |")
     lines += ["", "The cerebellum's advantage, per variant: bg_only's trials to skill minus "
@@ -278,14 +278,10 @@ def figure(study):
         seeds = late_seeds(data, arm)
         return sum(seed.holds for seed in seeds) / len(seeds) if seeds else math.nan
 
-    def median(values):
-        ordered = sorted(values)
-        middle = len(ordered) // 2
-        return ordered[middle] if len(ordered) % 2 else (ordered[middle - 1] + ordered[middle]) / 2
-
     panels = [
         ("trials to skill (median over seeds)",
-         lambda data, arm: median(column(data["transfer"][arm], "trials_to_skill")), None),
+         lambda data, arm: statistics.median(column(data["transfer"][arm], "trials_to_skill")),
+         None),
         ("balanced under pitch noise 0.05 rad",
          lambda data, arm: rate(data["transfer"][arm], noise), noise),
         (f"balanced under a push of {push.partition('=')[2] if push else '?'} N from outside",
