@@ -43,6 +43,24 @@ std::string experiment_help() {
 
 std::string diagram_help() { return alternatives(cbbg::diagrams::diagram_names()); }
 
+// The first word of the command line when it names no subcommand of `app` ("" when it does,
+// or there is none): the words before it are the main options (--log-level and its value).
+std::string unknown_command(const CLI::App& app, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--log-level") {
+      ++i;  // its value
+      continue;
+    }
+    if (word.starts_with("-")) continue;
+    for (const CLI::App* command : app.get_subcommands({})) {
+      if (command->get_name() == word) return "";
+    }
+    return word;
+  }
+  return "";
+}
+
 }  // namespace
 
 namespace cbbg::app {
@@ -54,6 +72,7 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
   }
   CLI::App app{"cbbg: cerebellum-basal-ganglia motor learning on a two-wheeled robot"};
   app.require_subcommand(0, 1);
+  app.fallthrough();  // --log-level after the command too: `cbbg run --log-level warn`
   std::string log_level = "info";
   app.add_option("--log-level", log_level, "trace | debug | info | warn | error | off")
       ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
@@ -164,6 +183,11 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
   list_app->add_flag("--keys-markdown", keys_markdown,
                      "only the config keys, as a Markdown table (docs/parameters.md)");
 
+  if (const std::string word = unknown_command(app, argc, argv); !word.empty()) {
+    // Before CLI11 reads a --help after it as the main help's.
+    return report_error(kUserError, "unknown command '" + config::shown_text(word) + "' (" +
+                                        program_name() + " --help lists the commands)");
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

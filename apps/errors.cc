@@ -34,16 +34,6 @@ void check_writable(const fs::path& directory, const std::string& flag) {
 
 }  // namespace
 
-namespace {
-std::string& name_of_program() {
-  static std::string name = "cbbg";
-  return name;
-}
-}  // namespace
-
-const std::string& program_name() { return name_of_program(); }
-void set_program_name(std::string name) { name_of_program() = std::move(name); }
-
 int report_error(int exit_code, const std::string& message) {
   std::cerr << program_name() << ": error: " << message << "\n";
   return exit_code;

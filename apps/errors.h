@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include "cbbg/config/program_name.h"
+
 namespace cbbg::app {
 
 inline constexpr int kUserError = 2;
@@ -16,8 +18,8 @@ inline constexpr int kMachineError = 1;
 int report_error(int exit_code, const std::string& message);
 
 // The name the lines start with: "cbbg", or a user's program's own (run_cli sets it).
-const std::string& program_name();
-void set_program_name(std::string name);
+using config::program_name;
+using config::set_program_name;
 
 // The exception's message in the project's words: a filesystem error names its path and the
 // system's reason ("cannot use 'x': Read-only file system"), not the library's text.

@@ -14,9 +14,11 @@
 #include "cbbg/apps/progress.h"
 #include "cbbg/diagrams/presets.h"
 #include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/arm_checks.h"
 #include "cbbg/experiments/evaluation_conditions.h"
 #include "cbbg/experiments/experiments.h"
 #include "cbbg/experiments/run_names.h"
+#include "cbbg/store/files.h"
 #include "cbbg/store/output_guard.h"
 #include "cbbg/store/results_writer.h"
 #include "cbbg/store/run_directory.h"
@@ -158,8 +160,11 @@ void print_summary(const experiments::ExperimentResults& results) {
   print_figures_summary(results);
 }
 
-// Learning runs of the experiment: every (arm, seed) of an arm with basal ganglia.
+// Learning runs of the experiment: every (arm, seed) of an arm with basal ganglia, under a
+// protocol that learns.
 long long learning_runs(const config::RunParams& run) {
+  const experiments::Protocol* protocol = experiments::find_protocol(run.experiment);
+  if (protocol != nullptr && !protocol->learns) return 0;
   const std::vector<std::string> arms = experiments::experiment_arms(run);
   const auto learning = std::count_if(arms.begin(), arms.end(), [](const std::string& arm) {
     return static_cast<bool>(diagrams::named_arm(arm).policy);
@@ -210,10 +215,16 @@ PreparedRun prepare(const RunOptions& options) {
   }
   run.parameters = checked_parameters(run.config);
   if (!options.save_weights.empty()) {
-    if (learning_runs(run.parameters.run) != 1) {
+    const long long learning = learning_runs(run.parameters.run);
+    if (learning == 0) {
+      throw config::ConfigError("--save-weights keeps the weights a run learns; --experiment " +
+                                run.parameters.run.experiment +
+                                " learns none (the weights it uses are those of --load-weights)");
+    }
+    if (learning != 1) {
       throw config::ConfigError(
           "--save-weights keeps the weights of one learning run; this run has " +
-          std::to_string(learning_runs(run.parameters.run)) +
+          std::to_string(learning) +
           " (use --experiment ARM --seeds 1; every run's weights are in DIR/weights/)");
     }
     check_output_file(options.save_weights, "--save-weights");
@@ -238,6 +249,22 @@ PreparedRun prepare(const RunOptions& options) {
     run.initial_weights = store::load_weights(run.directory->initial_weights());
   }
   return run;
+}
+
+// --save-weights: the one learning run's weights. Throws std::runtime_error when it has none
+// (they stopped being finite), so no file is claimed that was not written.
+void save_learnt_weights(const experiments::ExperimentResults& results,
+                         const std::filesystem::path& file) {
+  for (const auto& seed : results.runs) {
+    if (!seed.weights) continue;
+    store::save_weights(file, *seed.weights);
+    spdlog::info("weights in {}", file.string());
+    return;
+  }
+  throw std::runtime_error(
+      "--save-weights: the run learnt no finite weights (see "
+      "weights_diverged in summary.json); nothing was written to " +
+      store::quoted_path(file));
 }
 
 void execute(const RunOptions& options, PreparedRun& run) {
@@ -268,13 +295,22 @@ void execute(const RunOptions& options, PreparedRun& run) {
   }
   directory.commit();
   print_summary(results);
-  if (!options.save_weights.empty()) {
-    for (const auto& seed : results.runs) {
-      if (seed.weights) store::save_weights(options.save_weights, *seed.weights);
-    }
-    spdlog::info("weights in {}", options.save_weights.string());
-  }
+  if (!options.save_weights.empty()) save_learnt_weights(results, options.save_weights);
   spdlog::info("results in {}", directory.target().string());
+}
+
+// After a failed run, what to do next: --resume, unless the last try failed the same way.
+std::string way_forward(const store::RunDirectory& directory, const std::exception& error) {
+  std::error_code ignored;
+  if (!std::filesystem::exists(directory.work(), ignored)) return "";
+  const std::string work = store::quoted_path(directory.work());
+  if (directory.record_failure(describe(error))) {
+    return "; the run failed the same way when it was resumed before, so --resume will not "
+           "finish it: mend what the message names, or remove " +
+           work + " to start anew";
+  }
+  return "; the finished seeds are kept in " + work + ": continue with " + program_name() +
+         " run --resume " + directory.target().string();
 }
 
 }  // namespace
@@ -283,6 +319,7 @@ config::Parameters checked_parameters(const config::Config& config) {
   config::Parameters parameters = diagrams::validated_parameters(config);
   experiments::check_run_names(parameters.run);
   experiments::check_evaluation_conditions(parameters);
+  experiments::check_arms_build(parameters);
   return parameters;
 }
 
@@ -322,14 +359,7 @@ int run_command(const RunOptions& options) {
     }
     execute(options, run);
   } catch (const std::exception& error) {
-    report_error(kMachineError, describe(error));
-    std::error_code ignored;
-    if (std::filesystem::exists(run.directory->work(), ignored)) {
-      std::cerr << program_name() << ": the finished seeds are kept in '"
-                << run.directory->work().string() << "'; continue with --resume "
-                << run.directory->target().string() << "\n";
-    }
-    return kMachineError;
+    return report_error(kMachineError, describe(error) + way_forward(*run.directory, error));
   }
   return 0;
 }

@@ -156,7 +156,6 @@ void merge(const SweepPlan& plan, store::SweepDirectory& directory) {
       std::filesystem::create_directories(out);
       store::write_result_files(results.back(), plan.points[p], out, &store);
     }
-    store::write_atomically(directory.work() / "config.yaml", sweep_yaml(plan));
     store::write_atomically(directory.work() / "sweep.csv", store::sweep_csv(plan.sweep, results));
     if (directory.figures() && run_plot_script(directory.work(), /*quiet=*/true) != 0) {
       spdlog::warn("the sweep's figures could not be drawn (see the message above)");
@@ -196,13 +195,12 @@ int sweep_command(const RunOptions& options, const config::Config& base,
     run_shard(sweep_plan, *directory, k, n, options.jobs);
   } catch (const std::exception& error) {
     directory->record_failure(describe(error));
-    report_error(kMachineError, describe(error));
-    std::cerr << program_name() << ": the finished tasks are kept in '"
-              << directory->work().string() << "'; run the same command again to continue\n";
-    return kMachineError;
+    return report_error(kMachineError, describe(error) + "; the finished tasks are kept in " +
+                                           store::quoted_path(directory->work()) +
+                                           ": run the same command again to continue");
   }
   if (options.shard) {
-    spdlog::info("shard {}/{} done; when every shard is, run: cbbg merge {}", k, n,
+    spdlog::info("shard {}/{} done; when every shard is, run: {} merge {}", k, n, program_name(),
                  options.out.string());
     return 0;
   }
@@ -237,8 +235,35 @@ int merge_command(const std::filesystem::path& target) {
   }
 }
 
+// cbbg status of a run (not a sweep): how far it got, and what continues it.
+void print_run_status(const std::filesystem::path& target, const store::RunState& state) {
+  const std::string name = target.string();
+  using Phase = store::RunState::Phase;
+  if (state.phase == Phase::kFinished || state.phase == Phase::kPublished) {
+    std::cout << name << ": finished results of " << program_name() << " run"
+              << (state.phase == Phase::kPublished
+                      ? " (the commit's cleanup is unfinished: " + program_name() +
+                            " run --resume " + name + " finishes it)"
+                      : "")
+              << "\n";
+    return;
+  }
+  const config::Parameters parameters = checked_parameters(state.config);
+  const std::size_t tasks = point_tasks(parameters.run);
+  std::cout << name << ": " << (state.phase == Phase::kRunning ? "running" : "interrupted") << ", "
+            << store::finished_tasks(state.tasks, tasks) << " of " << tasks << " task(s) done"
+            << (state.phase == Phase::kInterrupted
+                    ? "; continue it with " + program_name() + " run --resume " + name
+                    : "")
+            << "\n";
+}
+
 int status_command(const std::filesystem::path& target) {
   try {
+    if (const auto run = store::RunDirectory::inspect(target)) {
+      print_run_status(target, *run);
+      return 0;
+    }
     std::filesystem::path work = target;
     work += ".partial";
     std::error_code error;
@@ -250,7 +275,8 @@ int status_command(const std::filesystem::path& target) {
     }
     const store::SweepDirectory directory = store::SweepDirectory::open_existing(target, false);
     if (directory.published()) {
-      std::cout << target.string() << ": merged (the merge's cleanup is unfinished: cbbg merge "
+      std::cout << target.string()
+                << ": merged (the merge's cleanup is unfinished: " << program_name() << " merge "
                 << target.string() << " finishes it)\n";
       return 0;
     }

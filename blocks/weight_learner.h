@@ -11,6 +11,10 @@
 
 namespace cbbg::blocks {
 
+// The most features a learner may have: what a weights file and a task record store (each
+// weight a line), checked before a run starts (experiments/arm_checks.h).
+inline constexpr int kMaxFeatures = 1000000;
+
 class WeightLearner {
  public:
   enum class Role { kCritic, kActor };

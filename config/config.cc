@@ -36,14 +36,12 @@ std::string section_keys(std::string_view section) {
 // A node as the user wrote it, on one line, for "got ..." in messages.
 std::string shown(const YAML::Node& node) {
   if (!node.IsDefined() || node.IsNull()) return "nothing";
-  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsScalar()) return "'" + shown_text(node.Scalar(), std::string::npos) + "'";
   YAML::Emitter out;
   out.SetSeqFormat(YAML::Flow);
   out.SetMapFormat(YAML::Flow);
   out << node;
-  std::string text = out.c_str();
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return text;
+  return shown_text(out.c_str(), 57);
 }
 
 std::string range_text(const KeySpec& spec) {
@@ -364,6 +362,13 @@ void write_value(std::ostringstream& out, const Value& value) {
 
 }  // namespace
 
+void check_default(const KeySpec& spec) {
+  std::ostringstream text;
+  write_value(text, spec.default_value);
+  const std::string source = "config key '" + spec.path + "' has a default outside its declaration";
+  Parser(source).parse(spec, load_yaml(text.str(), source));
+}
+
 std::string allowed_values(const KeySpec& spec) {
   switch (spec.kind) {
     case Kind::kNumber:
@@ -532,6 +537,16 @@ std::vector<std::pair<std::string, std::string>> split_settings(std::string_view
     start = end + 1;
   }
   return settings;
+}
+
+std::string shown_text(std::string_view text, std::size_t max_size) {
+  std::string shown;
+  for (const char c : text.substr(0, std::min(text.size(), max_size))) {
+    const auto byte = static_cast<unsigned char>(c);
+    shown += (byte < 0x20 || byte == 0x7f) ? '?' : c;  // UTF-8 passes; controls do not
+  }
+  if (text.size() > max_size) shown += "...";
+  return shown;
 }
 
 std::string join(const std::vector<std::string>& items) {

@@ -67,6 +67,9 @@ const std::vector<KeySpec>& schema();
 // What `spec` allows, as messages and the docs' table say it: "in (0, 1]", "> 0", "one of
 // pd, lqr", "6 numbers >= 0".
 std::string allowed_values(const KeySpec& spec);
+// Throws ConfigError when the default of `spec` is not a value `spec` allows (so a config.yaml
+// that records it would not read back), naming the key and what it allows.
+void check_default(const KeySpec& spec);
 
 class Config {
  public:
@@ -113,6 +116,10 @@ std::string closest_key(std::string_view unknown);
 inline constexpr const char* kNameRule =
     "1 to 100 letters, digits, '_', '-' and '.', not starting with '-' or '.'";
 bool is_name(std::string_view text);
+
+// A text as a one-line message shows it: '?' for a newline or any other control character,
+// at most `max_size` bytes, then "...".
+std::string shown_text(std::string_view text, std::size_t max_size = 60);
 
 // "a, b, c": a list of names in a message.
 std::string join(const std::vector<std::string>& items);

@@ -15,6 +15,7 @@
 //   const DlqrParams dlqr = cbbg::config::read_section<DlqrParams>(parameters.own, "dlqr");
 
 #include <array>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -217,20 +218,15 @@ std::vector<KeySpec> declared_keys(Params params, std::string_view section) {
 }
 
 // Adds keys to the schema after the built-in ones. Throws std::invalid_argument naming a key
-// that is there already. Register before making any Config: a Config holds the keys that
-// existed when it was made, and the defaults of the others.
+// that is there already, or whose default its declaration refuses (check_default). Register before
+// making any Config: a Config holds the keys that existed when it was made, and the defaults of the
+// others.
 void register_keys(std::vector<KeySpec> keys);
 
 // One more word the text key `key` allows (a plant kind a user registers for plant.kind),
 // with its meaning appended to the key's. Throws std::invalid_argument for a key that is not
 // a text key with a list of words, or a word it has already.
 void register_choice(std::string_view key, const std::string& word, std::string_view meaning);
-
-// A user's section: its struct's declared keys under `name`.
-template <typename Params>
-void register_section(std::string_view name) {
-  register_keys(declared_keys(Params{}, name));
-}
 
 // The section `name` of `config` (a Config, or the OwnSections of the typed tree) as its
 // struct.
@@ -240,6 +236,35 @@ Params read_section(const Source& config, std::string_view name) {
   KeyReader reader(config, std::string(name) + ".");
   params.describe(reader);
   return params;
+}
+
+// A check of a registered section's values beyond each key's own range (how they go
+// together, what a factory will build from them), run at the edge of every run with the
+// library's own checks (diagrams::validated_parameters), before any work. It throws
+// config::ConfigError or std::invalid_argument with a one-line message naming the keys.
+using SectionCheck = std::function<void(const OwnSections& own)>;
+// Adds `check` for the section `name`. Throws std::invalid_argument for an empty check.
+void register_section_check(const std::string& name, SectionCheck check);
+// Runs every registered check on `own`. Throws config::ConfigError.
+void check_own_sections(const OwnSections& own);
+
+// A user's section: its struct's declared keys under `name`, and its checks: the struct's
+// own `validate() const` if it has one (as the library's params structs do), then `check`.
+// Throws std::invalid_argument for a key declared twice or a default its declaration refuses.
+template <typename Params>
+void register_section(std::string_view name, std::function<void(const Params&)> check = {}) {
+  register_keys(declared_keys(Params{}, name));
+  const std::string section(name);
+  if constexpr (requires(const Params& params) { params.validate(); }) {
+    register_section_check(section, [section](const OwnSections& own) {
+      read_section<Params>(own, section).validate();
+    });
+  }
+  if (check) {
+    register_section_check(section, [section, check](const OwnSections& own) {
+      check(read_section<Params>(own, section));
+    });
+  }
 }
 
 }  // namespace cbbg::config

@@ -32,6 +32,11 @@ const std::vector<KeySpec>& schema() { return keys(); }
 
 void register_keys(std::vector<KeySpec> added) {
   for (const KeySpec& key : added) {
+    try {
+      check_default(key);
+    } catch (const ConfigError& error) {
+      throw std::invalid_argument(error.what());
+    }
     for (const KeySpec& existing : keys()) {
       if (existing.path == key.path) {
         throw std::invalid_argument("config key '" + key.path + "' is declared twice");

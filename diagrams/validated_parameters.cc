@@ -1,13 +1,30 @@
 #include "cbbg/diagrams/validated_parameters.h"
 
+#include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "cbbg/blocks/failure_detector.h"
 #include "cbbg/blocks/lqr_supervisor.h"
+#include "cbbg/blocks/weight_learner.h"
+#include "cbbg/config/declared_keys.h"
 #include "cbbg/diagrams/plant_kinds.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::diagrams {
 namespace {
+
+// The RBF grid's units, centres^inputs, before a grid too large to store is built at all.
+void check_rbf_grid(const config::Parameters& p) {
+  const double units = std::pow(static_cast<double>(p.rbf.centres.size()), p.normaliser.size());
+  if (units <= blocks::kMaxFeatures) return;
+  throw config::ConfigError(
+      "rbf.centres (" + std::to_string(p.rbf.centres.size()) +
+      " of them) over normaliser.inputs (" + std::to_string(p.normaliser.size()) +
+      " inputs) make " + format_number(units) + " features per learner; a learner holds at most " +
+      std::to_string(blocks::kMaxFeatures) +
+      ", what a weights file stores: use fewer rbf.centres or normaliser.inputs");
+}
 
 // What the blocks check of their own params, beyond the ranges every value was read with.
 void check_blocks(const config::Parameters& p) {
@@ -43,6 +60,8 @@ void check_invariants(const config::Parameters& parameters) {
     throw config::ConfigError(error.what());
   }
   parameters.check_across_sections();
+  check_rbf_grid(parameters);
+  config::check_own_sections(parameters.own);
 }
 
 }  // namespace

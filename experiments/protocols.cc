@@ -67,7 +67,8 @@ std::vector<Protocol>& registry() {
        {.paired = false, .headline = "balanced", .headline_of = balanced_evaluations},
        [](const config::Parameters& p, const LearntWeights* initial_weights) {
          check_evaluation(p, named_arms(p.run.arms), initial_weights);
-       }},
+       },
+       /*learns=*/false},
       {"transfer",
        "per arm and seed: one training (transfer.training), then evaluated under each of "
        "transfer.conditions",

@@ -54,6 +54,8 @@ struct Protocol {
   // Before any work, given the weights learning starts from (none: nullptr): a user's mistake
   // in the parameters, as a config::ConfigError; none by default.
   std::function<void(const config::Parameters&, const LearntWeights* initial_weights)> check{};
+  // Whether its runs learn weights (what --save-weights keeps); evaluate's only use them.
+  bool learns = true;
 };
 
 // Adds `protocol` (its name a config::is_name word no protocol or arm has). Register before

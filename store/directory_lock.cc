@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "cbbg/config/config.h"
+#include "cbbg/config/program_name.h"
 
 namespace cbbg::store {
 namespace {
@@ -33,8 +34,8 @@ DirectoryLock::DirectoryLock(const std::filesystem::path& file, const std::strin
     const std::string pid = holder_pid(fd_);
     ::close(fd_);
     fd_ = -1;
-    throw config::ConfigError("'" + what + "' is in use by another cbbg run (pid " + pid +
-                              "); wait for it to end");
+    throw config::ConfigError("'" + what + "' is in use by another " + config::program_name() +
+                              " run (pid " + pid + "); wait for it to end");
   }
   // The pid only names the holder in messages: if writing it fails, the lock still holds.
   const std::string pid = std::to_string(::getpid()) + "\n";

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "cbbg/config/config.h"
+#include "cbbg/config/program_name.h"
 #include "cbbg/store/files.h"
 
 namespace cbbg::store {
@@ -131,9 +132,10 @@ void check_replaceable_file(const fs::path& path, const std::string& flag, std::
   }
   std::error_code error;
   if (fs::exists(fs::symlink_status(path, error)) && !carries_tag(path, tag)) {
-    throw config::ConfigError(flag + " " + quoted_path(path) +
-                              " exists and cbbg did not write it; cbbg never replaces a file of "
-                              "yours: give a new path");
+    throw config::ConfigError(flag + " " + quoted_path(path) + " exists and " +
+                              config::program_name() + " did not write it; " +
+                              config::program_name() +
+                              " never replaces a file of yours: give a new path");
   }
 }
 
@@ -156,13 +158,15 @@ void Manifest::check_writable(const std::vector<std::string>& names,
     const fs::path path = directory_ / name;
     if (const std::string kind = non_regular_kind(path); !kind.empty()) {
       throw config::ConfigError(flag + ": " + quoted_path(path) + " is " + kind +
-                                "; move it away, cbbg writes a file there");
+                                "; move it away, " + config::program_name() +
+                                " writes a file there");
     }
     std::error_code error;
     if (fs::exists(fs::symlink_status(path, error)) && !lists(name)) {
-      throw config::ConfigError(flag + ": " + quoted_path(path) +
-                                " exists and cbbg did not write it; cbbg never replaces a file "
-                                "of yours: move it away");
+      throw config::ConfigError(flag + ": " + quoted_path(path) + " exists and " +
+                                config::program_name() + " did not write it; " +
+                                config::program_name() +
+                                " never replaces a file of yours: move it away");
     }
   }
 }

@@ -5,11 +5,14 @@
 #include "cbbg/experiments/protocols.h"
 #include "cbbg/store/fault_point.h"
 #include "cbbg/store/files.h"
+#include "cbbg/store/output_guard.h"
 #include "cbbg/store/task_store.h"
 #include "cbbg/store/weights_file.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -253,7 +256,9 @@ void write_steps_csv(const ExperimentResults& results, const std::filesystem::pa
           header.substr(0, header.size() - 1) + " against " + own.substr(0, own.size() - 1) + ")");
     }
   }
-  std::ofstream steps(path, std::ios::binary | std::ios::trunc);
+  // Streamed into a temporary of cbbg's, renamed into place whole.
+  const std::filesystem::path temporary = temporary_beside(path);
+  std::ofstream steps(temporary, std::ios::binary | std::ios::trunc);
   steps << (header.empty() ? steps_csv_header() : header);
   for (std::size_t task = 0; task < results.runs.size(); ++task) {
     if (store == nullptr) {
@@ -267,7 +272,16 @@ void write_steps_csv(const ExperimentResults& results, const std::filesystem::pa
     if (has_header[task]) std::getline(rows, skipped);
     if (rows.peek() != std::ifstream::traits_type::eof()) steps << rows.rdbuf();
   }
-  if (!steps) throw std::runtime_error("cannot write '" + path.string() + "'");
+  steps.close();
+  if (!steps) {
+    const std::string reason = std::strerror(errno);
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error("cannot write '" + path.string() + "': " + reason);
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) throw std::runtime_error("cannot write '" + path.string() + "': " + error.message());
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "cbbg/config/program_name.h"
 #include "cbbg/store/fault_point.h"
 #include "cbbg/store/files.h"
 #include "cbbg/store/output_guard.h"
@@ -92,9 +93,9 @@ void check_target(const fs::path& target, bool replace) {
                               target.string());
   }
   if (!has(target, kResultsMarker)) {
-    throw config::ConfigError("--out " + quoted_path(target) +
-                              " exists and was not made by cbbg run; cbbg never replaces what it "
-                              "did not make: give a new path");
+    throw config::ConfigError("--out " + quoted_path(target) + " exists and was not made by " +
+                              config::program_name() + " run; " + config::program_name() +
+                              " never replaces what it did not make: give a new path");
   }
   if (!replace) {
     throw config::ConfigError("--out " + quoted_path(target) +
@@ -113,7 +114,8 @@ void check_work_free(const fs::path& work, const fs::path& target) {
   if (!fs::exists(fs::symlink_status(work, error))) return;
   if (has(work, kSweepWorkMarker)) {
     throw config::ConfigError(quoted_path(work) + " holds a sweep's unfinished tasks: continue " +
-                              "it with the same cbbg run --grid command, or see cbbg status " +
+                              "it with the same " + config::program_name() +
+                              " run --grid command, or see " + config::program_name() + " status " +
                               target.string());
   }
   if (!has(work, kWorkMarker)) {
@@ -122,12 +124,22 @@ void check_work_free(const fs::path& work, const fs::path& target) {
         "away (cbbg works there while it runs into " + quoted_path(target) + ")");
   }
   if (DirectoryLock::held(work / kLockFile)) {
-    throw config::ConfigError(quoted_path(work) +
-                              " is in use by another cbbg run; wait for it to end");
+    throw config::ConfigError(quoted_path(work) + " is in use by another " +
+                              config::program_name() + " run; wait for it to end");
   }
   throw config::ConfigError(
       quoted_path(work) + " holds an interrupted run: continue it with --resume " +
       target.string() + ", or remove " + quoted_path(work) + " to start anew");
+}
+
+// The config a run in `work` began with: run-config.yaml, or config.yaml for a run begun by
+// an earlier release.
+fs::path run_config_file(const fs::path& work) {
+  std::error_code error;
+  if (!fs::exists(work / kRunConfigFile, error) && fs::exists(work / "config.yaml", error)) {
+    return work / "config.yaml";
+  }
+  return work / kRunConfigFile;
 }
 
 void create_parent(const fs::path& path) {
@@ -183,7 +195,7 @@ RunDirectory RunDirectory::create(const fs::path& target, const config::Config& 
   }
   directory.lock_.emplace(staging / kLockFile, directory.work_.string());
   const std::string yaml = config.to_yaml();
-  write_atomically(staging / "config.yaml", yaml);
+  write_atomically(staging / kRunConfigFile, yaml);
   write_atomically(staging / kWorkMarker, work_marker(text_hash(yaml), shape));
   fs::rename(staging, directory.work_, error);
   if (error) {
@@ -195,6 +207,25 @@ RunDirectory RunDirectory::create(const fs::path& target, const config::Config& 
   directory.config_ = config;
   directory.shape_ = shape;
   return directory;
+}
+
+std::optional<RunState> RunDirectory::inspect(const fs::path& target) {
+  const RunDirectory directory(target);
+  RunState state{RunState::Phase::kFinished, {}, {}};
+  if (has(directory.work_, kWorkMarker)) {
+    state.phase = DirectoryLock::held(directory.work_ / kLockFile) ? RunState::Phase::kRunning
+                                                                   : RunState::Phase::kInterrupted;
+    state.config.merge_file(run_config_file(directory.work_));
+    state.tasks = directory.tasks();
+    return state;
+  }
+  if (has(directory.target_, kWorkMarker)) {
+    state.phase = RunState::Phase::kPublished;
+  } else if (!has(directory.target_, kResultsMarker) || has(directory.target_, "sweep.csv")) {
+    return std::nullopt;
+  }
+  state.config.merge_file(directory.target_ / "config.yaml");
+  return state;
 }
 
 RunDirectory RunDirectory::resume(const fs::path& target) {
@@ -251,8 +282,8 @@ void RunDirectory::read_marker() {
   if (word != "cbbg-run" || version != 1 || hash.empty()) {
     throw config::ConfigError(quoted_path(work_ / kWorkMarker) + " is not a cbbg run marker");
   }
-  const fs::path config_file = work_ / "config.yaml";
   std::error_code error;
+  const fs::path config_file = run_config_file(work_);
   if (!fs::is_regular_file(config_file, error) || text_hash(read_text(config_file)) != hash) {
     throw config::ConfigError(quoted_path(config_file) +
                               " is not the config the run began with (it was edited or "
@@ -278,8 +309,20 @@ void RunDirectory::remove_replaced() const {
   }
 }
 
+bool RunDirectory::record_failure(const std::string& message) const {
+  const fs::path file = work_ / kFailureFile;
+  std::error_code error;
+  const bool repeated = fs::is_regular_file(file, error) && read_text(file) == message + "\n";
+  try {
+    write_atomically(file, message + "\n");
+  } catch (const std::exception&) {  // the message is advice; the run's data is what matters
+  }
+  return repeated;
+}
+
 void RunDirectory::commit() {
   if (!published_) {
+    remove_tree(work_ / kFailureFile);
     refuse_temporaries(work_);
     fault_point("commit:marker");
     write_atomically(work_ / kResultsMarker, "cbbg-results 1\n");
@@ -295,6 +338,7 @@ void RunDirectory::commit() {
   remove_replaced();
   remove_own_tasks(target_ / "tasks");
   remove_tree(target_ / "initial_weights.txt");
+  remove_tree(target_ / kRunConfigFile);
   fault_point("commit:unmark");
   std::error_code error;
   fs::remove(target_ / kLockFile, error);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "cbbg/config/config.h"
+#include "cbbg/config/program_name.h"
 #include "cbbg/store/fault_point.h"
 #include "cbbg/store/files.h"
 #include "cbbg/store/output_guard.h"
@@ -52,8 +53,9 @@ bool try_create(const fs::path& work, const std::string& config_yaml, bool figur
 
 void check_is_sweep(const fs::path& work, const fs::path& target) {
   if (present(work / kWorkMarker)) {
-    throw config::ConfigError(quoted_path(work) + " holds an interrupted cbbg run, not a sweep: " +
-                              "continue it with cbbg run --resume " + target.string());
+    throw config::ConfigError(
+        quoted_path(work) + " holds an interrupted cbbg run, not a sweep: " + "continue it with " +
+        config::program_name() + " run --resume " + target.string());
   }
   if (!present(work / kSweepWorkMarker)) {
     throw config::ConfigError(quoted_path(work) +
@@ -141,9 +143,9 @@ SweepDirectory SweepDirectory::open_existing(const fs::path& target, bool lock) 
   }
   if (!present(directory.work_)) {
     if (present(directory.target_ / kResultsMarker) && !present(directory.target_ / "sweep.csv")) {
-      throw config::ConfigError(quoted_path(directory.target_) +
-                                " holds the results of a cbbg run, not of a sweep; status and "
-                                "merge are for sweeps (cbbg run --grid)");
+      throw config::ConfigError(
+          quoted_path(directory.target_) + " holds the results of a " + config::program_name() +
+          " run, not of a sweep; merge is for sweeps (" + config::program_name() + " run --grid)");
     }
     if (present(directory.target_ / kResultsMarker)) {
       throw config::ConfigError(quoted_path(directory.target_) + " is merged already");
@@ -153,6 +155,11 @@ SweepDirectory SweepDirectory::open_existing(const fs::path& target, bool lock) 
   }
   check_is_sweep(directory.work_, directory.target_);
   if (!lock) return directory;
+  if (present(directory.target_)) {  // the merge publishes there: refused before any work
+    throw config::ConfigError(quoted_path(directory.target_) + " exists and was not made by " +
+                              config::program_name() +
+                              " merge; the merged results go there: " + "move it away, then merge");
+  }
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(directory.work_, error)) {
     const std::string name = entry.path().filename().string();

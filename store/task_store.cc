@@ -23,6 +23,11 @@ namespace {
 
 constexpr const char* kRecordFormat = "cbbg-task 1";
 
+// Where task `task`'s record is kept in `tasks`.
+std::filesystem::path record_file(const std::filesystem::path& tasks, std::size_t task) {
+  return tasks / (std::to_string(task) + ".run");
+}
+
 double parse_double(const std::string& text, const std::string& source) {
   double value = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -221,12 +226,22 @@ SeedRun parse_run(const std::string& text, const std::string& source) {
     } else if (key == "end") {
       ended = true;
     } else {
-      throw std::runtime_error(source + ": unknown line '" + line + "'");
+      throw std::runtime_error(source + ": unknown line '" + config::shown_text(line) + "'");
     }
-    if (!in && key != "end") throw std::runtime_error(source + ": malformed line '" + line + "'");
+    if (!in && key != "end")
+      throw std::runtime_error(source + ": malformed line '" + config::shown_text(line) + "'");
   }
   if (!ended) throw std::runtime_error(source + ": the record is incomplete");
   return run;
+}
+
+std::size_t finished_tasks(const std::filesystem::path& tasks, std::size_t count) {
+  std::size_t finished = 0;
+  std::error_code error;
+  for (std::size_t task = 0; task < count; ++task) {
+    finished += std::filesystem::exists(record_file(tasks, task), error) ? 1 : 0;
+  }
+  return finished;
 }
 
 TaskStore::TaskStore(std::filesystem::path directory) : directory_(std::move(directory)) {
@@ -234,7 +249,7 @@ TaskStore::TaskStore(std::filesystem::path directory) : directory_(std::move(dir
 }
 
 std::filesystem::path TaskStore::record_path(std::size_t task) const {
-  return directory_ / (std::to_string(task) + ".run");
+  return record_file(directory_, task);
 }
 
 std::filesystem::path TaskStore::pending_steps_path(std::size_t task) const {

@@ -39,6 +39,10 @@ class TaskStore final : public experiments::TaskStorage {
   std::filesystem::path directory_;
 };
 
+// How many of the tasks 0 .. count-1 kept in `tasks` have a record (are finished), read
+// without creating or changing anything (cbbg status).
+std::size_t finished_tasks(const std::filesystem::path& tasks, std::size_t count);
+
 // Before a resume or a merge, which ends by removing `tasks`: throws config::ConfigError naming
 // the first entry below it that is not a task file of cbbg's (a user's, to move away).
 void check_own_tasks(const std::filesystem::path& tasks);

@@ -40,6 +40,11 @@ std::vector<BadInput> bad_inputs() {
   const std::string eval = "eval --set plant.kind=analytic --load-weights {S}/w.txt ";
   const std::string graph = "graph --diagram cbbg ";
   const std::string digits309 = "1" + std::string(308, '0');
+  std::string many_centres = "0";
+  for (int c = 1; c < 32; ++c) {
+    many_centres += ',';
+    many_centres += std::to_string(c);
+  }
   return {
       // Keys and values, from --set.
       {quick + "--set critic.gama=0.5", "unknown key 'critic.gama'; did you mean 'critic.gamma'?"},
@@ -115,6 +120,16 @@ std::vector<BadInput> bad_inputs() {
       {quick + "--load-weights {S}/missing.txt", "missing.txt"},
       {quick + "--load-weights {S}/file", "{S}/file"},
       {quick + "--no-such-flag", "--no-such-flag (cbbg --help lists the commands and options)"},
+      {"run --set plant.kind=analytic --experiment evaluate --set arms=[bg_only] --seeds 1 "
+       "--load-weights {S}/w.txt --save-weights {S}/w2.txt --out {S}/out",
+       "--save-weights keeps the weights a run learns; --experiment evaluate learns none (the "
+       "weights it uses are those of --load-weights)"},
+      {quick + "--set normaliser.inputs=pitch_wheels --set rbf.centres=[" + many_centres + "]",
+       "rbf.centres (32 of them) over normaliser.inputs (4 inputs) make 1048576 features per "
+       "learner; a learner holds at most 1000000, what a weights file stores: use fewer "
+       "rbf.centres or normaliser.inputs"},
+      {quick + "--set 'transfer.conditions=[\"evaluation.push_force=1\\nx\"]'",
+       "transfer.conditions[0] must be one line; got 'evaluation.push_force=1?x'"},
       // Config files.
       {quick + "--config {S}/missing.yaml",
        "config file '{S}/missing.yaml' cannot be read (missing or unreadable)"},
@@ -187,15 +202,19 @@ std::vector<BadInput> bad_inputs() {
       {"merge {S}/never", "no sweep at '{S}/never'"},
       {"merge {S}/mine", "no sweep at '{S}/mine'"},
       {"status {S}/never", "no sweep at '{S}/never'"},
-      {"status {S}/learnt", "'{S}/learnt' holds the results of a cbbg run, not of a sweep"},
       {"merge {S}/learnt", "'{S}/learnt' holds the results of a cbbg run, not of a sweep"},
+      {"merge {S}/taken",
+       "'{S}/taken' exists and was not made by cbbg merge; the merged results go there: move "
+       "it away, then merge"},
       {quick + "--config {S}/sweep_key.yaml",
        "sweep_key.yaml: a sweep's key is a key path such "
        "as actor.alpha; got [a, b]"},
       {quick + "--grid 'critic.beta=[0.1'", "'[0.1' is not a YAML value"},
       // Other commands.
       {"list --bogus", "--bogus"},
-      {"frobnicate", "frobnicate"},
+      {"frobnicate", "unknown command 'frobnicate' (cbbg --help lists the commands)"},
+      {"export --help", "unknown command 'export' (cbbg --help lists the commands)"},
+      {"--log-level warn frobnicate --help", "unknown command 'frobnicate'"},
   };
 }
 
@@ -220,10 +239,18 @@ TEST(BadInput, EveryCaseExitsTwoWithOneLineAndLeavesEverythingAsItWas) {
       "--no-figures --out " +
       (scratch / "learnt").string() + " --save-weights " + (scratch / "w.txt").string());
   ASSERT_EQ(learnt.exit_code, 0) << learnt.output;
+  // A sweep whose first shard ran, and a folder of the user's where its merge would publish.
+  const cbbg::testing::Outcome shard = cbbg::testing::cbbg(
+      "--log-level warn run --set plant.kind=analytic --seeds 1 --grid seed=1,2 --shard 1/2 "
+      "--no-figures --out " +
+      (scratch / "taken").string());
+  ASSERT_EQ(shard.exit_code, 0) << shard.output;
+  fs::create_directories(scratch / "taken");
+  std::ofstream(scratch / "taken" / "notes.txt") << "my notes\n";
   const auto before = cbbg::testing::tree_of(scratch);
 
   const std::vector<BadInput> cases = bad_inputs();
-  EXPECT_GE(cases.size(), 60u);
+  ASSERT_EQ(cases.size(), 124u);  // the README counts them: a case dropped shows here
   for (const BadInput& input : cases) {
     const std::string arguments = expand(input.arguments, scratch.string());
     SCOPED_TRACE(arguments);

@@ -4,6 +4,7 @@
 
 #include <sys/mount.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -57,8 +58,18 @@ class Tmpfs {
   bool mounted_ = false;
 };
 
+// The finished task records of a killed run into `out`, with their write times.
+std::map<fs::path, fs::file_time_type> task_records(const std::string& out) {
+  std::map<fs::path, fs::file_time_type> records;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(out + ".partial/tasks", error)) {
+    if (entry.path().extension() == ".run") records[entry.path()] = entry.last_write_time();
+  }
+  return records;
+}
+
 class DataSafety : public ::testing::Test {
- protected:
+ public:
   void SetUp() override {
     scratch_directory_.emplace();
     scratch_ = scratch_directory_->path();
@@ -132,33 +143,64 @@ TEST_F(DataSafety, ReplacingIsExplicitAndNeverTakesAUsersFile) {
   EXPECT_FALSE(fs::exists(out + ".partial"));
 }
 
-TEST_F(DataSafety, AKillAtEveryStepOfACommitResumesToTheSameBytes) {
-  const auto expected = reference();
+// Kills `command` at every step of a task's save and of the commit (replacing earlier
+// results too, when `replacing`), resumes, and expects the bytes of the run never killed.
+void kill_at_every_step(DataSafety& test, const std::string& name, const std::string& command,
+                        bool replacing) {
+  const Outcome whole = run(command + " --out " + test.path(name + "_whole"));
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  const auto expected = tree_of(test.path(name + "_whole"));
   for (const char* step : cbbg::store::kFaultPoints) {
-    for (const bool replacing : {false, true}) {
-      const std::string out = path(std::string("run_") + (replacing ? "r_" : "") + step);
-      if (replacing) {
-        ASSERT_EQ(run(std::string(kQuick) + " --seed 9 --out " + out).exit_code, 0);
+    for (const bool replace : {false, true}) {
+      if (replace && !replacing) continue;
+      const std::string out = test.path(name + (replace ? "_r_" : "_") + step);
+      if (replace) {
+        ASSERT_EQ(run(command + " --seed 9 --out " + out).exit_code, 0);
       }
       const std::string fault = std::string("CBBG_FAULT_AT=") + step +
                                 (std::string(step).rfind("task", 0) == 0 ? "@2" : "");
-      const Outcome killed =
-          run(std::string(kQuick) + (replacing ? " --replace" : "") + " --out " + out, fault);
+      const Outcome killed = run(command + (replace ? " --replace" : "") + " --out " + out, fault);
       ASSERT_EQ(killed.exit_code, cbbg::store::kFaultExitCode) << step << killed.output;
       // Replacing, the target always holds complete results, old or new.
-      if (replacing) {
+      if (replace) {
         EXPECT_TRUE(fs::exists(out / fs::path(".cbbg-results"))) << step;
       }
+      const auto records = task_records(out);
       const Outcome resumed = run("--log-level warn run --resume " + out);
-      ASSERT_EQ(resumed.exit_code, 0) << step << ": " << resumed.output;
-      EXPECT_EQ(tree_of(out), expected) << step << (replacing ? ", replacing" : "");
+      ASSERT_EQ(resumed.exit_code, 0) << name << " " << step << ": " << resumed.output;
+      EXPECT_EQ(tree_of(out), expected) << name << " " << step << (replace ? ", replacing" : "");
       EXPECT_FALSE(fs::exists(out + ".partial")) << step;
+      EXPECT_TRUE(fs::exists(out)) << step;
+      // The resume redid no finished task: their records were not written again.
+      for (const auto& [record, written] : records) {
+        EXPECT_FALSE(fs::exists(record) && fs::last_write_time(record) != written)
+            << name << " " << step << ": " << record << " was written again";
+      }
       const Outcome nothing = run("run --resume " + out);
       EXPECT_EQ(nothing.exit_code, 2) << step;
       EXPECT_THAT(nothing.output,
                   HasSubstr("nothing to resume: '" + out + "' holds finished results"));
     }
   }
+}
+
+TEST_F(DataSafety, AKillAtEveryStepOfACommitResumesToTheSameBytes) {
+  kill_at_every_step(*this, "exp1", kQuick, /*replacing=*/true);
+}
+
+TEST_F(DataSafety, AKillAtEveryStepOfADiagramRunAloneResumesToTheSameBytes) {
+  // The results record the one arm that ran, not the config's arms: nothing the resume
+  // reads may be rewritten on the way.
+  kill_at_every_step(*this, "alone", std::string(kQuick) + " --experiment bg_only", false);
+}
+
+TEST_F(DataSafety, AKillAtEveryStepOfATransferRunResumesToTheSameBytes) {
+  kill_at_every_step(*this, "transfer",
+                     std::string(kQuick) +
+                         " --experiment transfer --set transfer.training=exp1 --set max_trials=10 "
+                         "--set 'transfer.conditions=[evaluation.body_mass_scale=1.3]' "
+                         "--set evaluation.angles=[0.1]",
+                     false);
 }
 
 TEST_F(DataSafety, ALiveRunLocksItsDirectoryAndADeadOneDoesNot) {
@@ -191,10 +233,18 @@ TEST_F(DataSafety, ResumeChecksItsConfigAndGivesOneAdviceForEveryState) {
   const std::string out = path("r");
   const Outcome killed = run(std::string(kQuick) + " --out " + out, "CBBG_FAULT_AT=task:record@2");
   ASSERT_EQ(killed.exit_code, cbbg::store::kFaultExitCode);
-  std::ofstream(out + ".partial/config.yaml", std::ios::app) << "# edited\n";
+  const Outcome status = run("status " + out);
+  EXPECT_EQ(status.exit_code, 0);
+  // The kill at the second record may come before the first is written: 0 or 1 done.
+  EXPECT_THAT(status.output,
+              ::testing::MatchesRegex(out +
+                                      ": interrupted, [01] of 6 task\\(s\\) done; continue it "
+                                      "with cbbg run --resume " +
+                                      out + "\n"));
+  std::ofstream(out + ".partial/run-config.yaml", std::ios::app) << "# edited\n";
   const Outcome edited = run("run --resume " + out);
   EXPECT_EQ(edited.exit_code, 2);
-  EXPECT_THAT(edited.output, HasSubstr("config.yaml' is not the config the run began with"));
+  EXPECT_THAT(edited.output, HasSubstr("run-config.yaml' is not the config the run began with"));
   const Outcome blocked = run(std::string(kQuick) + " --out " + out);
   EXPECT_EQ(blocked.exit_code, 2);
   EXPECT_THAT(blocked.output,
@@ -219,7 +269,8 @@ TEST_F(DataSafety, AFullDiskStopsTheRunWithOneLineAndResumesOnceThereIsRoom) {
   const Outcome full = run(std::string(kQuick) + " --set log.decimation=1 --out " + out);
   EXPECT_EQ(full.exit_code, 1);
   EXPECT_THAT(full.output, HasSubstr("No space left on device"));
-  EXPECT_THAT(full.output, HasSubstr("continue with --resume " + out));
+  EXPECT_THAT(full.output, HasSubstr("continue with cbbg run --resume " + out));
+  EXPECT_EQ(std::count(full.output.begin(), full.output.end(), '\n'), 1) << full.output;
   EXPECT_FALSE(fs::exists(out));
   ASSERT_TRUE(disk.remount("size=64m"));
   const Outcome resumed = run("--log-level warn run --resume " + out);
