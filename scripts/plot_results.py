@@ -1217,7 +1217,10 @@ def main(argv):
         print(f"plot_results.py: error: {error}", file=sys.stderr)
         return 2
     except OSError as error:
-        print(f"plot_results.py: error: cannot write the figures: {error}", file=sys.stderr)
+        # matplotlib writes through a file object: the error may not name the file.
+        where = error.filename or os.path.join(argv[1], "figures")
+        print(f"plot_results.py: error: cannot write '{where}': {error.strerror or error}",
+              file=sys.stderr)
         return 1
     return 0
 

@@ -1,12 +1,16 @@
 #include "cbbg/store/output_guard.h"
 
 #include <signal.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <fstream>
+#include <optional>
+#include <sstream>
 
 #include "cbbg/config/config.h"
 #include "cbbg/config/program_name.h"
@@ -46,6 +50,38 @@ bool process_runs(long long pid) {
   return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
 }
 
+// When process `pid` started, on the clock of file times (Linux /proc/PID/stat, field 22:
+// clock ticks after boot); nullopt when it cannot be read.
+std::optional<fs::file_time_type> process_start(long long pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text;
+  std::getline(stat, text);
+  const auto name_end = text.rfind(')');  // the command's name may hold spaces and ')'
+  if (name_end == std::string::npos) return std::nullopt;
+  std::istringstream fields(text.substr(name_end + 1));
+  std::string skipped;
+  for (int field = 3; field < 22; ++field) fields >> skipped;
+  long long ticks = 0;
+  timespec boot{};
+  if (!(fields >> ticks) || ::clock_gettime(CLOCK_BOOTTIME, &boot) != 0) return std::nullopt;
+  const double running = static_cast<double>(boot.tv_sec) +
+                         1e-9 * static_cast<double>(boot.tv_nsec) -
+                         static_cast<double>(ticks) / static_cast<double>(::sysconf(_SC_CLK_TCK));
+  return fs::file_time_type::clock::now() -
+         std::chrono::duration_cast<fs::file_time_type::duration>(
+             std::chrono::duration<double>(running));
+}
+
+// Whether the writer `pid` of the temporary `path` is gone: it runs no more, or the process
+// that has its pid now started after the temporary was last written (the pid was reused).
+bool writer_gone(long long pid, const fs::path& path) {
+  if (!process_runs(pid)) return true;
+  std::error_code error;
+  const auto written = fs::last_write_time(path, error);
+  const auto started = process_start(pid);
+  return !error && started && *started > written + std::chrono::seconds(1);
+}
+
 }  // namespace
 
 fs::path temporary_beside(const fs::path& path) {
@@ -78,7 +114,8 @@ bool is_stale_temporary(const fs::path& name) {
   const auto before = rest.rfind('-', last - 1);
   if (before == std::string::npos) return false;
   const std::string pid = rest.substr(before + 1, last - before - 1);
-  return rest.substr(0, before) == host_name() && all_digits(pid) && !process_runs(std::stoll(pid));
+  return rest.substr(0, before) == host_name() && all_digits(pid) &&
+         writer_gone(std::stoll(pid), name);
 }
 
 int remove_temporaries(const fs::path& directory, Leftovers which) {
@@ -104,7 +141,7 @@ void remove_stale_staging(const fs::path& path) {
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(parent, error)) {
     const std::string name = entry.path().filename().string();
-    if (name.rfind(prefix, 0) == 0 && is_stale_temporary(name)) remove_tree(entry.path());
+    if (name.rfind(prefix, 0) == 0 && is_stale_temporary(entry.path())) remove_tree(entry.path());
   }
 }
 

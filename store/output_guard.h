@@ -34,7 +34,8 @@ std::filesystem::path temporary_beside(const std::filesystem::path& path);
 // Whether `name` is one of cbbg's temporaries (also the NAME.tmp-PID-N of earlier versions).
 bool is_temporary(const std::filesystem::path& name);
 // Whether `name` is a temporary whose writer is gone: made on this host by a process that no
-// longer runs (another host's are never judged stale).
+// longer runs, or whose pid a process started after the temporary was last written has
+// taken (another host's are never judged stale). `name` is a path, for its write time.
 bool is_stale_temporary(const std::filesystem::path& name);
 
 enum class Leftovers { kAll, kStale };

@@ -91,6 +91,23 @@ class PlotResults(unittest.TestCase):
 
     # ------------------------------------------------------------ whole runs
 
+    def test_a_full_disk_names_the_path_and_the_reason_on_one_line(self):
+        import contextlib
+        import io
+        original = plot_results.run
+        def full(_directory):
+            raise OSError(28, "No space left on device")  # as savefig raises it: no filename
+        plot_results.run = full
+        stderr = io.StringIO()
+        try:
+            with contextlib.redirect_stderr(stderr):
+                status = plot_results.main(["plot_results.py", "/data/results"])
+        finally:
+            plot_results.run = original
+        self.assertEqual(status, 1)
+        self.assertEqual(stderr.getvalue(), "plot_results.py: error: cannot write "
+                         "'/data/results/figures': No space left on device\n")
+
     def test_exp1_writes_every_figure(self):
         results = os.path.join(self.root, "exp1")
         make_fixtures.make_exp1(results)

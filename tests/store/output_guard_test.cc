@@ -9,6 +9,8 @@
 #include <sys/un.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -56,6 +58,17 @@ TEST(OutputGuard, OnlyTheTemporariesOfAGoneWriterOnThisHostAreStale) {
   EXPECT_TRUE(is_stale_temporary(".a.cbbg-tmp-" + host() + "-999999999-0"));      // gone
   EXPECT_FALSE(is_stale_temporary(".a.cbbg-tmp-other-host-999999999-0"));         // elsewhere
   EXPECT_FALSE(is_stale_temporary("a.json"));
+}
+
+TEST(OutputGuard, ATemporaryWrittenBeforeItsPidsProcessStartedIsStale) {
+  // A killed writer's pid taken by a newer process: the temporary is older than that process.
+  testing::ScratchDirectory scratch;
+  const fs::path temporary =
+      scratch.path() / (".a.cbbg-tmp-" + host() + "-" + std::to_string(::getpid()) + "-0");
+  touch(temporary);
+  EXPECT_FALSE(is_stale_temporary(temporary));  // written by this process, which runs
+  fs::last_write_time(temporary, fs::last_write_time(temporary) - std::chrono::hours(24 * 3650));
+  EXPECT_TRUE(is_stale_temporary(temporary));  // written ten years before this process began
 }
 
 TEST(OutputGuard, RemovesItsTemporariesAndNothingElse) {
