@@ -2,6 +2,8 @@
 
 #include <atomic>
 #include <cerrno>
+#include <chrono>
+#include <condition_variable>
 #include <cstring>
 #include <exception>
 #include <fstream>
@@ -11,6 +13,7 @@
 #include <thread>
 
 #include "cbbg/config/parameters.h"
+#include "cbbg/framework/interrupt.h"
 
 namespace cbbg::experiments {
 namespace {
@@ -78,7 +81,16 @@ ExperimentResults run_tasks(const config::Parameters& parameters,
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
+  const auto fail = [&]() {  // in a catch block
+    const std::lock_guard<std::mutex> lock(failure_mutex);
+    if (!failure) failure = std::current_exception();
+    next = results.runs.size();  // stop handing out tasks
+  };
+  // An interrupt (Ctrl-C in Python, framework/interrupt.h) in one thread stops the others'
+  // simulations at their next instant, not only their next tasks.
+  InterruptGroup interrupts;
   auto work = [&]() {
+    const InterruptGroup::Membership member(interrupts);
     for (std::size_t task = next++; task < results.runs.size(); task = next++) {
       if (options.runs_task && !options.runs_task(task)) continue;
       try {
@@ -88,15 +100,37 @@ ExperimentResults run_tasks(const config::Parameters& parameters,
         }
         if (options.progress) options.progress(run);
       } catch (...) {
-        const std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next = results.runs.size();  // stop handing out tasks
+        fail();
       }
     }
   };
+  std::mutex done_mutex;
+  std::condition_variable done;
+  int running = std::max(options.jobs, 1) - 1;
   std::vector<std::thread> workers;
-  for (int j = 1; j < std::max(options.jobs, 1); ++j) workers.emplace_back(work);
+  for (int j = 1; j < std::max(options.jobs, 1); ++j) {
+    workers.emplace_back([&]() {
+      work();
+      const std::lock_guard<std::mutex> lock(done_mutex);
+      --running;
+      done.notify_one();
+    });
+  }
   work();
+  {
+    // Its own tasks done, this thread checks for interrupts while the workers finish theirs.
+    const InterruptGroup::Membership member(interrupts);
+    std::unique_lock<std::mutex> lock(done_mutex);
+    while (!done.wait_for(lock, std::chrono::milliseconds(10), [&] { return running == 0; })) {
+      lock.unlock();
+      try {
+        check_interrupt();
+      } catch (...) {
+        fail();
+      }
+      lock.lock();
+    }
+  }
   for (auto& worker : workers) worker.join();
   if (failure) std::rethrow_exception(failure);
   return results;

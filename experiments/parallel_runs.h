@@ -47,7 +47,8 @@ using TaskBody = std::function<void(SeedRun& run, const TelemetryOptions& teleme
 
 // Results for every arm of `arms` and every seed of the parameters (seed, seed + 1, ...,
 // `seeds` of them), each task run by `body` in `options.jobs` threads. The first task to
-// throw stops the others from starting and is rethrown.
+// throw stops the others from starting and is rethrown; an interrupt (Ctrl-C in Python,
+// framework/interrupt.h) stops the running ones too, at their simulations' next instant.
 ExperimentResults run_tasks(const config::Parameters& parameters,
                             const std::vector<std::string>& arms, const TaskBody& body,
                             const ExperimentOptions& options);

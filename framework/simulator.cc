@@ -7,6 +7,7 @@
 #include <boost/numeric/odeint.hpp>
 
 #include "cbbg/framework/block_context.h"
+#include "cbbg/framework/interrupt.h"
 
 namespace cbbg {
 namespace odeint = boost::numeric::odeint;
@@ -251,6 +252,7 @@ SimulationStatus Simulator::advance_to(double end_time) {
   }
   Context& context = *context_;
   while (!terminated_ && context.time() < end_time) {
+    poll_interrupt();  // between instants: what it throws leaves the simulation consistent
     const double event_time = next_event_;
     if (same_instant(event_time, context.time())) {
       context.set_time(event_time);

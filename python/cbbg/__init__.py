@@ -29,13 +29,27 @@ def _yaml(value):
     return json.dumps(value, default=lambda o: o.tolist() if hasattr(o, "tolist") else str(o))
 
 
-def _assignments(settings, prefix=""):
-    """(key.path, value) of a dict, nested sections ({"plant": {"kind": ...}}) flattened."""
+def _sections():
+    """Every section of the config tree, built-in and registered: "plant", "evaluation", ..."""
+    sections = set()
+    for spec in schema():  # noqa: F405
+        parts = spec.path.split(".")
+        sections.update(".".join(parts[:i]) for i in range(1, len(parts)))
+    return sections
+
+
+def _assignments(settings, prefix="", sections=None):
+    """(key.path, value) of a dict, nested sections ({"plant": {"kind": ...}}) flattened. A
+    dict under anything but a section ({"critic.beta": {}}) stays a value, which the config
+    refuses as the command line does."""
+    if sections is None:
+        sections = _sections()
     for key, value in settings.items():
-        if isinstance(value, dict):
-            yield from _assignments(value, f"{prefix}{key}.")
+        path = f"{prefix}{key}"
+        if isinstance(value, dict) and path in sections:
+            yield from _assignments(value, f"{path}.", sections)
         else:
-            yield f"{prefix}{key}", value
+            yield path, value
 
 
 class Config(_cbbg.Config):

@@ -12,6 +12,7 @@
 #include "cbbg/diagrams/arms.h"
 #include "cbbg/diagrams/presets.h"
 #include "cbbg/diagrams/validated_parameters.h"
+#include "python_errors.h"
 #include "python_factories.h"
 
 namespace cbbg::python {
@@ -191,8 +192,10 @@ PythonChange change_from(py::object change) {
   SharedPythonObject callable(std::move(change));
   return [callable](config::Parameters& p, diagrams::RobotChange what, double factor) {
     py::gil_scoped_acquire gil;
-    py::object settings = py::reinterpret_borrow<py::object>(callable.get())(
-        copy_of(p), diagrams::change_key(what), factor);
+    py::object settings = calling_python([&] {
+      return py::reinterpret_borrow<py::object>(callable.get())(copy_of(p),
+                                                                diagrams::change_key(what), factor);
+    });
     if (settings.is_none()) return false;
     config::Config config;
     config::write_parameters(p, config);

@@ -24,19 +24,36 @@ py::dict info_dict(const environment::Info& info) {
   return dict;
 }
 
-// An action as Gymnasium gives it: a number, or an array of one.
+// An action as Gymnasium gives it: a real number, or an array of one. A complex number, a
+// text or an object is refused (TypeError), not converted: NumPy would drop an imaginary part
+// and parse a text.
 double action_of(py::handle action) {
   if (py::isinstance<py::float_>(action) || py::isinstance<py::int_>(action)) {
     return action.cast<double>();
   }
-  const auto array = py::array_t<double, py::array::forcecast>::ensure(action);
-  if (!array || array.size() != 1) {
+  const bool is_array = py::isinstance<py::array>(action);
+  if (!is_array && py::isinstance(action, py::module_::import("numbers").attr("Real"))) {
+    return action.cast<double>();  // NumPy's real scalars, Fraction: through __float__
+  }
+  const auto refused = [&action, is_array](const py::handle& dtype) {
+    const std::string what = is_array ? "an array of " + std::string(py::str(dtype))
+                                      : std::string(py::str(py::type::of(action).attr("__name__")));
+    return py::type_error(
+        "step: the action is one torque, N m: a real number or an array of one real number; "
+        "got " +
+        what + " " + std::string(py::str(py::repr(action))));
+  };
+  const auto array = py::array::ensure(action);
+  if (!array) throw refused(py::none());
+  const char kind = array.dtype().kind();  // b: bool, i and u: integers, f: floats
+  if (kind != 'b' && kind != 'i' && kind != 'u' && kind != 'f') throw refused(array.dtype());
+  if (array.size() != 1) {
     throw std::invalid_argument(
         "step: the action is one torque, N m: a number or an array of "
         "one element; got " +
         std::string(py::str(py::repr(action))));
   }
-  return *array.data();
+  return *py::array_t<double, py::array::forcecast>::ensure(array).data();
 }
 
 }  // namespace

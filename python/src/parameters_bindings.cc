@@ -58,8 +58,31 @@ config::KeySpec key_spec(config::Kind kind, config::Value default_value, std::st
                          .list_size = list_size};
 }
 
-// `keys`: {key: KeySpec}, in the order the section lists them.
-void register_section(const std::string& name, const py::dict& keys) {
+// The check of section `name` in Python: check({key: value}) raising an Exception refuses
+// the values, its message the refusal's (a KeyboardInterrupt stays one).
+config::SectionCheck python_check(const std::string& name, const py::object& check) {
+  // Kept for the process's life: the registry outlives the interpreter, which must not
+  // release it after finalising.
+  const auto* held = new py::object(check);
+  return [name, held](const config::OwnSections& own) {
+    py::gil_scoped_acquire gil;
+    py::dict values;
+    const std::string prefix = name + ".";
+    for (const auto& [key, value] : own.values) {
+      if (key.starts_with(prefix)) values[py::str(key.substr(prefix.size()))] = py::cast(value);
+    }
+    try {
+      (*held)(values);
+    } catch (py::error_already_set& error) {
+      if (!error.matches(PyExc_Exception)) throw;
+      throw config::ConfigError(py::str(error.value()).cast<std::string>());
+    }
+  };
+}
+
+// `keys`: {key: KeySpec}, in the order the section lists them; `check`, if not None, is
+// called with the section's values at the edge of every run.
+void register_section(const std::string& name, const py::dict& keys, const py::object& check) {
   if (!config::is_name(name)) {
     throw std::invalid_argument("section '" + name + "': a name is " + config::kNameRule);
   }
@@ -69,6 +92,7 @@ void register_section(const std::string& name, const py::dict& keys) {
     specs.back().path = name + "." + key.cast<std::string>();
   }
   config::register_keys(std::move(specs));
+  if (!check.is_none()) config::register_section_check(name, python_check(name, check));
 }
 
 void bind_key_specs(py::module_& m) {
@@ -129,8 +153,11 @@ void bind_key_specs(py::module_& m) {
       py::arg("default"), py::arg("meaning"), py::arg("choices") = std::vector<std::string>{},
       "A text key of a user's section; `choices`, when given, are the words it allows.");
   m.def("register_section", &register_section, py::arg("name"), py::arg("keys"),
+        py::arg("check") = py::none(),
         "Adds a section of the user's, {key: number_key(...), ...}, to every config made after: "
-        "settable from dicts, files and --set, read from parameters[\"name.key\"].");
+        "settable from dicts, files and --set, read from parameters[\"name.key\"]. `check`, "
+        "if given, is called with the section's values ({key: value}) before any run and "
+        "refuses them by raising an exception, its message the error's.");
   m.def("schema", &config::schema, "Every key of the config tree, built-in and registered.");
 }
 

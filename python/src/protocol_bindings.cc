@@ -19,6 +19,7 @@
 #include "cbbg/experiments/transfer.h"
 #include "cbbg/store/weights_file.h"
 #include "ownership.h"
+#include "python_errors.h"
 #include "python_factories.h"
 
 namespace cbbg::python {
@@ -27,6 +28,15 @@ namespace {
 using experiments::ExperimentOptions;
 using experiments::ExperimentResults;
 using experiments::LearntWeights;
+
+// Throws IndexError unless 0 <= index < count, naming the argument and the range.
+void check_index(const char* function, const char* argument, long long index, std::size_t count,
+                 const char* of) {
+  if (index >= 0 && static_cast<std::size_t>(index) < count) return;
+  throw py::index_error(std::string(function) + ": " + argument + " must be in [0, " +
+                        std::to_string(count) + ") (an index of " + of + "); got " +
+                        std::to_string(index));
+}
 
 ExperimentOptions options_of(int jobs, const LearntWeights* initial_weights) {
   ExperimentOptions options;
@@ -101,8 +111,19 @@ void bind_results(py::module_& m) {
       .def_readonly("arms", &ExperimentResults::arms)
       .def_readonly("seeds", &ExperimentResults::seeds)
       .def_readonly("runs", &ExperimentResults::runs)
-      .def("run", &ExperimentResults::run, py::arg("arm"), py::arg("seed"),
-           py::return_value_policy::reference_internal, "By index: runs[arm * len(seeds) + seed].");
+      .def(
+          "run",
+          [](const ExperimentResults& results, long long arm,
+             long long seed_index) -> const experiments::SeedRun& {
+            check_index("ExperimentResults.run", "arm", arm, results.arms.size(), "arms");
+            check_index("ExperimentResults.run", "seed_index", seed_index, results.seeds.size(),
+                        "seeds");
+            // runs holds every (arm, seed): C++ makes it so, and Python cannot change it.
+            return results.run(static_cast<std::size_t>(arm), static_cast<std::size_t>(seed_index));
+          },
+          py::arg("arm"), py::arg("seed_index"), py::return_value_policy::reference_internal,
+          "The run of arms[arm] and seeds[seed_index] (indices, not a seed itself): "
+          "runs[arm * len(seeds) + seed_index]. IndexError outside the lists.");
 }
 
 void bind_runs(py::module_& m) {
@@ -142,33 +163,60 @@ void bind_runs(py::module_& m) {
       py::call_guard<py::gil_scoped_release>());
 }
 
+// The SeedLoop a per-seed body in Python is given, usable during its call only: its trials
+// write into the task's files, which are closed once the call returns.
+struct SeedLoopHandle {
+  std::shared_ptr<experiments::SeedLoop> loop;
+  std::shared_ptr<bool> live = std::make_shared<bool>(true);
+
+  experiments::SeedLoop& checked() const {
+    if (!*live) {
+      throw std::runtime_error(
+          "SeedLoop: its per-seed call has returned; keep the records its trials gave, not "
+          "the loop");
+    }
+    return *loop;
+  }
+};
+
 // A per-seed body written in Python: per_seed(parameters, arm, seed_run, kit) fills seed_run.
 experiments::PerSeed per_seed_from(py::object per_seed) {
   SharedPythonObject callable(std::move(per_seed));
   return [callable](const config::Parameters& p, const diagrams::Arm& arm,
                     const experiments::TelemetryOptions& telemetry,
                     const LearntWeights* initial_weights, experiments::SeedRun& run) {
-    experiments::SeedLoop seed_loop(p, arm, telemetry, initial_weights, run.seed);
+    // Python gets its own copies of the arm and the run (copied back when the call returns)
+    // and a handle of the loop that refuses use after it: nothing it keeps dangles.
+    const SeedLoopHandle kit{
+        std::make_shared<experiments::SeedLoop>(p, arm, telemetry, initial_weights, run.seed)};
     {
       py::gil_scoped_acquire gil;
-      py::reinterpret_borrow<py::object>(callable.get())(
-          copy_of(p), py::cast(&arm, py::return_value_policy::reference),
-          py::cast(&run, py::return_value_policy::reference),
-          py::cast(&seed_loop, py::return_value_policy::reference));
+      const py::object run_object = py::cast(run);
+      const py::object kit_object = py::cast(kit);
+      struct Expiry {
+        const SeedLoopHandle& kit;
+        ~Expiry() { *kit.live = false; }
+      } expiry{kit};
+      calling_python([&] {
+        return py::reinterpret_borrow<py::object>(callable.get())(copy_of(p), py::cast(arm),
+                                                                  run_object, kit_object);
+      });
+      run = run_object.cast<experiments::SeedRun>();
     }
-    experiments::finish_run(p, arm, seed_loop.loop, seed_loop.runner.context(), run);
+    experiments::finish_run(p, arm, kit.loop->loop, kit.loop->runner.context(), run);
   };
 }
 
 void bind_kit(py::module_& m) {
-  py::class_<experiments::SeedLoop>(
+  py::class_<SeedLoopHandle>(
       m, "SeedLoop",
       "One seed of an arm: its learning closed loop and the runner of its trials. Valid during "
-      "the per-seed call only.")
+      "the per-seed call only: after it, its methods raise RuntimeError.")
       .def(
           "trial",
-          [](experiments::SeedLoop& loop, const config::Parameters& p, int trial,
+          [](const SeedLoopHandle& kit, const config::Parameters& p, int trial,
              std::optional<double> theta0) {
+            experiments::SeedLoop& loop = kit.checked();
             return theta0 ? experiments::next_trial(p, loop.runner, trial, *theta0)
                           : experiments::next_trial(p, loop.runner, trial);
           },
@@ -176,7 +224,8 @@ void bind_kit(py::module_& m) {
           py::call_guard<py::gil_scoped_release>(),
           "Runs trial number `trial` from trial.theta0 (or theta0) and returns its record.")
       .def_property_readonly(
-          "context", [](experiments::SeedLoop& loop) -> Context& { return loop.runner.context(); },
+          "context",
+          [](const SeedLoopHandle& kit) -> Context& { return kit.checked().runner.context(); },
           py::return_value_policy::reference_internal);
   m.def(
       "register_protocol",
@@ -209,6 +258,18 @@ void bind_kit(py::module_& m) {
   m.def("protocol_names", [] { return names_of(experiments::protocols()); });
 }
 
+// The command line reads C strings, which a NUL ends: an argument holding one would be read
+// cut short (results written to "x" for "x\0y"). Throws ValueError naming it.
+void check_no_nul(const std::vector<std::string>& args) {
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i].find('\0') == std::string::npos) continue;
+    std::string shown;
+    for (const char c : args[i]) shown += c == '\0' ? std::string("\\0") : std::string(1, c);
+    throw std::invalid_argument("cbbg.main: args[" + std::to_string(i) + "] '" + shown +
+                                "' contains a NUL character; an argument is text without NUL");
+  }
+}
+
 }  // namespace
 
 void bind_protocols(py::module_& m) {
@@ -219,6 +280,7 @@ void bind_protocols(py::module_& m) {
   m.def(
       "cli",
       [](std::vector<std::string> args, const std::filesystem::path& share) {
+        check_no_nul(args);
         args.insert(args.begin(), "cbbg");
         std::vector<char*> argv;
         for (std::string& arg : args) argv.push_back(arg.data());

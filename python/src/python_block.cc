@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "event_reasons.h"
+#include "python_errors.h"
 
 namespace cbbg::python {
 namespace {
@@ -49,9 +50,15 @@ EventStatus event_status_of(const py::object& result, const Block& block, const 
 
 }  // namespace
 
+void CallContext::expire(bool kept) {
+  if (kept) path_ = block_->path();
+  block_ = nullptr;
+  context_ = nullptr;
+}
+
 BlockContext& CallContext::context() const {
   if (context_ == nullptr) {
-    throw std::logic_error("block '" + block_->path() +
+    throw std::logic_error("block '" + path_ +
                            "': a context is valid only during the call it was given to");
   }
   return *context_;
@@ -64,19 +71,24 @@ void CallContext::check_own(const Port& port) const {
   }
 }
 
+// Each method asks for context() first: once the call has returned, the block, its ports
+// and the context may all be gone.
 py::array_t<double> CallContext::input(const InputPort& port) const {
+  const BlockContext& live = context();
   check_own(port);
-  const ConstVectorView value = context().input(port);
+  const ConstVectorView value = live.input(port);
   return copy_of(value.data(), value.size());
 }
 
 py::array_t<double> CallContext::input_named(const std::string& name) const {
+  context();
   return input(block_->input_port(name));
 }
 
 py::array_t<double> CallContext::output(const OutputPort& port) const {
+  const BlockContext& live = context();
   check_own(port);
-  const ConstVectorView value = context().output(port);
+  const ConstVectorView value = live.output(port);
   return copy_of(value.data(), value.size());
 }
 
@@ -86,8 +98,8 @@ py::array_t<double> CallContext::discrete_state() const {
 }
 
 py::array_t<double> CallContext::state_part(const std::string& name) const {
-  const StatePart& part = block_->discrete_state_part(name);
   const ConstVectorView state = context().discrete_state();
+  const StatePart& part = block_->discrete_state_part(name);
   return copy_of(state.data() + part.offset, part.size);
 }
 
@@ -97,17 +109,19 @@ py::array_t<double> CallContext::continuous_state() const {
 }
 
 py::array_t<double> CallContext::parameter(const std::string& name) const {
-  const ConstVectorView value = context().parameter(block_->parameter_index(name));
+  const BlockContext& live = context();
+  const ConstVectorView value = live.parameter(block_->parameter_index(name));
   return copy_of(value.data(), value.size());
 }
 
 RandomGenerator& CallContext::generator() const {
+  BlockContext& live = context();
   if (!may_draw_) {
     throw std::logic_error("block '" + block_->path() +
                            "': only an update draws random numbers (outputs must not change "
                            "the generator)");
   }
-  return context().random_generator();
+  return live.random_generator();
 }
 
 double CallContext::random_normal() { return draw_standard_normal(generator()); }
@@ -129,18 +143,53 @@ BlockCallable::BlockCallable(const Block& block, py::object callable, std::strin
   }
 }
 
+namespace {
+
+// Expires a CallContext when the call returns or throws. Python holds it still where its
+// count is above this one (kept by the callable, or by the frames of a traceback).
+class Expiry {
+ public:
+  explicit Expiry(const std::shared_ptr<CallContext>& context) : context_(context) {}
+  ~Expiry() { context_->expire(context_.use_count() > 1); }
+  Expiry(const Expiry&) = delete;
+  Expiry& operator=(const Expiry&) = delete;
+
+ private:
+  const std::shared_ptr<CallContext>& context_;
+};
+
+}  // namespace
+
 py::object BlockCallable::operator()(BlockContext& context, py::array_t<double>& array,
                                      bool may_draw) const {
-  auto call_context = std::make_shared<CallContext>(*block_, context, may_draw);
+  const auto call_context = std::make_shared<CallContext>(*block_, context, may_draw);
+  const Expiry expiry(call_context);
   try {
-    py::object result = method_ ? function_(python_object_of(*block_), call_context, array)
-                                : function_(call_context, array);
-    call_context->expire();
-    return result;
-  } catch (py::error_already_set& error) {
-    call_context->expire();
-    throw BlockCallbackError(describe_block(*block_) + ", " + role_ + ": " + error.what());
+    return method_ ? function_(python_object_of(*block_), call_context, array)
+                   : function_(call_context, array);
+  } catch (const py::error_already_set& error) {
+    throw_if_interrupt(error);  // KeyboardInterrupt, SystemExit: as they are
+    throw BlockCallbackError(
+        describe_block(*block_) + ", " + role_ + ": " + python_error_text(error), error);
   }
+}
+
+void raise_block_error(py::handle type, const BlockCallbackError& error) {
+  PyErr_SetString(type.ptr(), error.what());
+  const py::error_already_set* cause = error.cause();
+  if (cause == nullptr) return;
+  // As `raise BlockError(...) from cause` does: the cause with its traceback, the new
+  // exception's __cause__ (and __context__).
+  PyObject* raised_type = nullptr;
+  PyObject* raised = nullptr;
+  PyObject* trace = nullptr;
+  PyErr_Fetch(&raised_type, &raised, &trace);
+  PyErr_NormalizeException(&raised_type, &raised, &trace);
+  const py::object value = cause->value();
+  if (cause->trace()) PyException_SetTraceback(value.ptr(), cause->trace().ptr());
+  PyException_SetCause(raised, value.inc_ref().ptr());  // each steals a reference
+  PyException_SetContext(raised, value.inc_ref().ptr());
+  PyErr_Restore(raised_type, raised, trace);
 }
 
 py::object python_object_of(const Block& block) {
@@ -217,18 +266,33 @@ template class PythonBlock<plant::RobotPlant>;
 void PythonRobotPlant::reset(Context& context, double initial_pitch) const {
   try {
     PYBIND11_OVERRIDE_PURE(void, plant::RobotPlant, reset, &context, initial_pitch);
-  } catch (py::error_already_set& error) {
-    py::gil_scoped_acquire gil;
-    throw BlockCallbackError(describe_block(*this) + ", its reset: " + error.what());
+  } catch (const py::error_already_set& error) {
+    const py::gil_scoped_acquire gil;
+    throw_if_interrupt(error);
+    throw BlockCallbackError(describe_block(*this) + ", its reset: " + python_error_text(error),
+                             error);
   }
 }
 
+// An exception of signals() or wheel_radius() crosses as it is, an interrupt as one.
 std::vector<std::string> PythonRobotPlant::signals() const {
-  PYBIND11_OVERRIDE(std::vector<std::string>, plant::RobotPlant, signals, );
+  try {
+    PYBIND11_OVERRIDE(std::vector<std::string>, plant::RobotPlant, signals, );
+  } catch (const py::error_already_set& error) {
+    const py::gil_scoped_acquire gil;
+    throw_if_interrupt(error);
+    throw;
+  }
 }
 
 double PythonRobotPlant::wheel_radius() const {
-  PYBIND11_OVERRIDE(double, plant::RobotPlant, wheel_radius, );
+  try {
+    PYBIND11_OVERRIDE(double, plant::RobotPlant, wheel_radius, );
+  } catch (const py::error_already_set& error) {
+    const py::gil_scoped_acquire gil;
+    throw_if_interrupt(error);
+    throw;
+  }
 }
 
 }  // namespace cbbg::python

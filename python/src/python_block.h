@@ -14,6 +14,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,13 +29,25 @@ namespace py = pybind11;
 
 // An exception a Python block raised, or a callable's bad return, while the library ran it:
 // the message names the block's path, its type and the callable ("its output 'action'").
+// Python sees it as cbbg.BlockError, the exception the block raised as its __cause__.
 class BlockCallbackError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  BlockCallbackError(const std::string& message, const py::error_already_set& cause)
+      : std::runtime_error(message), cause_(std::make_shared<py::error_already_set>(cause)) {}
+  // The Python exception behind it, or null (a bad return).
+  const py::error_already_set* cause() const { return cause_.get(); }
+
+ private:
+  std::shared_ptr<const py::error_already_set> cause_;  // shared: copies need no GIL
 };
 
+// Raises `error` in Python as an exception of `type` (cbbg.BlockError), from its cause.
+void raise_block_error(py::handle type, const BlockCallbackError& error);
+
 // The view of one leaf's context a Python callable gets; every method throws once the call
-// has returned.
+// has returned (std::logic_error: RuntimeError), without touching the block or the context,
+// which may be gone by then.
 class CallContext {
  public:
   CallContext(const Block& block, BlockContext& context, bool may_draw)
@@ -51,18 +64,21 @@ class CallContext {
   double random_normal();
   double random_uniform();
 
-  // Called when the callable returns.
-  void expire() { context_ = nullptr; }
+  // Called when the callable returns; `kept`: Python holds it still, so it keeps the block's
+  // path for its message.
+  void expire(bool kept);
 
  private:
+  // The context during the call; throws afterwards.
   BlockContext& context() const;
   void check_own(const Port& port) const;
   // The block's generator, for an update; throws for an output or derivatives.
   RandomGenerator& generator() const;
 
-  const Block* block_;
-  BlockContext* context_;
-  bool may_draw_;  // updates only: outputs and derivatives must not change a generator
+  const Block* block_;     // null once expired
+  BlockContext* context_;  // null once expired
+  std::string path_;       // the block's, once expired
+  bool may_draw_;          // updates only: outputs and derivatives must not change a generator
 };
 
 // A callable a block declared, kept unbound when it is one of the block's own methods.

@@ -2,6 +2,8 @@
 
 #include <pybind11/functional.h>
 
+#include "python_errors.h"
+
 namespace cbbg::python {
 namespace {
 
@@ -49,20 +51,23 @@ py::object copy_of(const config::Parameters& parameters) {
 std::shared_ptr<Block> PythonBlockFactory::operator()(const std::string& name,
                                                       const config::Parameters& p) const {
   py::gil_scoped_acquire gil;
-  py::object block = py::reinterpret_borrow<py::object>(callable.get())(name, copy_of(p));
+  py::object block = calling_python(
+      [&] { return py::reinterpret_borrow<py::object>(callable.get())(name, copy_of(p)); });
   return shared_from_python<Block>(block, "the factory of slot '" + name + "'");
 }
 
 std::shared_ptr<plant::RobotPlant> PythonPlantFactory::operator()(
     const std::string& name, const config::Parameters& p) const {
   py::gil_scoped_acquire gil;
-  py::object plant = py::reinterpret_borrow<py::object>(callable.get())(name, copy_of(p));
+  py::object plant = calling_python(
+      [&] { return py::reinterpret_borrow<py::object>(callable.get())(name, copy_of(p)); });
   return shared_from_python<plant::RobotPlant>(plant, "the plant factory");
 }
 
 std::shared_ptr<Diagram> PythonControllerFactory::operator()(const config::Parameters& p) const {
   py::gil_scoped_acquire gil;
-  py::object controller = py::reinterpret_borrow<py::object>(callable.get())(copy_of(p));
+  py::object controller = calling_python(
+      [&] { return py::reinterpret_borrow<py::object>(callable.get())(copy_of(p)); });
   return shared_from_python<Diagram>(controller, "the controller factory");
 }
 

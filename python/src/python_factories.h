@@ -2,7 +2,7 @@
 // Python callables as the library's factories (a slot's block, a plant, a controller, a closed
 // loop): each call takes the GIL, hands Python a copy of the parameters (nothing it keeps
 // reaches the caller's), and shares the block Python returns (ownership.h). A Python exception
-// crosses back unchanged.
+// crosses back unchanged; KeyboardInterrupt and SystemExit as PythonInterrupt (python_errors.h).
 
 #include <pybind11/pybind11.h>
 

@@ -1,5 +1,7 @@
 """The Gymnasium-style environment: its rollouts are the library's trials."""
 
+from fractions import Fraction
+
 import numpy as np
 import pytest
 
@@ -87,6 +89,33 @@ def test_the_spaces_and_the_episode_end():
         env.step(float("nan"))
     with pytest.raises(ValueError, match="the action is one torque"):
         env.step([1.0, 2.0])
+
+
+@pytest.mark.parametrize("action, what", [
+    (1 + 2j, "complex (1+2j)"),
+    (np.complex128(0.5), "complex128 (0.5+0j)"),
+    (np.array([0.5 + 0j]), "an array of complex128 array([0.5+0.j])"),
+    ("0.5", "str '0.5'"),
+    ([0.5j], "list [0.5j]"),
+    (None, "NoneType None"),
+])
+def test_an_action_that_is_no_real_number_is_refused_not_converted(action, what):
+    env = cbbg.BalanceEnv({"plant.kind": "analytic"})
+    env.reset(seed=1)
+    with pytest.raises(TypeError) as error:
+        env.step(action)
+    assert str(error.value) == ("step: the action is one torque, N m: a real number or an array "
+                                f"of one real number; got {what}")
+
+
+def test_real_actions_of_every_kind_step():
+    env = cbbg.BalanceEnv({"plant.kind": "analytic"})
+    observations = []
+    for action in (0.5, np.float32(0.5), np.array([0.5]), [0.5], Fraction(1, 2)):
+        env.reset(seed=1, options={"initial_pitch": 0.1})
+        observations.append(env.step(action)[0])
+    for observation in observations[1:]:
+        np.testing.assert_array_equal(observation, observations[0])
 
 
 def test_the_same_seed_gives_the_same_episode():

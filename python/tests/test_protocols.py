@@ -7,8 +7,69 @@ import numpy as np
 import pytest
 
 import cbbg
+from in_subprocess import run_python
 
 QUICK = {"plant.kind": "analytic", "seeds": 2, "max_trials": 5}
+
+# Indices outside the lists, in a subprocess, as they once crashed the interpreter (or read
+# memory past the runs).
+RUN_OUT_OF_RANGE = """
+import cbbg
+
+results = cbbg.run_experiment(cbbg.parameters(
+    {"plant.kind": "analytic", "seeds": 2, "seed": 1, "max_trials": 2, "experiment": "cbbg"}))
+assert results.arms == ["cbbg"] and results.seeds == [1, 2]
+for arm, seed_index in ((0, 2), (1, 0), (-1, 0), (0, -1)):
+    try:
+        results.run(arm, seed_index)
+        print("no error")
+    except IndexError as error:
+        print(error)
+print(results.run(arm=0, seed_index=1).seed)
+"""
+
+
+def test_run_takes_indices_and_refuses_those_outside_the_arms_and_seeds():
+    done = run_python(RUN_OUT_OF_RANGE)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines() == [
+        "ExperimentResults.run: seed_index must be in [0, 2) (an index of seeds); got 2",
+        "ExperimentResults.run: arm must be in [0, 1) (an index of arms); got 1",
+        "ExperimentResults.run: arm must be in [0, 1) (an index of arms); got -1",
+        "ExperimentResults.run: seed_index must be in [0, 2) (an index of seeds); got -1",
+        "2",
+    ]
+
+
+# A per-seed body that keeps what it was given past its call, then uses it.
+KEPT_PAST_THE_CALL = """
+import cbbg
+
+kept = []
+def keeper(parameters, arm, run, loop):
+    run.add_trial(loop.trial(parameters, 1, 0.05))
+    kept.append((arm, run, loop))
+
+cbbg.register_protocol("keeper", "one trial, keeping its handles", keeper)
+results = cbbg.run_experiment(cbbg.parameters(
+    {"plant.kind": "analytic", "seeds": 1, "arms": ["bg_only"], "experiment": "keeper"}))
+arm, run, loop = kept[0]
+print(arm.name, run.arm, len(run.trials), len(results.runs[0].trials))
+for use in (lambda: loop.context, lambda: loop.trial(cbbg.parameters(), 2, 0.05)):
+    try:
+        use()
+        print("no error")
+    except RuntimeError as error:
+        print(error)
+"""
+
+
+def test_what_a_per_seed_body_keeps_past_its_call_is_safe():
+    done = run_python(KEPT_PAST_THE_CALL)
+    assert done.returncode == 0, done.stderr
+    refusal = ("SeedLoop: its per-seed call has returned; keep the records its trials gave, not "
+               "the loop")
+    assert done.stdout.splitlines() == ["bg_only bg_only 1 1", refusal, refusal]
 
 
 def test_exp3_and_exp2_run_and_return_their_records():
@@ -65,6 +126,15 @@ def test_the_command_line_writes_a_results_directory_that_loads_as_arrays(tmp_pa
 
 def test_a_bad_setting_on_the_command_line_exits_two():
     assert cbbg.main(["run", "--set", "critic.gamma=2", "--out", "/nonexistent/x"]) == 2
+
+
+def test_an_argument_holding_a_nul_is_refused_not_cut(tmp_path):
+    out = tmp_path / "x"
+    with pytest.raises(ValueError) as error:
+        cbbg.main(["run", "--set", "plant.kind=analytic", "--out", f"{out}\0y"])
+    assert str(error.value) == (f"cbbg.main: args[4] '{out}\\0y' contains a NUL character; an "
+                                "argument is text without NUL")
+    assert not out.exists()
 
 
 def two_angles(parameters, arm, run, loop):

@@ -1,12 +1,15 @@
 """Blocks written in Python: ports, state, events, errors, ownership."""
 
 import gc
+import traceback
 import weakref
 
 import numpy as np
 import pytest
 
 import cbbg
+from in_subprocess import run_python
+from two_wheeler import RobotParams, TwoWheeler
 
 
 class Counter(cbbg.LeafBlock):
@@ -65,6 +68,35 @@ def counter_diagram(limit=None):
     builder.connect(counter.output_port("n"), scale.input_port("u"))
     builder.export_output(scale.output_port("y"), "y")
     return builder.build(), counter, scale
+
+
+# A block kept after its diagram is gone: it belongs to no diagram any more.
+BLOCK_KEPT_PAST_ITS_DIAGRAM = """
+import cbbg
+
+def kept_gain():
+    builder = cbbg.DiagramBuilder("top")
+    gain = builder.add(cbbg.Gain("k", 2.0, 1))
+    builder.export_input(gain.input_port("u"))
+    builder.export_output(gain.output_port("y"))
+    builder.build()  # dropped at once
+    return gain
+
+gain = kept_gain()
+print(gain.path)
+print(repr(gain.output_port("y")))
+builder = cbbg.DiagramBuilder("again")
+print(builder.add(gain).path)
+"""
+
+
+def test_a_block_kept_past_its_diagram_belongs_to_none_and_may_join_another():
+    done = run_python(BLOCK_KEPT_PAST_ITS_DIAGRAM)
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert lines[0] == "k"
+    assert "k" in lines[1] and "y" in lines[1]
+    assert lines[2] == "again/k"
 
 
 def test_a_diagram_of_python_blocks_simulates_and_logs_numpy_arrays():
@@ -205,6 +237,46 @@ def test_an_exception_inside_a_python_block_surfaces_with_the_blocks_path():
         "block 'top/sensor' (Faulty), its output 'y': ValueError: the sensor is unplugged")
 
 
+def test_a_block_error_is_one_line_raised_from_the_exception_the_block_raised():
+    builder = cbbg.DiagramBuilder("top")
+    block = builder.add(Faulty("sensor", "raise"))
+    builder.export_output(block.output_port(0), "y")
+    diagram = builder.build()
+    with pytest.raises(cbbg.BlockError) as error:
+        cbbg.Simulator(diagram).advance_to(0.1)
+    assert str(error.value) == (
+        "block 'top/sensor' (Faulty), its output 'y': ValueError: the sensor is unplugged")
+    cause = error.value.__cause__
+    assert type(cause) is ValueError and str(cause) == "the sensor is unplugged"
+    # With its own traceback, down to the line that raised it.
+    assert traceback.extract_tb(cause.__traceback__)[-1].name == "calc"
+
+
+def test_a_bad_return_is_a_block_error_without_a_cause():
+    builder = cbbg.DiagramBuilder("top")
+    block = builder.add(Faulty("f", "return"))
+    builder.export_output(block.output_port(0), "y")
+    diagram = builder.build()
+    with pytest.raises(cbbg.BlockError, match="returned a value") as error:
+        cbbg.Simulator(diagram).advance_to(0.1)
+    assert error.value.__cause__ is None
+
+
+class BrokenReset(TwoWheeler):
+    def reset(self, context, initial_pitch):
+        raise ZeroDivisionError("no pitch")
+
+
+def test_a_python_plants_reset_error_is_raised_from_its_exception():
+    env = cbbg.BalanceEnv({"plant.kind": "analytic"},
+                          plant=lambda name, p: BrokenReset(name, RobotParams.of(p)))
+    with pytest.raises(cbbg.BlockError) as error:
+        env.reset(seed=1)
+    assert str(error.value) == (
+        "block 'environment/plant' (BrokenReset), its reset: ZeroDivisionError: no pitch")
+    assert type(error.value.__cause__) is ZeroDivisionError
+
+
 def test_a_callable_that_returns_instead_of_writing_is_told_so():
     assert python_error(lambda: Faulty("f", "return")) == (
         "block 'top/f' (Faulty), its output 'y': returned a value; write into the array it is "
@@ -235,6 +307,64 @@ def test_a_context_kept_after_its_call_refuses_to_be_read():
     diagram.eval_output(diagram.create_context(), diagram.output_port("y"))
     with pytest.raises(RuntimeError, match="a context is valid only during the call"):
         keeper.kept.time
+
+
+# Every use of a kept context once its simulator and diagram are gone: each the documented
+# RuntimeError, in a subprocess, as it once crashed the interpreter.
+KEPT_AFTER_ITS_DIAGRAM = """
+import gc
+import cbbg
+
+kept = []
+
+class Keeper(cbbg.LeafBlock):
+    def __init__(self, name):
+        super().__init__(name)
+        self.u = self.declare_input_port("u", 1)
+        self.declare_discrete_state("x", [0.0])
+        self.declare_parameter("k", [2.0])
+        self.declare_output_port("y", 1, self.calc)
+        self.declare_periodic_update(0.01, 0.0, self.update)
+
+    def calc(self, context, out):
+        kept.append(context)
+        out[:] = 0.0
+
+    def update(self, context, next_state):
+        kept.append(context)
+
+
+def simulate():
+    builder = cbbg.DiagramBuilder("top")
+    keeper = builder.add(Keeper("keeper"))
+    builder.fix_input(keeper.u, [1.0])
+    builder.export_output(keeper.output_port("y"), "y")
+    diagram = builder.build()
+    simulator = cbbg.Simulator(diagram)
+    simulator.add_log(diagram.output_port("y"), 0.01)
+    simulator.advance_to(0.05)
+
+
+simulate()
+gc.collect()
+uses = [lambda c: c.time, lambda c: c.input("u"), lambda c: c.discrete_state,
+        lambda c: c.state("x"), lambda c: c.continuous_state, lambda c: c.parameter("k"),
+        lambda c: c.random_normal(), lambda c: c.random_uniform()]
+for context in (kept[0], kept[-1]):  # an output's, an update's
+    for use in uses:
+        try:
+            use(context)
+            print("no error")
+        except RuntimeError as error:
+            print(error)
+"""
+
+
+def test_a_context_kept_after_its_diagram_is_gone_refuses_every_use():
+    done = run_python(KEPT_AFTER_ITS_DIAGRAM)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines() == [
+        "block 'top/keeper': a context is valid only during the call it was given to"] * 16
 
 
 def test_library_errors_cross_as_exceptions_with_their_messages():
