@@ -1,4 +1,5 @@
-// cbbg eval: load learnt weights, check them against the config, run the policy alone.
+// cbbg eval: load learnt weights, check them against the config (on the weights' plant unless
+// it names another), run the policy alone.
 
 #include "cbbg/apps/eval_command.h"
 #include "cbbg/apps/errors.h"
@@ -12,6 +13,7 @@
 #include <tuple>
 
 #include "cbbg/config/config.h"
+#include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/diagrams/presets.h"
 #include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/experiments/actor_linearisation.h"
@@ -95,10 +97,22 @@ std::vector<double> parse_angles(const std::string& text) {
   }
 }
 
-// The evaluation's parameters: the file, the overrides and --angles, validated, with the
-// evaluation.* conditions applied.
-config::Parameters resolve(const EvalOptions& options) {
+// plant.kind: the plant the weights were learnt on, where this program has its kind (else
+// check_weights refuses them on the default); a config file or --set that names one wins.
+void set_plant_of(const experiments::LearntWeights& weights, config::Config& config) {
+  const std::vector<diagrams::PlantKind>& kinds = diagrams::plant_kinds();
+  const std::string& kind = weights.provenance.plant;
+  if (std::any_of(kinds.begin(), kinds.end(),
+                  [&kind](const diagrams::PlantKind& known) { return known.name == kind; })) {
+    config.set("plant.kind=" + kind);
+  }
+}
+
+// The evaluation's parameters: the weights' plant, the file, the overrides and --angles,
+// validated, with the evaluation.* conditions applied.
+config::Parameters resolve(const EvalOptions& options, const experiments::LearntWeights& weights) {
   config::Config config;
+  set_plant_of(weights, config);
   if (!options.config_file.empty()) config.merge_file(options.config_file);
   for (const auto& assignment : options.sets) config.set(assignment);
   if (!options.angles.empty()) {
@@ -229,10 +243,11 @@ int eval_command(const EvalOptions& options) {
       store::Manifest(options.out).check_writable({kEvaluationFile}, "--out");
     }
     loop.push = push_from(options);
-    parameters = resolve(options);
     weights = store::load_weights(options.weights_file);
+    parameters = resolve(options, weights);
     policy = policy_of(weights.provenance.arm, loop);
-    store::check_layout(weights, policy(parameters).layout, options.weights_file);
+    store::check_weights(weights, parameters.plant.kind, policy(parameters).layout,
+                         options.weights_file);
     settings.angles = parameters.evaluation.angles;
     settings.repeats = options.repeats;
     if (options.linearise) linear = linearised(parameters, policy, weights);

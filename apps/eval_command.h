@@ -2,7 +2,9 @@
 // cbbg eval: measures a learnt policy. Loads a weights file (docs/weights-format.md), runs
 // the actor alone with frozen weights from each initial pitch, `repeats` times with seeds
 // seed, seed + 1, ... (they differ only with sensor noise), optionally pushed, and prints how
-// many runs balanced for the whole trial.duration.
+// many runs balanced for the whole trial.duration. It runs on the plant the weights were
+// learnt on (the file's plant.kind) unless --config or --set names one; weights of another
+// robot or layout than the evaluation's are refused (store::check_weights).
 
 #include <filesystem>
 #include <optional>
@@ -36,8 +38,8 @@ struct EvalOptions {
 };
 
 // Returns 0 when the evaluation ran (whatever the policy did), 2 for bad input (options,
-// config, weights file, a layout the config does not share), 1 when it failed otherwise
-// (writing --out). Errors go to stderr as one line "cbbg: error: ...".
+// config, weights file, a plant or a layout the config does not share), 1 when it failed
+// otherwise (writing --out). Errors go to stderr as one line "cbbg: error: ...".
 int eval_command(const EvalOptions& options);
 
 }  // namespace cbbg::app

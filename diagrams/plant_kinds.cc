@@ -48,6 +48,9 @@ plant::DisturbanceInput disturbance_input(const config::Parameters& p) {
                                : plant::DisturbanceInput::kNone;
 }
 
+// The robot both library plants model, so each takes the other's weights.
+constexpr const char* kTwoWheeler = "two_wheeler";
+
 std::vector<PlantKind>& kinds() {
   static std::vector<PlantKind> all{
       {"simbody", "3-D multibody, reference",
@@ -55,14 +58,22 @@ std::vector<PlantKind>& kinds() {
          return std::make_unique<plant::SimbodyPlant>(name, p.plant.robot, p.trial.theta0,
                                                       disturbance_input(p));
        },
-       change_two_wheeler, linearize_two_wheeler},
+       change_two_wheeler, linearize_two_wheeler, kTwoWheeler},
       {"analytic", "fast",
        [](const std::string& name, const config::Parameters& p) {
          return std::make_unique<plant::AnalyticPlant>(name, p.plant.robot, p.trial.theta0,
                                                        disturbance_input(p));
        },
-       change_two_wheeler, linearize_two_wheeler}};
+       change_two_wheeler, linearize_two_wheeler, kTwoWheeler}};
   return all;
+}
+
+// The registered kind named `name`, or null.
+const PlantKind* find_kind(std::string_view name) {
+  for (const PlantKind& kind : kinds()) {
+    if (kind.name == name) return &kind;
+  }
+  return nullptr;
 }
 
 std::vector<std::string> kind_names() {
@@ -88,11 +99,17 @@ void register_plant_kind(PlantKind kind) {
 const std::vector<PlantKind>& plant_kinds() { return kinds(); }
 
 const PlantKind& plant_kind(std::string_view name) {
-  for (const PlantKind& kind : kinds()) {
-    if (kind.name == name) return kind;
-  }
+  if (const PlantKind* kind = find_kind(name)) return *kind;
   throw std::invalid_argument("no plant kind '" + std::string(name) + "' (there are " +
                               config::join(kind_names()) + ")");
+}
+
+bool same_robot(std::string_view learnt_on, std::string_view loaded_onto) {
+  if (learnt_on == loaded_onto) return true;
+  const PlantKind* first = find_kind(learnt_on);
+  const PlantKind* second = find_kind(loaded_onto);
+  return first != nullptr && second != nullptr && !first->robot.empty() &&
+         first->robot == second->robot;
 }
 
 plant::LinearModel planar_linearization(const config::Parameters& parameters) {

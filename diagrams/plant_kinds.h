@@ -2,7 +2,8 @@
 // The kinds of plant `plant.kind` may name: the Simbody and the analytic two-wheeler, and any
 // a user registers. A kind says how to build its plant from the run's parameters, how an
 // evaluation's changed robot (evaluation.body_mass_scale, evaluation.com_height_scale) reaches
-// its parameters, and, if it can, its linearisation for model-based supervisors (LQR).
+// its parameters, if it can, its linearisation for model-based supervisors (LQR), and which
+// robot it models: weights learnt on one kind load only onto a kind of the same robot.
 //
 //   diagrams::register_plant_kind({
 //       .name = "cartpole", .description = "a pole on a cart driven through its wheel",
@@ -50,6 +51,9 @@ struct PlantKind {
   // The plant linearised upright at rest with both wheels driven alike: x = (theta_b, phi,
   // theta_b', phi'), phi the mean wheel angle, u = the wheel torque. Empty: not offered.
   std::function<plant::LinearModel(const config::Parameters& parameters)> linearize{};
+  // The robot it models, where other kinds model the same one (simbody and analytic:
+  // "two_wheeler"): weights learnt on one load onto the others. Empty: a robot of its own.
+  std::string robot{};
 };
 
 // Adds `kind` (its name a config::is_name word, new). Register before making any Config, as
@@ -60,6 +64,11 @@ void register_plant_kind(PlantKind kind);
 const std::vector<PlantKind>& plant_kinds();
 // The kind named `name`; std::invalid_argument listing the kinds for another name.
 const PlantKind& plant_kind(std::string_view name);
+
+// Whether weights learnt on plant kind `learnt_on` may be loaded onto plant kind `loaded_onto`:
+// the same kind, or two registered kinds of one robot (PlantKind::robot). A kind this program
+// has not registered is a robot of its own.
+bool same_robot(std::string_view learnt_on, std::string_view loaded_onto);
 
 // The linearisation plant.kind's kind offers (PlantKind::linearize) for the run's parameters.
 // Throws std::invalid_argument naming the kind when it offers none.

@@ -3,6 +3,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "cbbg/config/config.h"
+#include "cbbg/diagrams/plant_kinds.h"
+
 namespace cbbg::experiments {
 
 int LearntWeights::num_features() const { return static_cast<int>(actor.size()); }
@@ -28,6 +31,25 @@ LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& co
   weights.critic = loop.learner.critic->weights(context);
   weights.provenance = provenance;
   return weights;
+}
+
+void check_weights_fit(const LearntWeights& weights, const std::string& plant_kind,
+                       const blocks::FeatureLayout& layout, const std::string& what) {
+  const std::string& learnt_on = weights.provenance.plant;
+  if (!diagrams::same_robot(learnt_on, plant_kind)) {
+    throw config::ConfigError(what + " was made on plant kind '" + learnt_on +
+                              "' and cannot be loaded onto plant kind '" + plant_kind +
+                              "' (plant.kind): another robot");
+  }
+  check_layout_fit(weights, layout, what);
+}
+
+void check_layout_fit(const LearntWeights& weights, const blocks::FeatureLayout& layout,
+                      const std::string& what) {
+  const blocks::LayoutDifference difference = blocks::first_difference(weights.layout, layout);
+  if (difference.empty()) return;
+  throw config::ConfigError(what + " was made for " + difference.first + "; this diagram has " +
+                            difference.second);
 }
 
 void load_learnt_weights(const diagrams::ClosedLoop& loop, Context& context,

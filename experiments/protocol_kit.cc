@@ -108,12 +108,19 @@ ExperimentResults run_per_arm(const std::string& experiment, const PerSeed& prot
     }
   }
   // Before any training: every arm's plant sees the robot its evaluation changes and takes
-  // its push.
+  // its push, and the weights learning starts from fit its robot and layout.
   for (const auto& arm : arms) {
     if (changes_robot(p.evaluation)) {
       check_plant_takes_conditions(p.evaluation, arm.learner(p));
     }
     check_plant_takes_push(p, arm.learner);
+    if (options.initial_weights != nullptr) {
+      const diagrams::ClosedLoop loop = arm.learner(p);
+      if (loop.learner.learns()) {
+        check_weights_fit(*options.initial_weights, p.plant.kind, loop.layout,
+                          "the initial weights");
+      }
+    }
   }
   // Tasks are arm-major: the arm of a run is found by its name.
   auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {

@@ -44,6 +44,8 @@ class AnalyticPlant final : public RobotPlant {
   // rewrites this block's state in `context` (a context of the root diagram).
   void reset(Context& context, double initial_pitch) const override;
   double wheel_radius() const override { return params_.wheel_radius; }
+  // The two-wheeler of its parameters (plant.wheel_radius, plant.track_width, plant.com_height).
+  PlantDrawing drawing() const override { return two_wheeler_drawing(params_); }
   // Sets the whole state from a vector in the output layout (plant_ports.h); the yaw rate
   // is not stored: it follows from the wheel rates.
   void set_state(Context& context, const Vector& state) const;

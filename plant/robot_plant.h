@@ -1,7 +1,8 @@
 #pragma once
 // The interface every robot plant offers the closed loop (diagrams/closed_loop.h): torque in,
-// named signals out, and a reset to an initial pitch at the start of each trial. The Simbody
-// and the analytic plant implement it; so can a user's own plant (a cart-pole, say).
+// named signals out, a reset to an initial pitch at the start of each trial, and what a replay
+// draws of it. The Simbody and the analytic plant implement it; so can a user's own plant (a
+// cart-pole, say).
 
 #include <limits>
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/context.h"
+#include "cbbg/plant/plant_drawing.h"
 #include "cbbg/plant/plant_ports.h"
 #include "cbbg/plant/plant_signals.h"
 
@@ -28,8 +30,9 @@ enum class DisturbanceInput { kNone, kDeclared };
 /// | disturbance | in | 2 | optional: F at the centre of mass, N; pitch torque, N m        |
 ///
 /// A subclass declares both ports with these names, names its state output's signals when
-/// they are not the two-wheeler's (plant_signals.h says which the loop needs), and implements
-/// reset. The closed loop checks the ports and the names.
+/// they are not the two-wheeler's (plant_signals.h says which the loop needs), states its
+/// drawing when it is not a two-wheeler of the default size, and implements reset. The closed
+/// loop checks the ports and the names.
 class RobotPlant : public Block {
  public:
   const InputPort& torque_input() const { return input_port("torque"); }
@@ -48,6 +51,11 @@ class RobotPlant : public Block {
   // The wheels' radius, m: what turns wheel angles into distance (a trial's mean forward
   // speed). NaN, the default, for a plant that does not say; those figures are then NaN.
   virtual double wheel_radius() const { return std::numeric_limits<double>::quiet_NaN(); }
+
+  // What the replay page draws of it (plant_drawing.h): by default the two-wheeler of the
+  // default robot (plant.* as docs/model.md §1 gives them). A plant of other sizes or of
+  // another shape (a cart and a pole) states its own.
+  virtual PlantDrawing drawing() const { return PlantDrawing{}; }
 
  protected:
   explicit RobotPlant(std::string name) : Block(std::move(name)) {}

@@ -3,7 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "cbbg/config/parameters.h"
+#include "cbbg/config/config.h"
+#include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/framework/number_text.h"
 
 namespace cbbg::replay {
@@ -76,10 +77,16 @@ std::string trial_json(const TrialLog& log) {
 }
 
 std::string robot_json(const ReplayRobot& robot) {
+  const plant::PlantDrawing& drawing = robot.drawing;
   std::string json = "{";
-  append_member(json, "wheel_radius", format_number(robot.wheel_radius));
-  append_member(json, "track_width", format_number(robot.track_width));
-  append_member(json, "com_height", format_number(robot.com_height));
+  append_member(json, "wheel_radius", format_number(drawing.wheel_radius));
+  append_member(json, "track_width", format_number(drawing.track_width));
+  append_member(json, "cart_length", format_number(drawing.cart_length));
+  append_member(json, "cart_height", format_number(drawing.cart_height));
+  append_member(json, "body_length", format_number(drawing.body_length));
+  append_member(json, "body_thickness", format_number(drawing.body_thickness));
+  append_member(json, "body_width", format_number(drawing.body_width));
+  append_member(json, "com_height", format_number(drawing.com_height));
   append_member(json, "failure_angle", format_number(robot.failure_angle));
   append_member(json, "torque_limit", format_number(robot.torque_limit));
   return json + "}";
@@ -87,11 +94,9 @@ std::string robot_json(const ReplayRobot& robot) {
 
 }  // namespace
 
-ReplayRobot replay_robot(const config::Config& config) {
-  const config::Parameters p = config::read_parameters(config);
-  const plant::RobotParams& robot = p.plant.robot;
-  return {robot.wheel_radius, robot.track_width, robot.com_height, p.trial.failure_angle,
-          robot.torque_limit};
+ReplayRobot replay_robot(const config::Parameters& parameters) {
+  const auto plant = diagrams::plant_kind(parameters.plant.kind).make("plant", parameters);
+  return {plant->drawing(), parameters.trial.failure_angle, parameters.plant.robot.torque_limit};
 }
 
 std::string replay_page(const std::string& page_template, const std::string& title,
@@ -132,7 +137,7 @@ std::string replay_of_run(const std::filesystem::path& run, const TrialChoice& c
   const config::Parameters parameters = config::read_parameters(config);
   const std::string title = parameters.run.experiment + ", " + parameters.plant.kind +
                             " plant: " + (name.empty() ? run.filename().string() : name);
-  return replay_page(page_template, title, replay_robot(config), logs);
+  return replay_page(page_template, title, replay_robot(parameters), logs);
 }
 
 }  // namespace cbbg::replay

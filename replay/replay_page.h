@@ -7,7 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/config/config.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/plant/plant_drawing.h"
 #include "cbbg/replay/trial_log.h"
 
 namespace cbbg::replay {
@@ -21,14 +22,14 @@ inline constexpr std::size_t kMaxTicksShown = 20000;
 
 // What the page draws of the robot and of its limits.
 struct ReplayRobot {
-  double wheel_radius = 0.15;   // plant.wheel_radius, m
-  double track_width = 0.44;    // plant.track_width, m
-  double com_height = 0.4;      // plant.com_height, m
+  plant::PlantDrawing drawing;  // the plant's own (RobotPlant::drawing)
   double failure_angle = 0.52;  // trial.failure_angle, rad
   double torque_limit = 5.0;    // plant.torque_limit, N m
 };
 
-ReplayRobot replay_robot(const config::Config& config);
+// The robot of a run's parameters: the drawing of the plant plant.kind's kind builds from them
+// (a user's kind's plant states its own), and the limits.
+ReplayRobot replay_robot(const config::Parameters& parameters);
 
 // `page_template` with `trials` in it. Throws std::invalid_argument when the template is not
 // a replay page (no generator tag or no data marker).

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "cbbg/blocks/weight_learner.h"
 #include "cbbg/config/config.h"
 #include "cbbg/store/files.h"
 #include "cbbg/store/output_guard.h"
@@ -18,6 +19,11 @@ namespace cbbg::store {
 using experiments::LearntWeights;
 using experiments::WeightsProvenance;
 namespace {
+
+// "weights file 'w.txt'": how every message names the file.
+std::string file_name(const std::filesystem::path& path) {
+  return "weights file '" + path.string() + "'";
+}
 
 std::string format_header() {
   return std::string(kWeightsFormat) + " " + std::to_string(kWeightsFormatVersion);
@@ -34,15 +40,7 @@ bool is_one_word(const std::string& text) {
 }
 
 // A line of the file as messages show it: at most 60 characters, printable ones only.
-std::string shown(std::string_view text) {
-  constexpr std::size_t kMaxShown = 60;
-  std::string result;
-  for (const char c : text.substr(0, kMaxShown)) {
-    result += (c >= ' ' && c <= '~') ? c : '?';
-  }
-  if (text.size() > kMaxShown) result += "...";
-  return result;
-}
+std::string shown(std::string_view text) { return config::shown_text(text); }
 
 std::string_view trim(std::string_view text) {
   const auto first = text.find_first_not_of(" \t\r");
@@ -78,7 +76,7 @@ class Reader {
   Reader(const std::filesystem::path& path, std::string_view text) : path_(path), text_(text) {}
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw config::ConfigError("weights file '" + path_.string() + "' " + what);
+    throw config::ConfigError(file_name(path_) + " " + what);
   }
   [[noreturn]] void fail(const Line& line, const std::string& what) const {
     fail("line " + std::to_string(line.number) + ": " + what);
@@ -185,7 +183,7 @@ class Reader {
 };
 
 std::string read_file(const std::filesystem::path& path) {
-  const std::string name = "weights file '" + path.string() + "'";
+  const std::string name = file_name(path);
   std::error_code error;
   const auto status = std::filesystem::status(path, error);
   if (!std::filesystem::exists(status)) throw config::ConfigError(name + " does not exist");
@@ -236,7 +234,7 @@ Vector read_weights(Reader& reader, const std::string& name, long long features)
 }
 
 // A bound far above any real layout keeps the weight count an int and the file's size sane.
-constexpr long long kMaxFeatures = 1000000;
+constexpr long long kMaxFeatures = blocks::kMaxFeatures;
 
 // A layout key: one word with a dot inside ("rbf.width"), as blocks/feature_layout.h keys.
 bool is_layout_key(const std::string& word) {
@@ -377,12 +375,14 @@ LearntWeights load_weights(const std::filesystem::path& path) {
   return parse(path, text);
 }
 
+void check_weights(const LearntWeights& weights, const std::string& plant_kind,
+                   const blocks::FeatureLayout& layout, const std::filesystem::path& source) {
+  experiments::check_weights_fit(weights, plant_kind, layout, file_name(source));
+}
+
 void check_layout(const LearntWeights& weights, const blocks::FeatureLayout& layout,
                   const std::filesystem::path& source) {
-  const blocks::LayoutDifference difference = blocks::first_difference(weights.layout, layout);
-  if (difference.empty()) return;
-  throw config::ConfigError("weights file '" + source.string() + "' was made for " +
-                            difference.first + "; this diagram has " + difference.second);
+  experiments::check_layout_fit(weights, layout, file_name(source));
 }
 
 }  // namespace cbbg::store

@@ -32,9 +32,16 @@ void save_weights(const std::filesystem::path& path, const LearntWeights& weight
 // file, the line where it applies, and what is wrong.
 LearntWeights load_weights(const std::filesystem::path& path);
 
-// Throws config::ConfigError, naming `source` and where the layouts first differ, unless the
-// weights were made for `layout` (a closed loop's: diagrams::ClosedLoop::layout), the same
-// keys and numbers, bit for bit.
+// Before weights read from the file `source` are loaded into a loop on plant kind
+// `plant_kind` (a run's plant.kind) whose blocks describe `layout` (diagrams::ClosedLoop::
+// layout): experiments::check_weights_fit, its messages naming the file ("weights file
+// 'w.txt' was made on plant kind 'cartpole' and cannot be loaded onto plant kind 'simbody'
+// (plant.kind): another robot"). cbbg eval and cbbg run --load-weights check so.
+void check_weights(const LearntWeights& weights, const std::string& plant_kind,
+                   const blocks::FeatureLayout& layout, const std::filesystem::path& source);
+// Its layout half alone: throws config::ConfigError, naming `source` and where the layouts
+// first differ, unless the weights were made for `layout`, the same keys and numbers, bit for
+// bit.
 void check_layout(const LearntWeights& weights, const blocks::FeatureLayout& layout,
                   const std::filesystem::path& source);
 

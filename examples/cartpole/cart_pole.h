@@ -83,6 +83,19 @@ class CartPole final : public cbbg::plant::RobotPlant {
     return {"pitch", "pitch_rate", "wheel", "wheel_rate", "x"};
   }
   double wheel_radius() const override { return p_.wheel_radius; }
+  // The replay draws a cart on its wheels and the pole from the cart's top.
+  cbbg::plant::PlantDrawing drawing() const override {
+    cbbg::plant::PlantDrawing drawing;
+    drawing.wheel_radius = p_.wheel_radius;
+    drawing.track_width = 0.3;
+    drawing.cart_length = 0.4;
+    drawing.cart_height = 0.12;
+    drawing.body_length = p_.pole_length;
+    drawing.body_thickness = 0.02;
+    drawing.body_width = 0.02;
+    drawing.com_height = p_.pole_length;  // the pole's mass sits at its tip
+    return drawing;
+  }
 
   void reset(cbbg::Context& context, double initial_pitch) const override {
     auto s = context.continuous_state(*this);

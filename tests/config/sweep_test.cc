@@ -5,6 +5,7 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <algorithm>
 
 namespace cbbg::config {
 namespace {
@@ -95,46 +96,89 @@ TEST(SweepGrid, BadAxesAreRefusedNamingTheirSource) {
 namespace cbbg::config {
 namespace {
 
-// Whatever a user may type as a grid value is either refused before anything is written, or
-// written as YAML that reads back to the same values and the same grid points.
+// `text` as messages echo it: a newline as '?', so that they stay one line.
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', '?');
+  return text;
+}
+
+// Whatever a user may type as a grid value is either refused before anything is written, with
+// the message its key's rule gives, or written as YAML that reads back to the same values and
+// the same grid points.
 TEST(SweepGrid, HostileValuesAreRefusedOrReadBackUnchanged) {
   const std::vector<std::string> keys = {"critic.beta", "arms", "evaluation.angles", "plant.kind"};
-  const std::vector<std::string> values = {"0.1 # note",
-                                           "0.1#x",
-                                           "  0.2",
-                                           "'0.1'",
-                                           "\"0.1\"",
-                                           "0.1\n# more",
-                                           "0.1 # é ünï",
-                                           "[cbbg, bg_only] # mine",
-                                           "[bg_only]",
-                                           "a: b",
-                                           "'it''s'",
-                                           "\"x\\ny\"",
-                                           "é",
-                                           "#",
-                                           "[cbbg",
-                                           ":",
-                                           "'analytic' # fast",
-                                           "\"simbody\"",
-                                           "'[0.1, 0.2]'",
-                                           "[0.05, 0.1] # two",
-                                           "- 1",
-                                           "&a 1",
-                                           "!!str 0.1",
-                                           "{}",
-                                           "~"};
+  auto number = [](const std::string& got) { return "critic.beta must be a number; got " + got; };
+  auto names = [](const std::string& got) {
+    return "arms must be a non-empty list of names; got " + got;
+  };
+  auto angles = [](const std::string& got) {
+    return "evaluation.angles must be a non-empty list of numbers; got " + got;
+  };
+  auto kind = [](const std::string& got) {
+    return "plant.kind must be one of simbody, analytic; got " + got;
+  };
+  // Each key's answer: "" where it takes the value, else its refusal after "--grid key=value: ".
+  auto every = [&](const std::string& got) -> std::vector<std::string> {
+    return {number(got), names(got), angles(got), kind(got)};
+  };
+  auto all = [](const std::string& refusal) -> std::vector<std::string> {
+    return {refusal, refusal, refusal, refusal};
+  };
+  auto numbers_only = [&](const std::string& got) -> std::vector<std::string> {
+    return {"", names(got), angles(got), kind(got)};
+  };
+  const std::string empty = "an empty value; give V1,V2,...";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> values = {
+      {"0.1 # note", numbers_only("'0.1'")},
+      {"0.1#x", every("'0.1#x'")},
+      {"  0.2", numbers_only("'0.2'")},
+      {"'0.1'", numbers_only("'0.1'")},
+      {"\"0.1\"", numbers_only("'0.1'")},
+      {"0.1\n# more", numbers_only("'0.1'")},
+      {"0.1 # é ünï", numbers_only("'0.1'")},
+      {"[cbbg, bg_only] # mine",
+       {number("[cbbg, bg_only]"), "", "evaluation.angles[0] must be a number; got 'cbbg'",
+        kind("[cbbg, bg_only]")}},
+      {"[bg_only]",
+       {number("[bg_only]"), "", "evaluation.angles[0] must be a number; got 'bg_only'",
+        kind("[bg_only]")}},
+      {"a: b", every("{a: b}")},
+      {"'it''s'", every("'it's'")},
+      // Every rule shows a control character as '?': a message stays one line.
+      {"\"x\\ny\"", {number("'x?y'"), names("'x?y'"), angles("'x?y'"), kind("'x?y'")}},
+      {"é", every("'é'")},
+      {"#", all(empty)},
+      {"[cbbg", all("'[cbbg' is not a YAML value: end of sequence flow not found")},
+      {":", every("{~: ~}")},
+      {"'analytic' # fast", {number("'analytic'"), names("'analytic'"), angles("'analytic'"), ""}},
+      {"\"simbody\"", {number("'simbody'"), names("'simbody'"), angles("'simbody'"), ""}},
+      {"'[0.1, 0.2]'", every("'[0.1, 0.2]'")},
+      {"[0.05, 0.1] # two", {number("[0.05, 0.1]"), "", "", kind("[0.05, 0.1]")}},
+      {"- 1", {number("[1]"), "", "", kind("[1]")}},
+      {"&a 1", numbers_only("'1'")},
+      {"!!str 0.1", numbers_only("'0.1'")},
+      {"{}", every("{}")},
+      {"~", all(empty)}};
   int accepted = 0;
-  for (const std::string& key : keys) {
-    for (const std::string& value : values) {
-      SCOPED_TRACE(key + "=" + value);
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    for (const auto& [value, answers] : values) {
+      const std::string flag = keys[k] + "=" + value;
+      SCOPED_TRACE(flag);
       Sweep sweep;
-      try {
-        sweep.add_flag(key + "=" + value);
-        sweep.check(Config());
-      } catch (const ConfigError&) {
+      const std::string& refusal = answers[k];
+      if (!refusal.empty()) {
+        EXPECT_THAT(
+            [&] {
+              sweep.add_flag(flag);
+              sweep.check(Config());
+            },
+            ThrowsMessage<ConfigError>("--grid " + one_line(flag) + ": " + refusal));
         continue;  // refused with a message, before any file is written
       }
+      ASSERT_NO_THROW({
+        sweep.add_flag(flag);
+        sweep.check(Config());
+      });
       ++accepted;
       const std::string yaml = sweep.to_yaml();
       Sweep again;
@@ -143,7 +187,8 @@ TEST(SweepGrid, HostileValuesAreRefusedOrReadBackUnchanged) {
       EXPECT_EQ(again.config(Config(), 0).to_yaml(), sweep.config(Config(), 0).to_yaml());
     }
   }
-  EXPECT_GE(accepted, 12);  // the comments, quotes and spaces around valid values
+  // The comments, quotes and spaces around valid values, and the lists where lists belong.
+  EXPECT_EQ(accepted, 16);
 }
 
 TEST(SweepGrid, ASweepKeyThatIsNotAKeyPathIsNamed) {

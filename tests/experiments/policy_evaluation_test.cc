@@ -17,6 +17,7 @@
 
 #include "cbbg/apps/eval_command.h"
 #include "cbbg/blocks/torque_push.h"
+#include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/diagrams/presets.h"
 #include "cbbg/experiments/trial_runner.h"
 #include "cbbg/framework/diagram_builder.h"
@@ -99,10 +100,13 @@ TEST(PolicyEvaluation, ZeroWeightsFallFromTheTrialAngle) {
 
 TEST(PolicyEvaluation, WeightsLearntByAShortBgOnlyRunBalanceFromASmallAngle) {
   const PolicyEvaluation evaluation = evaluate(analytic_config(), bg_only_weights(), from({0.05}));
-  for (const AngleEvaluation& angle : evaluation.angles) {
-    EXPECT_EQ(angle.balanced(), 1) << "from " << angle.theta0;
-    EXPECT_EQ(angle.runs.at(0).steps, 2000);  // 20 s at 10 ms
-  }
+  ASSERT_EQ(evaluation.angles.size(), 1u);
+  const AngleEvaluation& angle = evaluation.angles[0];
+  EXPECT_EQ(angle.theta0, 0.05);
+  ASSERT_EQ(angle.runs.size(), 1u);
+  EXPECT_EQ(angle.balanced(), 1);
+  EXPECT_EQ(angle.runs[0].status, TrialStatus::kSuccess);
+  EXPECT_EQ(angle.runs[0].steps, 2000);  // 20 s at 10 ms
 }
 
 TEST(PolicyEvaluation, MatchesTheLearntActorDiagramRunByTrialRunner) {
@@ -262,6 +266,73 @@ TEST_F(EvalCommand, BadWeightsOrConfigExitTwoWithOneLine) {
   bad = options();
   bad.sets.push_back("critic.gama=0.5");
   EXPECT_THAT(refused(bad), HasSubstr("unknown key 'critic.gama'; did you mean 'critic.gamma'?"));
+}
+
+// plant.kind own_robot: a user's robot, built here as the analytic two-wheeler is, but a robot
+// of its own to the weights (diagrams::PlantKind::robot).
+void register_own_robot() {
+  static const bool done = [] {
+    register_plant_kind({.name = "own_robot",
+                         .description = "a user's robot",
+                         .make = [](const std::string& name, const config::Parameters& p) {
+                           return plant_kind("analytic").make(name, p);
+                         }});
+    return true;
+  }();
+  (void)done;
+}
+
+TEST_F(EvalCommand, RunsOnThePlantTheWeightsWereLearntOnUnlessOneIsNamed) {
+  register_own_robot();
+  LearntWeights own = bg_only_weights();
+  own.provenance.plant = "own_robot";
+  const fs::path own_file = directory_ / "own.txt";
+  save_weights(own_file, own);
+  app::EvalOptions unset = options();
+  unset.weights_file = own_file;
+  unset.sets.clear();  // the default plant.kind is simbody; the weights' own_robot wins
+  Outcome outcome = run(unset);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_THAT(outcome.out, HasSubstr("trial(s) on the own_robot plant\npolicy alone on the "
+                                     "own_robot plant for 20 s"));
+  EXPECT_THAT(outcome.out, HasSubstr("      0.05        1/1\n"));
+
+  // Named by --set or the config file, another plant of the same robot is evaluated.
+  app::EvalOptions named = options();
+  named.sets = {"plant.kind=simbody", "trial.duration=0.5"};
+  outcome = run(named);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_THAT(outcome.out, HasSubstr("on the analytic plant\npolicy alone on the simbody plant"));
+  const fs::path config = directory_ / "simbody.yaml";
+  std::ofstream(config) << "plant:\n  kind: simbody\ntrial:\n  duration: 0.5\n";
+  named.sets.clear();
+  named.config_file = config;
+  outcome = run(named);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_THAT(outcome.out, HasSubstr("policy alone on the simbody plant for 0.5 s"));
+}
+
+TEST_F(EvalCommand, WeightsOfAnotherRobotExitTwoNamingTheFileAndBothPlants) {
+  register_own_robot();
+  LearntWeights own = bg_only_weights();
+  own.provenance.plant = "own_robot";
+  const fs::path own_file = directory_ / "own.txt";
+  save_weights(own_file, own);
+  app::EvalOptions bad = options();  // plant.kind=analytic
+  bad.weights_file = own_file;
+  EXPECT_EQ(refused(bad), "cbbg: error: weights file '" + own_file.string() +
+                              "' was made on plant kind 'own_robot' and cannot be loaded onto "
+                              "plant kind 'analytic' (plant.kind): another robot\n");
+  // Weights of a plant kind this program does not have: refused on the default plant.
+  LearntWeights other = bg_only_weights();
+  other.provenance.plant = "cartpole";
+  const fs::path other_file = directory_ / "cartpole.txt";
+  save_weights(other_file, other);
+  bad.weights_file = other_file;
+  bad.sets.clear();
+  EXPECT_EQ(refused(bad), "cbbg: error: weights file '" + other_file.string() +
+                              "' was made on plant kind 'cartpole' and cannot be loaded onto "
+                              "plant kind 'simbody' (plant.kind): another robot\n");
 }
 
 TEST_F(EvalCommand, BadOptionsExitTwoWithOneLine) {

@@ -256,9 +256,40 @@ TEST_P(PlantBlock, RejectsInvalidParametersAndPitches) {
                   "block 'robot/plant': set_state needs finite values; got theta_b = 0, ")));
 }
 
+TEST_P(PlantBlock, DrawsTheTwoWheelerOfItsOwnParameters) {
+  RobotParams p;
+  p.wheel_radius = 0.2;
+  p.track_width = 0.5;
+  p.com_height = 0.3;
+  const Rig rig = make_rig(kind(), p, kDefaultInitialPitch, Control::kFixedTorque);
+  const PlantDrawing drawing = dynamic_cast<const RobotPlant&>(*rig.plant).drawing();
+  EXPECT_EQ(drawing, two_wheeler_drawing(p));
+  EXPECT_EQ(drawing.wheel_radius, 0.2);
+  EXPECT_EQ(drawing.track_width, 0.5);
+  EXPECT_EQ(drawing.com_height, 0.3);
+  EXPECT_EQ(drawing.body_length, 0.6);
+  EXPECT_EQ(drawing.body_width, 0.35);
+  EXPECT_EQ(drawing.cart_length, 0.0);  // no cart: the body pitches about the axle
+}
+
 INSTANTIATE_TEST_SUITE_P(BothPlants, PlantBlock,
                          ::testing::Values(PlantKind::kAnalytic, PlantKind::kSimbody),
                          [](const auto& parameter) { return plant_name(parameter.param); });
+
+// A plant that states no drawing is drawn as the two-wheeler of the default robot.
+class Silent final : public RobotPlant {
+ public:
+  Silent() : RobotPlant("silent") {}
+  void reset(Context&, double) const override {}
+};
+
+TEST(PlantDrawing, TheDefaultIsTheDefaultTwoWheelers) {
+  EXPECT_EQ(Silent().drawing(), two_wheeler_drawing(RobotParams{}));
+  const PlantDrawing drawing;
+  EXPECT_EQ(drawing.wheel_radius, RobotParams{}.wheel_radius);
+  EXPECT_EQ(drawing.com_height, RobotParams{}.com_height);
+  EXPECT_EQ(drawing.body_length, 2.0 * RobotParams{}.com_height);
+}
 
 TEST(SimbodyPlant, RejectsInertiasNoRigidBodyHas) {
   RobotParams literal;  // the paper's equations read literally: yaw inertia J_z at every pitch

@@ -15,6 +15,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/diagrams/presets.h"
 
 namespace cbbg::store {
@@ -372,6 +373,73 @@ TEST_F(WeightsFile, LayoutMismatchNamesWhereTheLayoutsDiffer) {
               ::testing::ThrowsMessage<config::ConfigError>(
                   "weights file 'w.txt' was made for rbf.centres [-3, -2, -1, 0, 1, 2, 3]; this "
                   "diagram has no rbf.centres"));
+  // A file whose layout stops short of the diagram's.
+  LearntWeights shorter = weights;
+  shorter.layout.pop_back();
+  EXPECT_THAT([&] { check_layout(shorter, default_layout(), "w.txt"); },
+              ::testing::ThrowsMessage<config::ConfigError>(
+                  "weights file 'w.txt' was made for no rbf.width; this diagram has rbf.width "
+                  "0.5"));
+}
+
+// Plant kinds of a user's: a pole, a robot of its own, and a crane modelled twice (a fast and
+// an exact model of one robot).
+void register_user_kinds() {
+  static const bool done = [] {
+    const PlantFactory analytic = [](const std::string& name, const config::Parameters& p) {
+      return plant_kind("analytic").make(name, p);
+    };
+    register_plant_kind({.name = "pole", .description = "", .make = analytic});
+    register_plant_kind(
+        {.name = "crane_fast", .description = "", .make = analytic, .robot = "crane"});
+    register_plant_kind(
+        {.name = "crane_exact", .description = "", .make = analytic, .robot = "crane"});
+    return true;
+  }();
+  (void)done;
+}
+
+// `weights`, made on `plant`.
+LearntWeights made_on(LearntWeights weights, const std::string& plant) {
+  weights.provenance.plant = plant;
+  return weights;
+}
+
+TEST_F(WeightsFile, WeightsLoadOnlyOntoTheRobotTheyWereLearntOn) {
+  register_user_kinds();
+  const LearntWeights weights = default_layout_weights();
+  const blocks::FeatureLayout layout = default_layout();
+  auto refusal = [&](const std::string& made, const std::string& loaded) {
+    return "weights file 'w.txt' was made on plant kind '" + made +
+           "' and cannot be loaded onto plant kind '" + loaded + "' (plant.kind): another robot";
+  };
+  EXPECT_NO_THROW(check_weights(made_on(weights, "analytic"), "analytic", layout, "w.txt"));
+  // The Simbody and the analytic plant model one robot: each takes the other's weights.
+  EXPECT_NO_THROW(check_weights(made_on(weights, "analytic"), "simbody", layout, "w.txt"));
+  EXPECT_NO_THROW(check_weights(made_on(weights, "simbody"), "analytic", layout, "w.txt"));
+  EXPECT_NO_THROW(check_weights(made_on(weights, "crane_fast"), "crane_exact", layout, "w.txt"));
+  EXPECT_NO_THROW(check_weights(made_on(weights, "pole"), "pole", layout, "w.txt"));
+  for (const auto& [made, loaded] : std::vector<std::pair<std::string, std::string>>{
+           {"pole", "simbody"},
+           {"analytic", "pole"},
+           {"crane_exact", "simbody"},
+           {"pole", "crane_fast"},
+           // A kind this program has not registered (another program's): a robot of its own.
+           {"cartpole", "analytic"},
+           {"simbody", "cartpole"}}) {
+    EXPECT_THAT([&] { check_weights(made_on(weights, made), loaded, layout, "w.txt"); },
+                ::testing::ThrowsMessage<config::ConfigError>(refusal(made, loaded)))
+        << made << " onto " << loaded;
+  }
+  // The robot is checked first, then the layout.
+  blocks::FeatureLayout other = layout;
+  other[4].values = {0.7};
+  EXPECT_THAT([&] { check_weights(made_on(weights, "pole"), "simbody", other, "w.txt"); },
+              ::testing::ThrowsMessage<config::ConfigError>(refusal("pole", "simbody")));
+  EXPECT_THAT([&] { check_weights(made_on(weights, "simbody"), "analytic", other, "w.txt"); },
+              ::testing::ThrowsMessage<config::ConfigError>(
+                  "weights file 'w.txt' was made for rbf.width 0.5; this diagram has rbf.width "
+                  "0.7"));
 }
 
 TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {

@@ -1,6 +1,7 @@
-// The 3-D scene of a replay: the ground with a metre grid and the path so far, the robot
-// (body, two wheels), lights, and a camera that follows the robot. It needs WebGL 2
-// (three.js's renderer does); openRobotScene says when the browser cannot give it.
+// The 3-D scene of a replay: the ground with a metre grid and the path so far, the robot as
+// its plant draws itself (plant/plant_drawing.h: two wheels, a cart if it has one, a body that
+// pitches about the axle or the cart's top), lights, and a camera that follows the robot. It
+// needs WebGL 2 (three.js's renderer does); openRobotScene says when the browser cannot give it.
 //
 // cbbg's frame is x forward, y left, z up; three.js's is y up. A point (x, y, z) of cbbg is
 // (x, z, -y) here, a heading (yaw about z) is a rotation about three.js's y.
@@ -34,22 +35,36 @@ function wheel(robot, side, material, markMaterial) {
 }
 
 function body(robot) {
-  const group = new THREE.Group(); // pitches about the axle
-  const height = 2 * robot.com_height;
-  const shell = new THREE.Mesh(new THREE.BoxGeometry(0.14, height, robot.track_width * 0.7),
-                               new THREE.MeshStandardMaterial({ color: 0x4a78b5 }));
-  shell.position.y = robot.com_height;
+  const group = new THREE.Group(); // pitches about the pivot: the axle, or the cart's top
+  group.position.y = robot.cart_height;
+  const length = robot.body_length;
+  const half = robot.body_thickness / 2;
+  const shell = new THREE.Mesh(
+    new THREE.BoxGeometry(robot.body_thickness, length, robot.body_width),
+    new THREE.MeshStandardMaterial({ color: 0x4a78b5 }));
+  shell.position.y = length / 2;
   group.add(shell);
   // The front, so that which way it leans shows.
-  const front = new THREE.Mesh(new THREE.BoxGeometry(0.01, height * 0.9, robot.track_width * 0.5),
+  const front = new THREE.Mesh(new THREE.BoxGeometry(0.01, length * 0.9, robot.body_width * 0.7),
                                new THREE.MeshStandardMaterial({ color: 0xf2b134 }));
-  front.position.set(0.075, robot.com_height, 0);
+  front.position.set(half + 0.005, length / 2, 0);
   group.add(front);
   const mass = new THREE.Mesh(new THREE.SphereGeometry(0.04, 20, 12),
                               new THREE.MeshStandardMaterial({ color: 0xd94f4f }));
-  mass.position.set(0.09, robot.com_height, 0);
+  mass.position.set(half + 0.02, robot.com_height, 0);
   group.add(mass);
   return group;
+}
+
+// The cart on the axle, from the axle up to the pivot; it turns with the heading, never
+// pitches. Null for a plant without one (cart_length 0: a two-wheeler).
+function cart(robot) {
+  if (!(robot.cart_length > 0 && robot.cart_height > 0)) return null;
+  const box = new THREE.Mesh(new THREE.BoxGeometry(robot.cart_length, robot.cart_height,
+                                                   Math.max(robot.track_width - 0.06, 0.02)),
+                             new THREE.MeshStandardMaterial({ color: 0x6c757d }));
+  box.position.y = robot.cart_height / 2;
+  return box;
 }
 
 // Lines every `step` metres across the ground, as one set of segments.
@@ -127,12 +142,14 @@ class RobotScene {
     this.left = wheel(robot, +1, tyre, mark);
     this.right = wheel(robot, -1, tyre, mark);
     this.base.add(this.body, this.left, this.right);
+    const carried = cart(robot);
+    if (carried) this.base.add(carried);
     this.scene.add(this.base);
 
     this.camera = new THREE.PerspectiveCamera(45, 1, 0.1, 500);
     this.camera.position.copy(CAMERA_OFFSET).add(new THREE.Vector3(0, robot.wheel_radius, 0));
     this.controls = new OrbitControls(this.camera, canvas);
-    this.controls.target.set(0, robot.wheel_radius + robot.com_height, 0);
+    this.controls.target.set(0, robot.wheel_radius + robot.cart_height + robot.com_height, 0);
     this.controls.update();
   }
 
