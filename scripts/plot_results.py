@@ -879,7 +879,8 @@ MANIFEST_HEADER = "cbbg-written 1"
 
 def temporary_name(folder, name):
     """A hidden name beside `name` that marks it as cbbg's temporary (removed on resume)."""
-    return os.path.join(folder, f".{name}{TEMPORARY_TAG}{socket.gethostname()}-{os.getpid()}-0")
+    identity = f"{os.getpid()}.{process_start(os.getpid())}"
+    return os.path.join(folder, f".{name}{TEMPORARY_TAG}{socket.gethostname()}-{identity}-0")
 
 
 def write_atomically(path, write):
@@ -930,20 +931,37 @@ def remove_stale_temporaries(folder, names):
     for entry in os.listdir(folder):
         for name in names:
             prefix = f".{name}{TEMPORARY_TAG}{socket.gethostname()}-"
-            pid = entry[len(prefix):].split("-")[0]
-            if entry.startswith(prefix) and pid.isdigit() and not process_runs(int(pid)):
+            if entry.startswith(prefix) and writer_gone(entry[len(prefix):].rsplit("-", 1)[0]):
                 path = os.path.join(folder, entry)
                 shutil.rmtree(path) if os.path.isdir(path) else os.unlink(path)
 
 
-def process_runs(pid):
+def process_stat(pid):
+    """(state, start in clock ticks after boot) of process `pid` from /proc, or None."""
     try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
+        with open(f"/proc/{pid}/stat", encoding="utf-8", errors="replace") as stat:
+            fields = stat.read().rsplit(")", 1)[1].split()
+    except (OSError, IndexError):
+        return None
+    return fields[0], fields[19]
+
+
+def process_start(pid):
+    stat = process_stat(pid)
+    return stat[1] if stat else "0"
+
+
+def writer_gone(identity):
+    """Whether the writer "PID.START" (or "PID", as older names hold) of a temporary is gone:
+    no such process, a zombie, or a later process that took its pid (another start)."""
+    pid, _, start = identity.partition(".")
+    if not pid.isdigit():
         return False
-    except PermissionError:
+    stat = process_stat(int(pid))
+    if stat is None:
         return True
-    return True
+    state, started = stat
+    return state in ("Z", "X") or (start != "" and start != started)
 
 
 def read_manifest(folder):

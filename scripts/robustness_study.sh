@@ -10,9 +10,10 @@
 # DIR/transfer/ is the run's results directory, DIR/robustness.md the table and
 # DIR/robustness.png the figure. Run again after a kill, it resumes: an interrupted run
 # (DIR/transfer.partial) carries on from its finished tasks, so the bytes are those of an
-# uninterrupted run. It refuses a DIR it did not make. A refusal (exit 2, one line) leaves
-# nothing behind: the options are checked before DIR is made, and a DIR this run made is
-# removed again when cbbg refuses the study's command.
+# uninterrupted run. It refuses a DIR it did not make, and one another invocation is using
+# (two at once on one DIR: the second is refused). A refusal (exit 2, one line) leaves
+# nothing behind: the options, and the run's command by cbbg, are checked before DIR is made,
+# and a DIR this run made is removed again should cbbg refuse the command all the same.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 study=robustness_study.sh
@@ -32,10 +33,6 @@ done
 # shellcheck source=study_kit.sh
 source "$here/study_kit.sh"
 study_check_options
-marker_name=.cbbg-robustness-study
-settings="plant=$plant seeds=$seeds"
-study_folder_open
-
 # The perturbations: each key's values, the nominal robot (1 or 0) among them; each value is
 # one of transfer.conditions.
 grids=(
@@ -54,6 +51,18 @@ done
 # largest the PD supervisor survives from every angle on both plants, 80 N fells it (measured,
 # README). A push through the motors (evaluation.push_torque) is bounded by their 5 N m limit.
 push_duration=0.5
+transfer_args=(--experiment transfer --set transfer.training=exp3 --set plant.kind="$plant"
+  --set "arms=[cbbg, bg_only, pd_only]" --seeds "$seeds" --jobs "$jobs"
+  --set evaluation.push_duration=$push_duration --set "transfer.conditions=[$conditions]"
+  --no-figures)
+# The run checked by cbbg before anything is made.
+study_probe "the transfer run" "${transfer_args[@]}"
+
+marker_name=.cbbg-robustness-study
+settings="plant=$plant seeds=$seeds"
+study_folder_open
+study_remove_leftovers "$out"
+
 run="$out/transfer"
 status=0
 if [[ -e "$run.partial" || -e "$run/.cbbg-run" ]]; then
@@ -62,11 +71,9 @@ if [[ -e "$run.partial" || -e "$run/.cbbg-run" ]]; then
 elif [[ -d "$run" ]]; then
   echo "robustness_study.sh: the transfer run is done ($run)" >&2
 else
-  "$cbbg" run --experiment transfer --set transfer.training=exp3 --set plant.kind="$plant" \
-    --set "arms=[cbbg, bg_only, pd_only]" --seeds "$seeds" --jobs "$jobs" \
-    --set evaluation.push_duration=$push_duration --set "transfer.conditions=[$conditions]" \
-    --no-figures --out "$run" || status=$?
+  "$cbbg" run "${transfer_args[@]}" --out "$run" || status=$?
   if [[ $status == 2 ]]; then study_folder_take_back; fi
 fi
 [[ $status == 0 ]] || exit "$status"
+study_refuse_temporaries
 /usr/bin/python3 "$here/robustness_report.py" "$out"

@@ -7,10 +7,18 @@
 # study_check_options checks the options every study has, before anything is made, and finds
 # cbbg; study_folder_open (with settings, one line of what the study was started with, and
 # marker_name, the file that marks the folder as the study's) refuses (exit 2) a folder it
-# did not make or that holds another study, else makes it so that no kill leaves one the
-# next run would refuse, and sets `made` to what it created (empty when it resumes);
-# study_folder_take_back removes a folder this invocation made while it holds only its
-# marker (cbbg refused the study's first command).
+# did not make, one that holds another study, or one another invocation is using, else makes
+# it so that no kill leaves one the next run would refuse, takes its lock, and sets `made` to
+# what it created (empty when it resumes); study_remove_leftovers and study_refuse_temporaries
+# keep a killed invocation's temporaries out of a finished study; study_folder_take_back
+# removes a folder this invocation made while it holds only its marker (cbbg refused the
+# study's first command).
+#
+# The lock: the marker itself, flocked (fd 9) for as long as the study runs. Every process
+# the study starts inherits it, so a cbbg that outlives a killed study keeps its study locked
+# until it ends too; the kernel drops it however they end. A new folder is made, and a made
+# one taken back, under a second lock (fd 8), on the folder's parent, held a moment: two
+# studies starting at once on one new --out make it once, and the second is refused.
 
 study_check_options() {
   [[ -n "$out" ]] || usage "--out DIR is required"
@@ -27,7 +35,33 @@ study_check_options() {
   [[ -x "$cbbg" ]] || cbbg="$(command -v cbbg || true)"
   [[ -n "$cbbg" && -x "$cbbg" ]] ||
     { echo "$study: no cbbg found (build it: scripts/build.sh, or set CBBG)" >&2; exit 1; }
+  command -v flock >/dev/null ||
+    { echo "$study: no flock found (it locks the study; Debian's util-linux has it)" >&2; exit 1; }
   while [[ "$out" == */ && "$out" != / ]]; do out="${out%/}"; done  # DIR.new-study is beside DIR
+}
+
+# study_probe WHAT ARGS...: cbbg checks `cbbg run ARGS...` as it would start it (every key and
+# value, the arms, the protocol) and stops at its --out, /dev/null, which it refuses as not a
+# folder: that refusal, and no other, is a command it would run. Any other exits here with
+# cbbg's own words, naming WHAT (the run or the variant) and nothing made.
+study_probe() {
+  local what="$1" status=0 said line
+  shift
+  said="$("$cbbg" run "$@" --out /dev/null 2>&1 >/dev/null)" || status=$?
+  line="$(grep -m1 ': error: ' <<<"$said" || true)"
+  if [[ $status == 2 && "$line" == *": error: --out '/dev/null' is a file; give a directory path" ]]
+  then
+    return 0
+  fi
+  [[ -n "$line" ]] || line="$(tail -n 1 <<<"$said")"
+  [[ -n "$line" ]] || line="exited $status, saying nothing"
+  line="${line#*: error: }"
+  if [[ $status == 2 ]]; then
+    echo "$study: $what: $line" >&2
+    exit 2
+  fi
+  echo "$study: $what: cbbg could not check it: $line" >&2
+  exit 1
 }
 
 # Removes `folder` if it holds at most the marker (a study's start or take-back, killed);
@@ -55,35 +89,113 @@ study_folder_first_missing() {
   echo "$missing"
 }
 
+# Waits for the lock of DIR's parent (fd 8), which only making and taking back a study's
+# folder hold, a moment each. Returns 1 when the parent was removed while it waited (a
+# take-back of a new parent): the caller looks again.
+study_parent_lock() {
+  local parent
+  parent="$(dirname "$out")"
+  exec 8<"$parent" || { echo "$study: cannot open $parent to make $out in it" >&2; exit 1; }
+  flock 8
+  [[ "$parent" -ef /dev/fd/8 ]] && return 0
+  exec 8<&-
+  return 1
+}
+
+study_in_use() {
+  echo "$study: $out is in use by another $study (or the cbbg it started); wait for it to end" >&2
+  exit 2
+}
+
 study_folder_open() {
   marker="$out/$marker_name"
-  # The folder is made under this name beside it, marked, then renamed into place.
+  # The folder is made under this name beside it, marked, locked, then renamed into place.
   staging="$out.new-study"
-  if [[ -e "$out" && ! -f "$marker" ]]; then
-    echo "$study: $out exists and was not made by this script; choose a new --out" >&2
-    exit 2
-  fi
-  if [[ -f "$marker" && "$(cat "$marker")" != "$settings" ]]; then
-    echo "$study: $out holds a study with $(cat "$marker"); this one has $settings" >&2
-    exit 2
-  fi
   made=""
-  if [[ ! -e "$out" ]]; then
-    [[ ! -e "$staging" ]] || study_folder_remove_unstarted "$staging"
+  while true; do
+    if [[ -e "$out" || -L "$out" ]]; then
+      if [[ ! -f "$marker" ]]; then
+        echo "$study: $out exists and was not made by this script; choose a new --out" >&2
+        exit 2
+      fi
+      if ! { exec 9<"$marker"; } 2>/dev/null; then
+        [[ -e "$marker" ]] || continue  # taken back meanwhile
+        echo "$study: cannot open $marker to lock $out" >&2
+        exit 1
+      fi
+      local recorded
+      recorded="$(cat <&9)"
+      if [[ "$recorded" != "$settings" ]]; then
+        echo "$study: $out holds a study with $recorded; this one has $settings" >&2
+        exit 2
+      fi
+      flock -n 9 || study_in_use
+      # Taken back by the invocation that made it while this one opened it: look again.
+      [[ "$marker" -ef /dev/fd/9 ]] && return 0
+      exec 9<&-
+      continue
+    fi
     made="$(study_folder_first_missing "$out")"
     mkdir -p "$(dirname "$out")"
+    study_parent_lock || continue
+    if [[ -e "$out" || -L "$out" ]]; then  # another invocation made it meanwhile
+      exec 8<&-
+      made=""
+      continue
+    fi
+    # Under the parent's lock a staging folder is one whose maker was killed.
+    [[ ! -e "$staging" && ! -L "$staging" ]] || study_folder_remove_unstarted "$staging"
     mkdir "$staging"
-    echo "$settings" > "$staging/$marker_name"
+    echo "$settings" >"$staging/$marker_name"
+    exec 9<"$staging/$marker_name"
+    flock -n 9 || study_in_use  # cannot be: no one else knows of it yet
     mv -T "$staging" "$out"
-  fi
+    exec 8<&-
+    return 0
+  done
+}
+
+# study_remove_leftovers FOLDER...: the temporaries a killed invocation left in FOLDERs (the
+# study's own folders, beside its runs: a cbbg run's staging folder .RUN.partial.cbbg-tmp-*,
+# a report's .NAME.cbbg-tmp-*), removed. Under the study's lock no process of a killed
+# invocation runs (it would hold the lock), so they are stale whatever their pid says (a pid
+# may have been reused since; cbbg and the report judge them by it, and keep them). A
+# staging folder whose lock (.cbbg-lock) a live cbbg holds is someone else's: refused. What
+# a run's own folder holds (RUN.partial) is cbbg's: its --resume removes it.
+study_remove_leftovers() {
+  local folder leftover
+  for folder in "$@"; do
+    [[ -d "$folder" && ! -L "$folder" ]] || continue
+    while IFS= read -r -d '' leftover; do
+      if [[ -f "$leftover/.cbbg-lock" ]] && ! (exec 7<"$leftover/.cbbg-lock" && flock -n 7)
+      then
+        echo "$study: $leftover is in use by another cbbg run; wait for it to end" >&2
+        exit 2
+      fi
+      rm -rf -- "$leftover"
+    done < <(find "$folder" -mindepth 1 -maxdepth 1 -name '*.cbbg-tmp-*' -print0)
+  done
+}
+
+# The last check before the report: no temporary, and no unfinished run, anywhere in the
+# study (exit 1 naming the first), so a finished study never holds a half-written file.
+study_refuse_temporaries() {
+  local found
+  found="$(find "$out" \( -name '*.cbbg-tmp-*' -o -name '*.partial' -o -name .cbbg-run \) \
+             -print -quit)"
+  [[ -z "$found" ]] && return 0
+  echo "$study: not publishing $out: it holds $found, a half-written file; run the study again" >&2
+  exit 1
 }
 
 # cbbg refused the command of a study this invocation began (exit 2: it wrote nothing), so
 # that the corrected command is not refused: the folder goes back to its temporary name in
-# one step and is removed there, with the parents made above (rmdir removes only empty ones).
+# one step and is removed there, with the parents made above (rmdir removes only empty ones),
+# under the parent's lock.
 study_folder_take_back() {
   [[ -n "$made" ]] || return 0
   [[ -z "$(find "$out" -mindepth 1 -maxdepth 1 ! -name "$marker_name")" ]] || return 0
+  study_parent_lock || return 0
   mv -T "$out" "$staging"
   study_folder_remove_unstarted "$staging"
   local dir
@@ -91,4 +203,5 @@ study_folder_take_back() {
   while [[ "$out" != "$made" ]] && rmdir "$dir" 2>/dev/null && [[ "$dir" != "$made" ]]; do
     dir="$(dirname "$dir")"
   done
+  exec 8<&- 9<&-
 }

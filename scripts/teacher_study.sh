@@ -15,8 +15,10 @@
 # DIR/VARIANT/transfer and DIR/VARIANT/exp2 are cbbg results directories, DIR/teacher.md the
 # table. Run again after a kill, it resumes each run from its finished tasks (the bytes of an
 # uninterrupted study) and skips the finished ones; run with more --variants, it adds them.
-# It refuses a DIR it did not make or of another plant or seed count, and a refusal (exit 2,
-# one line) leaves nothing behind.
+# It refuses a DIR it did not make, of another plant or seed count, or that another
+# invocation is using (two at once on one DIR: the second is refused); every variant's runs
+# are checked by cbbg before anything is made, and a refusal (exit 2, one line naming the
+# variant and what cbbg refused) leaves nothing behind.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 study=teacher_study.sh
@@ -52,7 +54,11 @@ config_of() {
   esac
 }
 name_of() { basename -- "$1" .yaml; }
+names=" "
 for variant in "${chosen[@]}"; do
+  [[ "$names" != *" $(name_of "$variant") "* ]] ||
+    usage "--variants: two variants named $(name_of "$variant") (each has its folder DIR/NAME)"
+  names+="$(name_of "$variant") "
   if [[ "$variant" == *.yaml ]]; then
     [[ -f "$variant" ]] || usage "--variants: no config file '$variant'"
     [[ "$(name_of "$variant")" =~ ^[a-z][a-z0-9_]*$ && "$(name_of "$variant")" != paper ]] ||
@@ -63,16 +69,41 @@ for variant in "${chosen[@]}"; do
   fi
 done
 
-marker_name=.cbbg-teacher-study
-# The variants are not part of it: a study grows by variants, each paired with the same seeds.
-settings="plant=$plant seeds=$seeds"
-study_folder_open
-
 # The robustness conditions: the nominal robot, the heaviest and highest of the robustness
 # study, its noise that the learnt actors failed, and the largest push from outside that the
 # PD supervisor survives (74 N at the centre of mass for 0.5 s; 80 N fells it).
 conditions="evaluation.noise_std=0, evaluation.body_mass_scale=1.3, evaluation.com_height_scale=1.3"
 conditions+=", evaluation.noise_std=0.05, evaluation.push_force=74"
+
+# runs_of VARIANT: the commands of its two runs (`cbbg run` with them and --out), in
+# transfer_args and exp2_args.
+runs_of() {
+  local config=() arms="[cbbg, bg_only]"
+  [[ "$1" == paper ]] || config=(--config "$(config_of "$1")")
+  # The PD supervisor learns nothing: the paper's run evaluates it once for every variant.
+  [[ "$1" != paper ]] || arms="[cbbg, bg_only, pd_only]"
+  local common=(--seeds "$seeds" --jobs "$jobs" --set plant.kind="$plant" --no-figures)
+  transfer_args=(--experiment transfer "${config[@]}" --set transfer.training=exp3
+    --set "arms=$arms" --set evaluation.push_duration=0.5 --set "transfer.conditions=[$conditions]"
+    "${common[@]}")
+  exp2_args=(--experiment exp2 "${config[@]}" "${common[@]}")
+}
+
+# Every variant's runs checked by cbbg before anything is made: a key it refuses in the last
+# variant refuses the study, not the study after the paper's runs.
+for variant in "${chosen[@]}"; do
+  runs_of "$variant"
+  what="--variants $variant"
+  [[ "$variant" != paper ]] || what="the paper's runs"
+  study_probe "$what" "${transfer_args[@]}"
+  study_probe "$what" "${exp2_args[@]}"
+done
+
+marker_name=.cbbg-teacher-study
+# The variants are not part of it: a study grows by variants, each paired with the same seeds.
+settings="plant=$plant seeds=$seeds"
+study_folder_open
+study_remove_leftovers "$out" "$out"/*/
 
 # run_or_resume DIR ARGS...: cbbg run ARGS... --out DIR, or --resume DIR after a kill, or
 # nothing when DIR is done. Exits with cbbg's status when it fails.
@@ -83,8 +114,7 @@ run_or_resume() {
     "$cbbg" run --resume "$run" --jobs "$jobs" || status=$?
   elif [[ ! -d "$run" ]]; then
     mkdir -p "$(dirname "$run")"
-    "$cbbg" run "$@" --seeds "$seeds" --jobs "$jobs" --set plant.kind="$plant" --no-figures \
-      --out "$run" || status=$?
+    "$cbbg" run "$@" --out "$run" || status=$?
     if [[ $status == 2 ]]; then
       rmdir "$(dirname "$run")" 2>/dev/null || true
       study_folder_take_back
@@ -94,15 +124,10 @@ run_or_resume() {
 }
 
 for variant in "${chosen[@]}"; do
-  config=()
-  [[ "$variant" == paper ]] || config=(--config "$(config_of "$variant")")
-  # The PD supervisor learns nothing: the paper's run evaluates it once for every variant.
-  arms="[cbbg, bg_only]"
-  [[ "$variant" != paper ]] || arms="[cbbg, bg_only, pd_only]"
+  runs_of "$variant"
   name="$(name_of "$variant")"
-  run_or_resume "$out/$name/transfer" --experiment transfer "${config[@]}" \
-    --set transfer.training=exp3 --set "arms=$arms" --set evaluation.push_duration=0.5 \
-    --set "transfer.conditions=[$conditions]"
-  run_or_resume "$out/$name/exp2" --experiment exp2 "${config[@]}"
+  run_or_resume "$out/$name/transfer" "${transfer_args[@]}"
+  run_or_resume "$out/$name/exp2" "${exp2_args[@]}"
 done
+study_refuse_temporaries
 /usr/bin/python3 "$here/teacher_report.py" "$out"

@@ -2,8 +2,9 @@
 # The robustness study end to end, small (analytic plant, 2 seeds): a refused command leaves
 # nothing that would refuse the corrected one; it writes a table of every perturbation's
 # values; killed part-way (a SIGKILL while training, cbbg's fault hook while training and
-# after publishing) and run again, it ends with the bytes of an uninterrupted study; and it
-# refuses a folder it did not make.
+# after publishing) and run again, also beside leftovers named after a live pid, it ends with
+# the bytes of an uninterrupted study; of two at once on one new folder, one runs and the
+# other is refused, leaving nothing; and it refuses a folder it did not make.
 #   test_robustness_study.sh BUILD_DIR
 set -euo pipefail
 export CBBG="$(cd "$1" && pwd)/apps/cbbg"
@@ -32,8 +33,9 @@ refused "robustness_study.sh: --jobs must be a whole number from 1 to 1024; got 
 # cbbg refusing the study's first command for a reason of its own (an unknown key here).
 printf '#!/bin/sh\nexec "%s" "$@" --set no_such_key=1\n' "$CBBG" >"$scratch/refusing-cbbg"
 chmod +x "$scratch/refusing-cbbg"
-CBBG="$scratch/refusing-cbbg" \
-  refused "cbbg: error: --set no_such_key=1: unknown key 'no_such_key'" --plant analytic --seeds 2
+CBBG="$scratch/refusing-cbbg" refused \
+  "robustness_study.sh: the transfer run: --set no_such_key=1: unknown key 'no_such_key'" \
+  --plant analytic --seeds 2
 
 # The corrected command.
 "$study" --plant analytic --seeds 2 --jobs 2 --out "$whole" >/dev/null 2>&1
@@ -78,6 +80,49 @@ CBBG_FAULT_AT=commit:clean "$study" --seeds 2 --jobs 2 --out "$scratch/published
 diff -r "$whole" "$scratch/published" ||
   fail "the study stopped after a publish and run again differs from the whole one"
 
+# Stopped while training, then beside the run the staging folder of a killed cbbg and a
+# half-written table, named after a pid that runs (as a reused pid would): run again, the
+# study removes them under its lock and ends with the whole one's bytes. A staging folder
+# whose lock a live process holds is another cbbg's: refused, and left as it was.
+status=0
+CBBG_FAULT_AT=task:record@3 "$study" --seeds 2 --jobs 1 --out "$scratch/leftover" \
+  >/dev/null 2>&1 || status=$?
+[[ "$status" == 86 ]] || fail "the fault hook did not stop the study (exit $status)"
+leftover="$scratch/leftover/.transfer.partial.cbbg-tmp-$(hostname)-$$-0"
+mkdir -p "$leftover/tasks"
+: >"$leftover/.cbbg-lock"
+echo "half a table" >"$scratch/leftover/.robustness.md.cbbg-tmp-$(hostname)-$$-0"
+exec 7<"$leftover/.cbbg-lock"
+flock 7
+status=0
+"$study" --seeds 2 --jobs 2 --out "$scratch/leftover" 2>"$scratch/err" || status=$?
+[[ "$status" == 2 && "$(cat "$scratch/err")" == "robustness_study.sh: $leftover is in use by another cbbg run; wait for it to end" &&
+   -d "$leftover" ]] ||
+  fail "a staging folder a live cbbg holds was not refused (exit $status): $(cat "$scratch/err")"
+exec 7<&-
+"$study" --seeds 2 --jobs 2 --out "$scratch/leftover" >/dev/null 2>&1 ||
+  fail "the study beside its leftovers failed"
+diff -r "$whole" "$scratch/leftover" || fail "the study run on beside its leftovers differs"
+
+# Two at once on one new --out: one makes the study, the other is refused with one line
+# naming it and leaves nothing; the study is the whole one's.
+for k in 1 2; do
+  { status=0
+    "$study" --seeds 2 --jobs 2 --out "$scratch/twice/study" >/dev/null 2>"$scratch/err.$k" ||
+      status=$?
+    echo "$status"; } >"$scratch/status.$k" &
+done
+wait
+statuses="$(cat "$scratch/status.1" "$scratch/status.2" | sort | tr '\n' ' ')"
+[[ "$statuses" == "0 2 " ]] || fail "two studies at once exited $statuses"
+for k in 1 2; do
+  [[ "$(cat "$scratch/status.$k")" != 2 ||
+     "$(cat "$scratch/err.$k")" == "robustness_study.sh: $scratch/twice/study is in use by another robustness_study.sh (or the cbbg it started); wait for it to end" ]] ||
+    fail "the second study at once said: $(cat "$scratch/err.$k")"
+done
+[[ "$(ls -A "$scratch/twice")" == study ]] || fail "two studies at once left $(ls -A "$scratch/twice")"
+diff -r "$whole" "$scratch/twice/study" || fail "the study run beside a refused one differs"
+
 # A folder it did not make, and another study's settings.
 mkdir "$scratch/mine"
 status=0
@@ -95,4 +140,5 @@ status=0
     "$scratch/err" ||
   fail "--seeds 0 was not refused with exit 2 before any folder was made: $(cat "$scratch/err")"
 echo "test_robustness_study: refusals leave nothing; 21 rows; killed while training, or" \
-  "stopped after a publish, and run again to the same bytes; foreign folders refused"
+  "stopped after a publish, and run again to the same bytes, beside leftovers too; two at once:" \
+  "one refused; foreign folders refused"
