@@ -17,6 +17,17 @@
 
 namespace {
 
+// A number as --set reads one: decimal (1.5, -2, 1e3, nan, inf), never hexadecimal or octal,
+// which CLI11 alone would take ("0x10" as 16).
+const CLI::Validator kDecimal(
+    [](std::string& text) {
+      double value = 0.0;
+      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+      const bool decimal = error == std::errc() && end == text.data() + text.size();
+      return decimal ? std::string() : "must be a decimal number; got '" + text + "'";
+    },
+    "DECIMAL");
+
 // --jobs as typed: an integer from 1 to 1024.
 bool parse_jobs(const std::string& text, int& jobs) {
   int value = 0;
@@ -163,16 +174,25 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
                        "override one key: --set plant.kind=analytic (repeatable)");
   eval_app->add_option("--angles", eval.angles,
                        "initial pitches, rad, comma-separated (default: evaluation.angles)");
-  eval_app->add_option("--repeats", eval.repeats, "runs per angle, seeds seed, seed + 1, ...");
-  eval_app->add_option("--push-time", eval.push_time,
-                       "push start, s (with --push-duration and a push size)");
-  eval_app->add_option("--push-torque", eval.push_torque,
-                       "push through the motors: N m added to both wheels' torque");
-  eval_app->add_option("--push-force", eval.push_force,
-                       "push from outside: N at the body's centre of mass, along the heading");
-  eval_app->add_option("--push-pitch-torque", eval.push_pitch_torque,
-                       "push from outside: N m on the body about the axle");
-  eval_app->add_option("--push-duration", eval.push_duration, "push length, s");
+  eval_app->add_option("--repeats", eval.repeats, "runs per angle, seeds seed, seed + 1, ...")
+      ->check(kDecimal);
+  eval_app
+      ->add_option("--push-time", eval.push_time,
+                   "push start, s (with --push-duration and a push size)")
+      ->check(kDecimal);
+  eval_app
+      ->add_option("--push-torque", eval.push_torque,
+                   "push through the motors: N m added to both wheels' torque")
+      ->check(kDecimal);
+  eval_app
+      ->add_option("--push-force", eval.push_force,
+                   "push from outside: N at the body's centre of mass, along the heading")
+      ->check(kDecimal);
+  eval_app
+      ->add_option("--push-pitch-torque", eval.push_pitch_torque,
+                   "push from outside: N m on the body about the axle")
+      ->check(kDecimal);
+  eval_app->add_option("--push-duration", eval.push_duration, "push length, s")->check(kDecimal);
   eval_app->add_flag("--linearise", eval.linearise,
                      "also print the actor's slopes at rest and the closed loop's modes");
   eval_app->add_option("--out,-o", eval.out, "write DIR/evaluation.csv");

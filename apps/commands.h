@@ -35,6 +35,9 @@ int run_command(const RunOptions& options);
 // before any work: the edge below which nothing reads the config again. Throws
 // config::ConfigError.
 config::Parameters checked_parameters(const config::Config& config);
+// Before any work: every arm of the run built once (experiments/arm_checks.h), and `jobs`
+// of its tasks at once within the machine's memory. Throws config::ConfigError.
+void check_arms_and_memory(const config::Parameters& parameters, int jobs);
 // cbbg run as a sweep (apps/sweep_command.cc): `base` and `sweep` resolved from `options`.
 int sweep_command(const RunOptions& options, const config::Config& base,
                   const config::Sweep& sweep);

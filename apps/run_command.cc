@@ -179,7 +179,9 @@ void check_initial_weights(const experiments::LearntWeights& weights,
                            const std::filesystem::path& file) {
   for (const std::string& name : experiments::experiment_arms(parameters.run)) {
     const diagrams::ClosedLoop loop = diagrams::named_arm(name).learner(parameters);
-    if (loop.learner.learns()) store::check_layout(weights, loop.layout, file);
+    if (loop.learner.learns()) {
+      store::check_weights(weights, parameters.plant.kind, loop.layout, file);
+    }
   }
 }
 
@@ -214,6 +216,7 @@ PreparedRun prepare(const RunOptions& options) {
     run.config = resolve(options);
   }
   run.parameters = checked_parameters(run.config);
+  check_arms_and_memory(run.parameters, options.jobs);
   if (!options.save_weights.empty()) {
     const long long learning = learning_runs(run.parameters.run);
     if (learning == 0) {
@@ -315,11 +318,17 @@ std::string way_forward(const store::RunDirectory& directory, const std::excepti
 
 }  // namespace
 
+void check_arms_and_memory(const config::Parameters& parameters, int jobs) {
+  const std::size_t tasks = experiments::experiment_arms(parameters.run).size() *
+                            static_cast<std::size_t>(parameters.run.seeds);
+  experiments::check_run_memory(experiments::check_arms_build(parameters),
+                                std::min(tasks, static_cast<std::size_t>(jobs)));
+}
+
 config::Parameters checked_parameters(const config::Config& config) {
   config::Parameters parameters = diagrams::validated_parameters(config);
   experiments::check_run_names(parameters.run);
   experiments::check_evaluation_conditions(parameters);
-  experiments::check_arms_build(parameters);
   return parameters;
 }
 

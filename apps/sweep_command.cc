@@ -39,8 +39,9 @@ std::size_t point_tasks(const config::RunParams& point) {
   return experiments::experiment_arms(point).size() * static_cast<std::size_t>(point.seeds);
 }
 
-// Checks every grid point's config before anything runs.
-SweepPlan plan(config::Config base, config::Sweep sweep) {
+// Checks every grid point's config before anything runs; with `jobs` (a shard about to
+// run), builds each point's arms once and checks `jobs` tasks at once fit in memory.
+SweepPlan plan(config::Config base, config::Sweep sweep, std::optional<int> jobs = {}) {
   SweepPlan result{std::move(base), std::move(sweep), {}, {}, {}, 0};
   result.sweep.check(result.base);
   for (std::size_t p = 0; p < result.sweep.points(); ++p) {
@@ -48,6 +49,7 @@ SweepPlan plan(config::Config base, config::Sweep sweep) {
     try {
       result.parameters.push_back(checked_parameters(result.points.back()));
       experiments::check_protocol(result.parameters.back(), nullptr);  // sweeps start from zero
+      if (jobs) check_arms_and_memory(result.parameters.back(), *jobs);
     } catch (const config::ConfigError& error) {
       throw config::ConfigError("grid point " + store::point_name(p, result.sweep.points()) + ": " +
                                 error.what());
@@ -180,7 +182,7 @@ int sweep_command(const RunOptions& options, const config::Config& base,
           "--save-weights or --replace; run the same command again to continue it");
     }
     if (options.shard) std::tie(k, n) = parse_shard(*options.shard);
-    sweep_plan = plan(base, sweep);
+    sweep_plan = plan(base, sweep, options.jobs);
     directory.emplace(store::SweepDirectory::open_shard(options.out, sweep_yaml(sweep_plan),
                                                         options.figures, k, n));
   } catch (const config::ConfigError& error) {

@@ -124,7 +124,8 @@ class Parser {
     }
     if (!spec.choices.empty() &&
         std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {
-      fail(label + " must be one of " + join(spec.choices) + "; got '" + value + "'");
+      fail(label + " must be one of " + join(spec.choices) + "; got '" +
+           shown_text(value, std::string::npos) + "'");
     }
     return value;
   }
@@ -456,7 +457,7 @@ void Config::merge_file(const std::filesystem::path& path) {
 }
 
 void Config::set(std::string_view assignment, std::string source) {
-  if (source.empty()) source = "--set " + std::string(assignment);
+  if (source.empty()) source = "--set " + shown_text(assignment, std::string::npos);
   const auto equals = assignment.find('=');
   if (equals == std::string_view::npos || equals == 0) {
     throw ConfigError(source + ": expected key.path=value");

@@ -91,7 +91,7 @@ void Sweep::add_axis(SweepAxis axis) {
 }
 
 void Sweep::add_flag(std::string_view assignment) {
-  const std::string source = "--grid " + std::string(assignment);
+  const std::string source = "--grid " + shown_text(assignment, std::string::npos);
   const auto equals = assignment.find('=');
   if (equals == std::string_view::npos || equals == 0) {
     throw ConfigError(source + ": give KEY=V1,V2,... (e.g. --grid actor.alpha=0.1,0.2)");

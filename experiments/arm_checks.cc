@@ -1,5 +1,11 @@
 #include "cbbg/experiments/arm_checks.h"
 
+#include <malloc.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -7,6 +13,8 @@
 #include "cbbg/blocks/weight_learner.h"
 #include "cbbg/diagrams/arms.h"
 #include "cbbg/experiments/protocols.h"
+#include "cbbg/experiments/trial_runner.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::experiments {
 namespace {
@@ -36,12 +44,53 @@ void check_features(const std::string& name, const diagrams::ClosedLoop& loop) {
                             "layout: " + (keys.empty() ? "none" : config::join(keys)) + ")");
 }
 
+// The bytes the C library's heap holds now (glibc's mallinfo2).
+std::size_t heap_in_use() { return ::mallinfo2().uordblks; }
+
+// "1.2 GB", "350 MB": a size in messages.
+std::string size_text(double bytes) {
+  const bool gigabytes = bytes >= 1e9;
+  return format_number(std::round(bytes / (gigabytes ? 1e8 : 1e5)) / 10.0) +
+         (gigabytes ? " GB" : " MB");
+}
+
+// MemAvailable of /proc/meminfo, in bytes; 0 when it cannot be read.
+double available_memory() {
+  std::ifstream meminfo("/proc/meminfo");
+  for (std::string line; std::getline(meminfo, line);) {
+    std::istringstream fields(line);
+    std::string key;
+    double kilobytes = 0.0;
+    if (fields >> key >> kilobytes && key == "MemAvailable:") return kilobytes * 1024.0;
+  }
+  return 0.0;
+}
+
 }  // namespace
 
-void check_arms_build(const config::Parameters& parameters) {
+std::size_t check_arms_build(const config::Parameters& parameters) {
+  std::size_t largest = 0;
   for (const std::string& name : experiment_arms(parameters.run)) {
-    check_features(name, build_arm(name, parameters));
+    const std::size_t before = heap_in_use();
+    const diagrams::ClosedLoop loop = build_arm(name, parameters);
+    check_features(name, loop);
+    const TrialRunner runner(loop, 0, parameters.trial.period);
+    const std::size_t after = heap_in_use();
+    largest = std::max(largest, after > before ? after - before : 0);
   }
+  return largest;
+}
+
+void check_run_memory(std::size_t task_bytes, std::size_t threads) {
+  const double needed = static_cast<double>(task_bytes) * static_cast<double>(threads);
+  const double available = available_memory();
+  if (available <= 0.0 || needed <= available) return;
+  throw config::ConfigError("this run would hold about " + size_text(needed) + " (" +
+                            size_text(static_cast<double>(task_bytes)) + " per task, " +
+                            std::to_string(threads) + " at once) and the machine has " +
+                            size_text(available) +
+                            " available: lower --jobs, or the features (rbf.centres, "
+                            "normaliser.inputs, a layout of your own)");
 }
 
 }  // namespace cbbg::experiments

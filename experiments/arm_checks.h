@@ -5,13 +5,22 @@
 // --resume could never finish; and what each learner would store fits what a weights file
 // and a task record hold (blocks::kMaxFeatures).
 
+#include <cstddef>
+
 #include "cbbg/config/parameters.h"
 
 namespace cbbg::experiments {
 
-// Builds the closed loop of every arm `parameters.run` runs (experiment_arms), each once.
-// Throws config::ConfigError naming the arm and the factory's reason, or the arm, its
-// feature count, its layout's keys and the limit.
-void check_arms_build(const config::Parameters& parameters);
+// Builds the closed loop of every arm `parameters.run` runs (experiment_arms), each once,
+// with the runner of its trials. Throws config::ConfigError naming the arm and the
+// factory's reason, or the arm, its feature count, its layout's keys and the limit. Returns
+// the most memory one task holds, in bytes, as the heap grew building one (0 where the C
+// library does not say).
+std::size_t check_arms_build(const config::Parameters& parameters);
+
+// Before any work: `threads` tasks at once of `task_bytes` each fit in the memory the machine
+// has available (Linux /proc/meminfo's MemAvailable; no check where it cannot be read).
+// Throws config::ConfigError with the figures and what to lower.
+void check_run_memory(std::size_t task_bytes, std::size_t threads);
 
 }  // namespace cbbg::experiments

@@ -186,6 +186,7 @@ class Block {
 
  private:
   friend class DiagramBuilder;
+  friend class Diagram;  // a diagram that ends releases its children (~Diagram)
 
   void check_new_port_name(const std::string& name, int size) const;
   void check_no_continuous_state() const;

@@ -8,6 +8,10 @@
 
 namespace cbbg {
 
+Diagram::~Diagram() {
+  for (const auto& child : blocks_) child->parent_ = nullptr;
+}
+
 const Block& Diagram::block(std::string_view name) const {
   for (const auto& child : blocks_) {
     if (child->name() == name) return *child;

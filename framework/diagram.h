@@ -31,6 +31,10 @@ class Diagram : public Block {
     Vector value;
   };
 
+  // Its children, shared with whoever else holds them (a Python script), belong to no
+  // diagram any more: their paths become their names, and they may join another.
+  ~Diagram() override;
+
   bool is_diagram() const override { return true; }
 
   // Children, in the order they were added.

@@ -1,13 +1,11 @@
 #include "cbbg/store/output_guard.h"
 
 #include <signal.h>
-#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
-#include <chrono>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -50,36 +48,49 @@ bool process_runs(long long pid) {
   return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
 }
 
-// When process `pid` started, on the clock of file times (Linux /proc/PID/stat, field 22:
-// clock ticks after boot); nullopt when it cannot be read.
-std::optional<fs::file_time_type> process_start(long long pid) {
+// What /proc/PID/stat says of process `pid`: its state (field 3) and its start time in clock
+// ticks after boot (field 22), which no later process with the same pid shares.
+struct ProcessStat {
+  char state = '?';
+  long long start = -1;
+};
+std::optional<ProcessStat> process_stat(long long pid) {
   std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
   std::string text;
-  std::getline(stat, text);
+  if (!std::getline(stat, text)) return std::nullopt;
   const auto name_end = text.rfind(')');  // the command's name may hold spaces and ')'
   if (name_end == std::string::npos) return std::nullopt;
   std::istringstream fields(text.substr(name_end + 1));
+  ProcessStat process;
+  fields >> process.state;
   std::string skipped;
-  for (int field = 3; field < 22; ++field) fields >> skipped;
-  long long ticks = 0;
-  timespec boot{};
-  if (!(fields >> ticks) || ::clock_gettime(CLOCK_BOOTTIME, &boot) != 0) return std::nullopt;
-  const double running = static_cast<double>(boot.tv_sec) +
-                         1e-9 * static_cast<double>(boot.tv_nsec) -
-                         static_cast<double>(ticks) / static_cast<double>(::sysconf(_SC_CLK_TCK));
-  return fs::file_time_type::clock::now() -
-         std::chrono::duration_cast<fs::file_time_type::duration>(
-             std::chrono::duration<double>(running));
+  for (int field = 4; field < 22; ++field) fields >> skipped;
+  if (!(fields >> process.start)) return std::nullopt;
+  return process;
 }
 
-// Whether the writer `pid` of the temporary `path` is gone: it runs no more, or the process
-// that has its pid now started after the temporary was last written (the pid was reused).
-bool writer_gone(long long pid, const fs::path& path) {
-  if (!process_runs(pid)) return true;
-  std::error_code error;
-  const auto written = fs::last_write_time(path, error);
-  const auto started = process_start(pid);
-  return !error && started && *started > written + std::chrono::seconds(1);
+// This process's identity in its temporaries' names: "PID.START".
+const std::string& own_identity() {
+  static const std::string identity = [] {
+    const long long pid = ::getpid();
+    const auto stat = process_stat(pid);
+    return std::to_string(pid) + "." + std::to_string(stat ? stat->start : 0);
+  }();
+  return identity;
+}
+
+// Whether the writer named "PID.START" (or "PID", before names carried the start) is gone:
+// no such process, a zombie, or another process that has its pid since (another start).
+bool writer_gone(const std::string& identity) {
+  const auto dot = identity.find('.');
+  const std::string pid = identity.substr(0, dot);
+  if (!all_digits(pid)) return false;
+  const auto stat = process_stat(std::stoll(pid));
+  if (!stat) return !process_runs(std::stoll(pid));  // no /proc: the pid alone
+  if (stat->state == 'Z' || stat->state == 'X') return true;
+  if (dot == std::string::npos) return false;
+  const std::string start = identity.substr(dot + 1);
+  return !all_digits(start) || std::stoll(start) != stat->start;
 }
 
 }  // namespace
@@ -92,7 +103,7 @@ fs::path temporary_beside(const fs::path& path) {
   name += kTemporaryTag;
   name += host_name();
   name += '-';
-  name += std::to_string(::getpid());
+  name += own_identity();
   name += '-';
   name += std::to_string(counter++);
   return path.parent_path() / name;
@@ -107,15 +118,15 @@ bool is_stale_temporary(const fs::path& name) {
   const std::string text = name.filename().string();
   const auto tag = text.find(kTemporaryTag);
   if (tag == std::string::npos) return is_legacy_temporary(text);
-  // HOST-PID-N after the tag; the host may hold dashes, so it is split from the right.
+  // HOST-PID.START-N after the tag (HOST-PID-N before); the host may hold dashes, so it is
+  // split from the right.
   const std::string rest = text.substr(tag + std::string_view(kTemporaryTag).size());
   const auto last = rest.rfind('-');
   if (last == std::string::npos || last == 0) return false;
   const auto before = rest.rfind('-', last - 1);
   if (before == std::string::npos) return false;
-  const std::string pid = rest.substr(before + 1, last - before - 1);
-  return rest.substr(0, before) == host_name() && all_digits(pid) &&
-         writer_gone(std::stoll(pid), name);
+  return rest.substr(0, before) == host_name() &&
+         writer_gone(rest.substr(before + 1, last - before - 1));
 }
 
 int remove_temporaries(const fs::path& directory, Leftovers which) {

@@ -22,20 +22,21 @@ namespace cbbg::store {
 using cbbg::carries_tag;  // framework/owned_files.h: what is at a path, and whether it is cbbg's
 using cbbg::non_regular_kind;
 
-// What every temporary name of cbbg holds: .NAME.cbbg-tmp-HOST-PID-N files and staging folders.
+// What every temporary name of cbbg holds: .NAME.cbbg-tmp-HOST-PID.START-N files and staging
+// folders (START: the process's start, which tells it from a later process with its pid).
 inline constexpr const char* kTemporaryTag = ".cbbg-tmp-";
 // The manifest of a directory that cbbg shares with its user (figures/, cbbg eval --out).
 inline constexpr const char* kManifestFile = ".cbbg-written";
 
-// A temporary name for `path`, beside it and hidden: .NAME.cbbg-tmp-HOST-PID-N, unique per
+// A temporary name for `path`, beside it and hidden: .NAME.cbbg-tmp-HOST-PID.START-N, unique per
 // host, process and call (safe from several threads and from shards on several hosts).
 std::filesystem::path temporary_beside(const std::filesystem::path& path);
 
 // Whether `name` is one of cbbg's temporaries (also the NAME.tmp-PID-N of earlier versions).
 bool is_temporary(const std::filesystem::path& name);
 // Whether `name` is a temporary whose writer is gone: made on this host by a process that no
-// longer runs, or whose pid a process started after the temporary was last written has
-// taken (another host's are never judged stale). `name` is a path, for its write time.
+// longer runs, is a zombie, or whose pid another process has taken since (the name holds
+// the writer's pid and start time); another host's are never judged stale.
 bool is_stale_temporary(const std::filesystem::path& name);
 
 enum class Leftovers { kAll, kStale };

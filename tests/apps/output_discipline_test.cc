@@ -179,21 +179,27 @@ TEST_F(OutputDiscipline, MergeRefusesAUsersFileAmongTheTasks) {
 }
 
 TEST_F(OutputDiscipline, StatusAndMergeKnowAnOrdinaryRunFromASweep) {
+  // status tells how far an ordinary run got; merge, for sweeps, refuses it.
   const std::string finished = path("r");
   ASSERT_EQ(run(std::string(kQuick) + " --out " + finished).exit_code, 0);
-  for (const char* command : {"status ", "merge "}) {
-    expect_refused(command + finished,
-                   "'" + finished + "' holds the results of a cbbg run, not of a sweep");
-  }
+  const Outcome done = run("status " + finished);
+  EXPECT_EQ(done.exit_code, 0);
+  EXPECT_EQ(done.output, finished + ": finished results of cbbg run\n");
+  expect_refused("merge " + finished,
+                 "'" + finished + "' holds the results of a cbbg run, not of a sweep");
   const std::string killed = path("k");
-  ASSERT_EQ(run(std::string(kQuick) + " --out " + killed, "CBBG_FAULT_AT=task:record@2").exit_code,
+  ASSERT_EQ(run(std::string(kQuick) + " --jobs 1 --out " + killed, "CBBG_FAULT_AT=task:record@2")
+                .exit_code,
             cbbg::store::kFaultExitCode);
-  for (const char* command : {"status ", "merge "}) {
-    expect_refused(command + killed, "'" + killed +
-                                         ".partial' holds an interrupted cbbg run, not a sweep: "
-                                         "continue it with cbbg run --resume " +
-                                         killed);
-  }
+  const Outcome interrupted = run("status " + killed);
+  EXPECT_EQ(interrupted.exit_code, 0);
+  EXPECT_EQ(interrupted.output, killed + ": interrupted, 1 of 4" +
+                                    " task(s) done; continue it with cbbg run --resume " + killed +
+                                    "\n");
+  expect_refused("merge " + killed, "'" + killed +
+                                        ".partial' holds an interrupted cbbg run, not a sweep: "
+                                        "continue it with cbbg run --resume " +
+                                        killed);
   const std::string sweep = path("s");
   ASSERT_EQ(
       run(std::string(kQuick) + " --grid critic.beta=0.1 --shard 1/2 --out " + sweep).exit_code, 0);

@@ -94,6 +94,18 @@ TEST(ArmChecks, AnRbfGridTooLargeToStoreIsRefusedBeforeItIsBuilt) {
   EXPECT_NO_THROW(diagrams::validated_parameters(config));
 }
 
+TEST(ArmChecks, TheTasksAtOnceMustFitInTheMemoryTheMachineHas) {
+  const std::size_t task = check_arms_build(run_of("[bg_only]"));
+  EXPECT_GT(task, 10'000u);  // its weights, traces and features at least
+  EXPECT_NO_THROW(check_run_memory(task, 2));
+  EXPECT_THAT([] { check_run_memory(std::size_t{1} << 50, 3); },
+              ThrowsMessage<config::ConfigError>(::testing::AllOf(
+                  ::testing::StartsWith("this run would hold about 3377699.7 GB (1125899.9 GB "
+                                        "per task, 3 at once) and the machine has "),
+                  ::testing::EndsWith(" available: lower --jobs, or the features (rbf.centres, "
+                                      "normaliser.inputs, a layout of your own)"))));
+}
+
 struct GainParams {
   double low = 1.0;
   double high = 2.0;

@@ -151,6 +151,12 @@ TEST(DiagramBuilder, ASharedBlockOutlivesItsDiagramWhileItsOtherOwnerHoldsIt) {
   }
   EXPECT_EQ(shared.use_count(), 1);
   EXPECT_EQ(shared->name(), "gain");
+  // Its diagram gone, it belongs to none (no dangling parent) and may join another.
+  EXPECT_EQ(shared->parent(), nullptr);
+  EXPECT_EQ(shared->path(), "gain");
+  DiagramBuilder next("next");
+  EXPECT_EQ(&next.add(shared), shared.get());
+  EXPECT_EQ(shared->path(), "next/gain");
 }
 
 TEST(DiagramBuilder, RejectsConnectingABlockOfAnotherDiagram) {

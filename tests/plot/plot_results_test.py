@@ -91,6 +91,14 @@ class PlotResults(unittest.TestCase):
 
     # ------------------------------------------------------------ whole runs
 
+    def test_a_temporary_is_stale_once_its_writer_is_gone_or_its_pid_taken(self):
+        start = plot_results.process_start(os.getpid())
+        self.assertFalse(plot_results.writer_gone(f"{os.getpid()}.{start}"))
+        self.assertTrue(plot_results.writer_gone(f"{os.getpid()}.{int(start) + 1}"))
+        self.assertTrue(plot_results.writer_gone("999999999.5"))
+        self.assertIn(f"-{os.getpid()}.{start}-0",
+                      plot_results.temporary_name("/x", "failures.png"))
+
     def test_a_full_disk_names_the_path_and_the_reason_on_one_line(self):
         import contextlib
         import io

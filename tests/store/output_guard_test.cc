@@ -7,6 +7,7 @@
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/un.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -60,15 +61,32 @@ TEST(OutputGuard, OnlyTheTemporariesOfAGoneWriterOnThisHostAreStale) {
   EXPECT_FALSE(is_stale_temporary("a.json"));
 }
 
-TEST(OutputGuard, ATemporaryWrittenBeforeItsPidsProcessStartedIsStale) {
-  // A killed writer's pid taken by a newer process: the temporary is older than that process.
-  testing::ScratchDirectory scratch;
-  const fs::path temporary =
-      scratch.path() / (".a.cbbg-tmp-" + host() + "-" + std::to_string(::getpid()) + "-0");
-  touch(temporary);
-  EXPECT_FALSE(is_stale_temporary(temporary));  // written by this process, which runs
-  fs::last_write_time(temporary, fs::last_write_time(temporary) - std::chrono::hours(24 * 3650));
-  EXPECT_TRUE(is_stale_temporary(temporary));  // written ten years before this process began
+TEST(OutputGuard, ATemporaryWhosePidAnotherProcessHasTakenIsStale) {
+  // The name holds the writer's pid and start time (/proc/PID/stat, field 22): a killed
+  // writer's pid taken by a newer process has another start.
+  const std::string name = temporary_beside("x").filename().string();
+  const std::string mine = std::to_string(::getpid()) + ".";
+  ASSERT_NE(name.find("-" + mine), std::string::npos) << name;
+  EXPECT_FALSE(is_stale_temporary(name));  // this process, which runs
+  const std::string start = name.substr(name.find("-" + mine) + 1 + mine.size());
+  const std::string other_start =
+      ".x.cbbg-tmp-" + host() + "-" + mine + std::to_string(std::stoll(start) + 1) + "-0";
+  EXPECT_TRUE(is_stale_temporary(other_start));  // the same pid, another process
+}
+
+TEST(OutputGuard, AZombiesTemporaryIsStale) {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  // Until it is reaped, the child is a zombie: kill(pid, 0) still succeeds.
+  while (true) {
+    std::ifstream stat("/proc/" + std::to_string(child) + "/stat");
+    std::string text;
+    std::getline(stat, text);
+    if (text.find(") Z ") != std::string::npos) break;
+  }
+  EXPECT_TRUE(is_stale_temporary(".x.cbbg-tmp-" + host() + "-" + std::to_string(child) + "-0"));
+  ::waitpid(child, nullptr, 0);
 }
 
 TEST(OutputGuard, RemovesItsTemporariesAndNothingElse) {
