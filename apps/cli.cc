@@ -1,8 +1,10 @@
 #include "cbbg/apps/cli.h"
 
 #include <charconv>
+#include <optional>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <spdlog/spdlog.h>
@@ -115,6 +117,9 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
   run_app->add_flag("--replace", run.replace,
                     "replace the results of an earlier run at --out (kept until the new ones "
                     "are complete)");
+  run_app->add_flag("--check", run.check,
+                    "check the config, the arms, the weights and the options as a run would "
+                    "before any work, then stop (nothing is written; --out is not looked at)");
   run_app->add_flag("!--no-figures", run.figures, "skip the figures");
   run_app->add_flag("!--no-replay", run.replays,
                     "skip the replay pages in figures/ (cbbg replay makes one of any trial)");
@@ -176,23 +181,18 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
                        "initial pitches, rad, comma-separated (default: evaluation.angles)");
   eval_app->add_option("--repeats", eval.repeats, "runs per angle, seeds seed, seed + 1, ...")
       ->check(kDecimal);
-  eval_app
-      ->add_option("--push-time", eval.push_time,
-                   "push start, s (with --push-duration and a push size)")
-      ->check(kDecimal);
-  eval_app
-      ->add_option("--push-torque", eval.push_torque,
-                   "push through the motors: N m added to both wheels' torque")
-      ->check(kDecimal);
-  eval_app
-      ->add_option("--push-force", eval.push_force,
-                   "push from outside: N at the body's centre of mass, along the heading")
-      ->check(kDecimal);
-  eval_app
-      ->add_option("--push-pitch-torque", eval.push_pitch_torque,
-                   "push from outside: N m on the body about the axle")
-      ->check(kDecimal);
-  eval_app->add_option("--push-duration", eval.push_duration, "push length, s")->check(kDecimal);
+  const std::tuple<const char*, std::optional<double>*, const char*> push_flags[] = {
+      {"--push-time", &eval.push_time, "push start, s (with --push-duration and a push size)"},
+      {"--push-torque", &eval.push_torque,
+       "push through the motors: N m added to both wheels' torque"},
+      {"--push-force", &eval.push_force,
+       "push from outside: N at the body's centre of mass, along the heading"},
+      {"--push-pitch-torque", &eval.push_pitch_torque,
+       "push from outside: N m on the body about the axle"},
+      {"--push-duration", &eval.push_duration, "push length, s"}};
+  for (const auto& [flag, value, help] : push_flags) {
+    eval_app->add_option(flag, *value, help)->check(kDecimal);
+  }
   eval_app->add_flag("--linearise", eval.linearise,
                      "also print the actor's slopes at rest and the closed loop's modes");
   eval_app->add_option("--out,-o", eval.out, "write DIR/evaluation.csv");

@@ -29,6 +29,7 @@ struct RunOptions {
   bool replace = false;              // a finished results directory at --out may be replaced
   std::vector<std::string> grid;     // KEY=V1,V2,... axes of a sweep, in order
   std::optional<std::string> shard;  // "K/N" as typed: run only that shard of the sweep
+  bool check = false;  // check everything a run checks before any work, then stop (--check)
 };
 int run_command(const RunOptions& options);
 // The typed parameters of a run's (or a grid point's) config, with everything a run checks

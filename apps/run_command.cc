@@ -196,12 +196,13 @@ struct PreparedRun {
 void check_resume_alone(const RunOptions& options) {
   if (!options.config_file.empty() || !options.sets.empty() || options.experiment ||
       options.seeds || options.seed || !options.load_weights.empty() || options.replace ||
-      !options.figures || !options.replays || !options.grid.empty() || options.shard) {
+      !options.figures || !options.replays || !options.grid.empty() || options.shard ||
+      options.check) {
     throw config::ConfigError(
         "--resume continues with the config, weights and options of the interrupted run; drop "
         "--config, --set, --experiment, --seeds, --seed, --load-weights, --replace, "
-        "--no-figures, --no-replay, --grid and --shard (a sweep continues by running its "
-        "command again)");
+        "--no-figures, --no-replay, --grid, --shard and --check (a sweep continues by running "
+        "its command again)");
   }
 }
 
@@ -241,6 +242,7 @@ PreparedRun prepare(const RunOptions& options) {
     experiments::check_protocol(run.parameters,
                                 run.initial_weights ? &*run.initial_weights : nullptr);
   }
+  if (options.check) return run;
   if (!run.directory) {
     run.directory = store::RunDirectory::create(
         options.out, run.config,
@@ -358,6 +360,10 @@ int run_command(const RunOptions& options) {
     return report_error(kUserError, error.what());
   } catch (const std::exception& error) {
     return report_error(kMachineError, describe(error));
+  }
+  if (options.check) {
+    std::cout << "the run checks out; nothing was written\n";
+    return 0;
   }
   try {
     if (run.directory->published()) {

@@ -183,6 +183,11 @@ int sweep_command(const RunOptions& options, const config::Config& base,
     }
     if (options.shard) std::tie(k, n) = parse_shard(*options.shard);
     sweep_plan = plan(base, sweep, options.jobs);
+    if (options.check) {
+      std::cout << "the sweep checks out (" << sweep_plan.points.size() << " grid point(s), "
+                << sweep_plan.tasks << " task(s)); nothing was written\n";
+      return 0;
+    }
     directory.emplace(store::SweepDirectory::open_shard(options.out, sweep_yaml(sweep_plan),
                                                         options.figures, k, n));
   } catch (const config::ConfigError& error) {

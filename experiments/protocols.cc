@@ -31,13 +31,17 @@ int balanced_evaluations(const SeedRun& run) {
                                         }));
 }
 
+// The paper's one run of Fig. 11: failures before the first success.
+const std::vector<std::pair<std::string, int>> kPaperFailures{{"cbbg", 0}, {"bg_only", 8}};
+
 std::vector<Protocol>& registry() {
   static std::vector<Protocol> all{
       {"exp1",
        "per arm and seed: trials until the first success (paper Fig. 11)",
        {},
        [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
-          const ExperimentOptions& options) { return run_exp1(p, arms, options); }},
+          const ExperimentOptions& options) { return run_exp1(p, arms, options); },
+       {.paper = kPaperFailures}},
       {"exp2",
        "one cbbg trial, then omega = 1 with the annealing schedule (paper Figs. 12-14)",
        [](const config::RunParams&) { return std::vector<std::string>{"cbbg"}; },
@@ -110,7 +114,7 @@ const Protocol* find_protocol(std::string_view name) {
 }
 
 const ResultsShape& results_shape(std::string_view experiment) {
-  static const ResultsShape one_arm;
+  static const ResultsShape one_arm{.paper = kPaperFailures};  // exp1's, for one arm
   const Protocol* protocol = find_protocol(experiment);
   return protocol == nullptr ? one_arm : protocol->results;
 }

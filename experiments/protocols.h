@@ -16,6 +16,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "cbbg/config/parameters.h"
@@ -39,6 +40,9 @@ struct ResultsShape {
   // Which of the runs' own figures (SeedRun::figures) summary.json compares seed by seed, the
   // first arm against each other, when `paired`; none by default.
   std::function<bool(const std::string& figure)> pairs_figure{};
+  // The paper's failures before the first success per arm (Fig. 11), which summary.json
+  // shows for the arms that ran on the paper's robot (the two-wheeler); none by default.
+  std::vector<std::pair<std::string, int>> paper{};
 };
 
 struct Protocol {

@@ -9,12 +9,13 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 targets=()
+setup=()
 case "${1:-}" in
   "") ;;
-  --main) targets=(--target cbbg _cbbg) ;;
+  --main) targets=(--target cbbg _cbbg) setup=(--main) ;;
   *) echo "build.sh: unknown option '$1' (usage: scripts/build.sh [--main])" >&2; exit 2 ;;
 esac
-"$root/scripts/setup.sh"
+"$root/scripts/setup.sh" "${setup[@]}"
 cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release
 # A build configured without the Python module (CBBG_BUILD_PYTHON=OFF) has no _cbbg.
 if [[ ${#targets[@]} -gt 0 ]] && grep -qx 'CBBG_BUILD_PYTHON:BOOL=OFF' "$root/build/CMakeCache.txt"; then

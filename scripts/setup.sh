@@ -2,19 +2,31 @@
 # Installs the Debian packages cbbg builds, tests and plots with (only the missing ones),
 # then the replay page's npm packages (three.js and its bundler, pinned by
 # replay/page/package-lock.json) into replay/page/node_modules.
+#   scripts/setup.sh          everything the tests need too (test.sh)
+#   scripts/setup.sh --main   only what building and running the main job needs (run.sh):
+#                             no sanitizer compiler, fuzzer, Slurm, GNU parallel or Chromium
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
+# Building, running and plotting (CMake's configure finds GoogleTest and Benchmark too).
 packages=(
   build-essential cmake ninja-build pkg-config git
   libsimbody-dev libeigen3-dev libspdlog-dev libboost-dev
   libcli11-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  clang clang-format libclang-rt-14-dev libfuzzer-14-dev time
-  graphviz python3 python3-dev python3-matplotlib python3-numpy python3-pytest pybind11-dev
+  graphviz python3 python3-dev python3-matplotlib python3-numpy pybind11-dev
+)
+# The tests' own tools and services.
+test_packages=(
+  clang clang-format libclang-rt-14-dev libfuzzer-14-dev time python3-pytest
   parallel slurm-wlm munge
   chromium
 )
+case "${1:-}" in
+  "") packages+=("${test_packages[@]}") ;;
+  --main) ;;
+  *) echo "setup.sh: unknown option '$1' (usage: scripts/setup.sh [--main])" >&2; exit 2 ;;
+esac
 # Node.js and npm may come from Debian or from NodeSource's nodejs (which brings npm along).
 command -v node >/dev/null || packages+=(nodejs)
 command -v npm >/dev/null || packages+=(npm)

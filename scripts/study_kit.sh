@@ -40,19 +40,15 @@ study_check_options() {
   while [[ "$out" == */ && "$out" != / ]]; do out="${out%/}"; done  # DIR.new-study is beside DIR
 }
 
-# study_probe WHAT ARGS...: cbbg checks `cbbg run ARGS...` as it would start it (every key and
-# value, the arms, the protocol) and stops at its --out, /dev/null, which it refuses as not a
-# folder: that refusal, and no other, is a command it would run. Any other exits here with
-# cbbg's own words, naming WHAT (the run or the variant) and nothing made.
+# study_probe WHAT ARGS...: cbbg checks `cbbg run ARGS... --check` as it would start it (every
+# key and value, the arms, the protocol, the weights) and writes nothing. A refusal exits here
+# with cbbg's own words, naming WHAT (the run or the variant), and nothing made.
 study_probe() {
   local what="$1" status=0 said line
   shift
-  said="$("$cbbg" run "$@" --out /dev/null 2>&1 >/dev/null)" || status=$?
+  said="$("$cbbg" run "$@" --check 2>&1 >/dev/null)" || status=$?
+  [[ $status == 0 ]] && return 0
   line="$(grep -m1 ': error: ' <<<"$said" || true)"
-  if [[ $status == 2 && "$line" == *": error: --out '/dev/null' is a file; give a directory path" ]]
-  then
-    return 0
-  fi
   [[ -n "$line" ]] || line="$(tail -n 1 <<<"$said")"
   [[ -n "$line" ]] || line="exited $status, saying nothing"
   line="${line#*: error: }"

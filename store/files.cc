@@ -12,11 +12,16 @@
 namespace cbbg::store {
 
 void write_atomically(const std::filesystem::path& path, const std::string& text) {
+  write_atomically(path, [&text](std::ostream& out) { out << text; });
+}
+
+void write_atomically(const std::filesystem::path& path,
+                      const std::function<void(std::ostream& out)>& write) {
   // Tagged as cbbg's temporary (store/output_guard.h), so a resume or a merge removes it.
   const std::filesystem::path temporary = temporary_beside(path);
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
+    write(out);
     out.flush();
     if (!out) {
       const std::string reason = std::strerror(errno);

@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <ostream>
 #include <string>
 
 namespace cbbg::store {
@@ -11,6 +13,9 @@ namespace cbbg::store {
 // never half-written; safe from several threads. Throws std::runtime_error naming `path` with
 // the system's reason.
 void write_atomically(const std::filesystem::path& path, const std::string& text);
+// The same for a file too large to hold as one text: `write` streams it into the temporary.
+void write_atomically(const std::filesystem::path& path,
+                      const std::function<void(std::ostream& out)>& write);
 
 // Removes `path` and everything below it (nothing when absent); throws std::runtime_error
 // "cannot remove 'path': reason" when the machine refuses.

@@ -1,18 +1,16 @@
 #include "cbbg/store/results_writer.h"
 
 #include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/experiments/paired_statistics.h"
 #include "cbbg/experiments/protocols.h"
 #include "cbbg/store/fault_point.h"
 #include "cbbg/store/files.h"
-#include "cbbg/store/output_guard.h"
 #include "cbbg/store/task_store.h"
 #include "cbbg/store/weights_file.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -27,13 +25,6 @@ using experiments::TrialOutcome;
 using experiments::TrialRecord;
 using experiments::TrialStatus;
 namespace {
-
-// The paper's failures before the first success (Fig. 11), for summary.json.
-struct PaperReference {
-  const char* arm;
-  int failures;
-};
-constexpr PaperReference kPaper[] = {{"cbbg", 0}, {"bg_only", 8}};
 
 std::string number(double value) {
   if (!std::isfinite(value)) return "nan";
@@ -220,6 +211,18 @@ std::string paired_json(const ExperimentResults& results, const config::Config& 
   return json.str();
 }
 
+// The paper's figures of the arms that ran (ResultsShape::paper), on the paper's robot; ""
+// when there are none.
+std::string paper_json(const ExperimentResults& results, const config::Parameters& parameters) {
+  if (!diagrams::same_robot(parameters.plant.kind, "simbody")) return "";
+  std::string json;
+  for (const auto& [arm, failures] : experiments::results_shape(results.experiment).paper) {
+    if (std::find(results.arms.begin(), results.arms.end(), arm) == results.arms.end()) continue;
+    json += (json.empty() ? "" : ", ") + json_text(arm) + ": " + std::to_string(failures);
+  }
+  return json.empty() ? "" : "  \"paper\": {" + json + "},\n";
+}
+
 // A task's steps rows start with their header line; a task stored by the previous release,
 // without one, has the two-wheeler's. The first line of task `task`'s rows, "" without rows.
 std::string first_steps_line(const SeedRun& run, const TaskStore* store, std::size_t task) {
@@ -256,32 +259,21 @@ void write_steps_csv(const ExperimentResults& results, const std::filesystem::pa
           header.substr(0, header.size() - 1) + " against " + own.substr(0, own.size() - 1) + ")");
     }
   }
-  // Streamed into a temporary of cbbg's, renamed into place whole.
-  const std::filesystem::path temporary = temporary_beside(path);
-  std::ofstream steps(temporary, std::ios::binary | std::ios::trunc);
-  steps << (header.empty() ? steps_csv_header() : header);
-  for (std::size_t task = 0; task < results.runs.size(); ++task) {
-    if (store == nullptr) {
-      const std::string& text = results.runs[task].steps_csv;
-      const std::size_t skip = has_header[task] ? text.find('\n') + 1 : 0;
-      steps.write(text.data() + skip, static_cast<std::streamsize>(text.size() - skip));
-      continue;
+  write_atomically(path, [&](std::ostream& steps) {
+    steps << (header.empty() ? steps_csv_header() : header);
+    for (std::size_t task = 0; task < results.runs.size(); ++task) {
+      if (store == nullptr) {
+        const std::string& text = results.runs[task].steps_csv;
+        const std::size_t skip = has_header[task] ? text.find('\n') + 1 : 0;
+        steps.write(text.data() + skip, static_cast<std::streamsize>(text.size() - skip));
+        continue;
+      }
+      std::ifstream rows(store->steps_path(task), std::ios::binary);
+      std::string skipped;
+      if (has_header[task]) std::getline(rows, skipped);
+      if (rows.peek() != std::ifstream::traits_type::eof()) steps << rows.rdbuf();
     }
-    std::ifstream rows(store->steps_path(task), std::ios::binary);
-    std::string skipped;
-    if (has_header[task]) std::getline(rows, skipped);
-    if (rows.peek() != std::ifstream::traits_type::eof()) steps << rows.rdbuf();
-  }
-  steps.close();
-  if (!steps) {
-    const std::string reason = std::strerror(errno);
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error("cannot write '" + path.string() + "': " + reason);
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) throw std::runtime_error("cannot write '" + path.string() + "': " + error.message());
+  });
 }
 
 }  // namespace
@@ -402,11 +394,8 @@ std::string summary_json(const ExperimentResults& results, const config::Config&
     if (experiments::results_shape(results.experiment).skill) json << skill_json(results, a);
     json << "\n    }";
   }
-  json << "\n  },\n" << paired_json(results, config) << "  \"paper\": {";
-  for (std::size_t p = 0; p < std::size(kPaper); ++p) {
-    json << (p ? ", " : "") << "\"" << kPaper[p].arm << "\": " << kPaper[p].failures;
-  }
-  json << "},\n  \"note\": \"failures_before_success counts failed or diverged trials before the "
+  json << "\n  },\n" << paired_json(results, config) << paper_json(results, parameters);
+  json << "  \"note\": \"failures_before_success counts failed or diverged trials before the "
           "first success; a seed that never succeeded counts all its trials\"\n}\n";
   return json.str();
 }

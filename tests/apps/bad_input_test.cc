@@ -197,7 +197,7 @@ std::vector<BadInput> bad_inputs() {
       {"run --grid seeds=1,2 --resume {S}/out",
        "drop --config, --set, --experiment, --seeds, "
        "--seed, --load-weights, --replace, "
-       "--no-figures, --no-replay, --grid and --shard"},
+       "--no-figures, --no-replay, --grid, --shard and --check"},
       {"run --set plant.kind=analytic --grid actor.alpha=0.1 --out {S}/mine",
        "--out '{S}/mine' exists; a sweep writes a new directory"},
       {"merge", "DIR is required"},

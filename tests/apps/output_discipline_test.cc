@@ -178,6 +178,21 @@ TEST_F(OutputDiscipline, MergeRefusesAUsersFileAmongTheTasks) {
   EXPECT_EQ(run("--log-level warn merge " + sweep).exit_code, 0);
 }
 
+TEST_F(OutputDiscipline, CheckChecksWhatARunChecksAndWritesNothing) {
+  const auto before = tree_of(scratch_);
+  const Outcome fine = run(std::string(kQuick) + " --check --out " + path("new"));
+  EXPECT_EQ(fine.exit_code, 0) << fine.output;
+  EXPECT_EQ(fine.output, "the run checks out; nothing was written\n");
+  const Outcome sweep =
+      run(std::string(kQuick) + " --check --grid critic.beta=0.1,0.2 --out " + path("sweep"));
+  EXPECT_EQ(sweep.exit_code, 0) << sweep.output;
+  EXPECT_EQ(sweep.output,
+            "the sweep checks out (2 grid point(s), 8 task(s)); nothing was written\n");
+  expect_refused(std::string(kQuick) + " --check --set critic.gama=1 --out " + path("new"),
+                 "unknown key 'critic.gama'; did you mean 'critic.gamma'?");
+  EXPECT_EQ(tree_of(scratch_), before);
+}
+
 TEST_F(OutputDiscipline, StatusAndMergeKnowAnOrdinaryRunFromASweep) {
   // status tells how far an ordinary run got; merge, for sweeps, refuses it.
   const std::string finished = path("r");
