@@ -14,8 +14,8 @@ namespace cbbg::experiments {
 // Builds the closed loop of every arm `parameters.run` runs (experiment_arms), each once,
 // with the runner of its trials. Throws config::ConfigError naming the arm and the
 // factory's reason, or the arm, its feature count, its layout's keys and the limit. Returns
-// the most memory one task holds, in bytes, as the heap grew building one (0 where the C
-// library does not say).
+// the most memory one task holds, in bytes, as the heap grew building one (0 where the
+// allocator does not say, as a sanitizer's: then no memory is checked).
 std::size_t check_arms_build(const config::Parameters& parameters);
 
 // Before any work: `threads` tasks at once of `task_bytes` each fit in the memory the machine

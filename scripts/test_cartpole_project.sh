@@ -25,6 +25,8 @@ for file in config.yaml summary.json trials.csv evaluation.csv steps.csv figures
   test -s "exp1/$file" || fail "exp1 has no $file"
 done
 grep -q "^  kind: cartpole$" exp1/config.yaml || fail "config.yaml does not record plant.kind"
+# The paper's figures are the two-wheeler's: none beside a cart-pole's.
+! grep -q '"paper"' exp1/summary.json || fail "summary.json shows the paper's figures for a cart-pole"
 grep -q "^arms: \[tiles, tiles_omega_half, tiles_critic_frozen, lean_pd\]$" exp1/config.yaml ||
   fail "config.yaml does not record the arms that ran"
 # The cart-pole has x but no y nor yaw: steps.csv has the columns it has.
