@@ -194,6 +194,33 @@ TEST_F(DataSafety, AKillAtEveryStepOfADiagramRunAloneResumesToTheSameBytes) {
   kill_at_every_step(*this, "alone", std::string(kQuick) + " --experiment bg_only", false);
 }
 
+TEST_F(DataSafety, AKillAtEveryStepOfExp2AndExp3ResumesToTheSameBytes) {
+  kill_at_every_step(*this, "exp2",
+                     std::string(kQuick) +
+                         " --experiment exp2 --set exp2.trials=3 --set "
+                         "'annealing=[{from_trial: 1, k1: 10}]'",
+                     false);
+  kill_at_every_step(*this, "exp3",
+                     std::string(kQuick) +
+                         " --experiment exp3 --set max_trials=4 "
+                         "--set evaluation.angles=[0.1]",
+                     false);
+}
+
+TEST_F(DataSafety, AKillAtEveryStepOfAnEvaluationResumesToTheSameBytes) {
+  const Outcome learnt =
+      run("--log-level warn run --set plant.kind=analytic --experiment bg_only "
+          "--seeds 1 --no-figures --out " +
+          path("learnt") + " --save-weights " + path("w.txt"));
+  ASSERT_EQ(learnt.exit_code, 0) << learnt.output;
+  kill_at_every_step(*this, "evaluate",
+                     std::string(kQuick) +
+                         " --experiment evaluate --set arms=[bg_only] "
+                         "--set evaluation.angles=[0.05,0.1] --load-weights " +
+                         path("w.txt"),
+                     false);
+}
+
 TEST_F(DataSafety, AKillAtEveryStepOfATransferRunResumesToTheSameBytes) {
   kill_at_every_step(*this, "transfer",
                      std::string(kQuick) +
