@@ -139,9 +139,9 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
       app.add_subcommand("merge", "merge the shards of a sweep into one results directory");
   merge_app->add_option("DIR", merge_directory, "the sweep's --out")->required();
   std::filesystem::path status_directory;
-  CLI::App* status_app =
-      app.add_subcommand("status", "a sweep's tasks: done, missing, and failed shards");
-  status_app->add_option("DIR", status_directory, "the sweep's --out")->required();
+  CLI::App* status_app = app.add_subcommand(
+      "status", "how far a run or a sweep got: tasks done and missing, failed shards");
+  status_app->add_option("DIR", status_directory, "the run's or the sweep's --out")->required();
 
   GraphOptions graph;
   CLI::App* graph_app = app.add_subcommand("graph", "draw a diagram (.dot, .svg or .png)");
