@@ -246,8 +246,7 @@ int eval_command(const EvalOptions& options) {
     weights = store::load_weights(options.weights_file);
     parameters = resolve(options, weights);
     policy = policy_of(weights.provenance.arm, loop);
-    store::check_weights(weights, parameters.plant.kind, policy(parameters).layout,
-                         options.weights_file);
+    store::check_weights(weights, parameters.plant.kind, policy(parameters), options.weights_file);
     settings.angles = parameters.evaluation.angles;
     settings.repeats = options.repeats;
     if (options.linearise) linear = linearised(parameters, policy, weights);

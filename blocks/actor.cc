@@ -53,7 +53,7 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
                                              StateLifetime::kPerTrial);
   has_previous_ = declare_discrete_state("has_previous", Vector::Zero(1), StateLifetime::kPerTrial);
   const OutputPort& action_port = declare_output_port(
-      "action", 1,
+      "actor_action", 1,
       [this, &features](const BlockContext& context, VectorRef action) {
         action[0] = weights_.of(context.discrete_state()).dot(context.input(features));
       },

@@ -3,7 +3,7 @@
 #include <string>
 #include <string_view>
 
-#include "cbbg/blocks/weight_learner.h"
+#include "cbbg/blocks/learner.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/parameters.h"
@@ -50,9 +50,9 @@ struct ActorParams {
 /// | supervisor_action  | in  | 1    | a_S(t), the supervisor's action         |
 /// | exploration_action | in  | 1    | a_E(t), the sampler's action            |
 /// | omega              | in  | 1    | omega(t), the mixing factor             |
-/// | action             | out | 1    | a_A(t) = theta . phi(s_t)               |
+/// | actor_action       | out | 1    | a_A(t) = theta . phi(s_t)               |
 ///
-/// "action" reads only the features, so the mixer's loop through the sampler is not
+/// "actor_action" reads only the features, so the mixer's loop through the sampler is not
 /// algebraic. The periodic update at tick t learns from the transition s_{t-1} -> s_t with
 /// delta = delta_{t-1} and the values it stored at t-1 (phi, a_S, a_E, a_A, omega):
 ///   improved: theta <- theta + alpha delta [omega (a_E - a_S) + (a_S - a_A)] phi
@@ -68,7 +68,7 @@ struct ActorParams {
 ///
 /// Discrete state: weights theta (n, persistent); per trial: previous_features phi(s_{t-1})
 /// (n), previous_actions (a_S, a_E, a_A, omega at t-1), has_previous (1).
-class Actor final : public Block, public WeightLearner {
+class Actor final : public Block, public Learner {
  public:
   Actor(std::string name, int num_features, const ActorParams& params, double period);
 
@@ -76,8 +76,8 @@ class Actor final : public Block, public WeightLearner {
   const Block& learner_block() const override { return *this; }
   int num_features() const override { return num_features_; }
   // The learnt weights theta in `context`.
-  ConstVectorView weights(const Context& context) const override;
-  VectorView mutable_weights(Context& context) const override;
+  ConstVectorView weights(const Context& context) const;
+  VectorView mutable_weights(Context& context) const;
 
  private:
   int num_features_;

@@ -18,7 +18,7 @@ BoltzmannSampler::BoltzmannSampler(std::string name, const SamplerParams& params
   const InputPort& temperature = declare_input_port("temperature", 1, "T(t)");
   declare_discrete_state("noise", Vector::Zero(1), StateLifetime::kPerTrial);
   declare_output_port(
-      "action", 1,
+      "exploration_action", 1,
       [this, &actor_action, &temperature](const BlockContext& context, VectorRef action) {
         const double deviation = std::sqrt(params_.k_b * context.input(temperature)[0] / 2.0);
         action[0] = context.input(actor_action)[0] + deviation * context.discrete_state()[0];

@@ -25,16 +25,20 @@ struct SamplerParams {
 
 /// BoltzmannSampler: the basal ganglia's exploratory action (docs/model.md §2.6).
 ///
-/// | port         | dir | size | meaning                        |
-/// |--------------|-----|------|--------------------------------|
-/// | actor_action | in  | 1    | a_A(t), from the Actor         |
-/// | temperature  | in  | 1    | T(t) >= 0, from the Tropism    |
-/// | action       | out | 1    | a_E(t) ~ N(a_A, K_B T / 2)     |
+/// | port               | dir | size | meaning                        |
+/// |--------------------|-----|------|--------------------------------|
+/// | actor_action       | in  | 1    | a_A(t), from the Actor         |
+/// | temperature        | in  | 1    | T(t) >= 0, from the Tropism    |
+/// | exploration_action | out | 1    | a_E(t) ~ N(a_A, K_B T / 2)     |
 ///
 /// Equation: a_E = a_A + sqrt(K_B T / 2) eps, eps a standard normal held in the discrete
 /// state, drawn from the block's own generator by the initialization update (first tick)
 /// and by each periodic update (next tick). The Boltzmann law exp(-(a_E - a_A)^2 / (K_B T))
 /// is this normal. Parameters: K_B = sampler.k_b, the period trial.period.
+/// exploration.kind boltzmann selects it (GaussianExploration and OuExploration are the
+/// alternatives, drawing the same eps).
+///
+/// Discrete state, per trial: noise eps (1).
 class BoltzmannSampler final : public Block {
  public:
   BoltzmannSampler(std::string name, const SamplerParams& params, double period);

@@ -1,10 +1,22 @@
 #include "cbbg/blocks/critic.h"
 
 #include <stdexcept>
+#include <string>
 
 #include "cbbg/blocks/parameter_checks.h"
 
 namespace cbbg::blocks {
+
+CriticKind parse_critic_kind(std::string_view text) {
+  if (text == "td_lambda") return CriticKind::kTdLambda;
+  if (text == "td0") return CriticKind::kTd0;
+  throw std::invalid_argument("critic.kind must be td_lambda or td0; got '" + std::string(text) +
+                              "'");
+}
+
+std::string_view to_string(CriticKind kind) {
+  return kind == CriticKind::kTd0 ? "td0" : "td_lambda";
+}
 
 void CriticParams::validate() const { check_declared(*this, kSection); }
 
@@ -22,7 +34,9 @@ Critic::Critic(std::string name, int num_features, const CriticParams& params, d
   reward_ = &declare_input_port("reward", 1, "r_{t-1}");
   failed_ = &declare_input_port("failed", 1, "1 when s_t is terminal");
   weights_ = declare_discrete_state("weights", Vector::Zero(n), StateLifetime::kPersistent);
-  trace_ = declare_discrete_state("trace", Vector::Zero(n), StateLifetime::kPerTrial);
+  if (params_.kind == CriticKind::kTdLambda) {
+    trace_ = declare_discrete_state("trace", Vector::Zero(n), StateLifetime::kPerTrial);
+  }
   previous_features_ =
       declare_discrete_state("previous_features", Vector::Zero(n), StateLifetime::kPerTrial);
   has_previous_ = declare_discrete_state("has_previous", Vector::Zero(1), StateLifetime::kPerTrial);
@@ -41,10 +55,7 @@ Critic::Critic(std::string name, int num_features, const CriticParams& params, d
       [this, &td_error_port](BlockContext& context, VectorRef next) {
         const auto state = context.discrete_state();
         if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
-          const double delta = context.output(td_error_port)[0];  // computed at this instant
-          trace_.of(next) =
-              params_.gamma * params_.lambda * trace_.of(state) + previous_features_.of(state);
-          weights_.of(next) = weights_.of(state) + params_.beta * delta * trace_.of(next);
+          learn(state, next, context.output(td_error_port)[0]);  // delta at this instant
         }
         previous_features_.of(next) = context.input(*features_);
         has_previous_.of(next)[0] = 1.0;
@@ -61,6 +72,17 @@ double Critic::td_error(const BlockContext& context) const {
   const double next_value = failed ? 0.0 : w.dot(context.input(*features_));
   return context.input(*reward_)[0] + params_.gamma * next_value -
          w.dot(previous_features_.of(state));
+}
+
+void Critic::learn(ConstVectorView state, VectorRef next, double delta) const {
+  const auto phi = previous_features_.of(state);
+  if (params_.kind == CriticKind::kTd0) {
+    const double step = params_.beta * delta / (params_.epsilon + phi.squaredNorm());
+    weights_.of(next) = weights_.of(state) + step * phi;
+    return;
+  }
+  trace_.of(next) = params_.gamma * params_.lambda * trace_.of(state) + phi;
+  weights_.of(next) = weights_.of(state) + params_.beta * delta * trace_.of(next);
 }
 
 ConstVectorView Critic::weights(const Context& context) const {

@@ -1,11 +1,33 @@
 #include "cbbg/blocks/reward.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "cbbg/blocks/measured_signals.h"
 #include "cbbg/blocks/parameter_checks.h"
 #include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
-void RewardParams::validate() const { check_declared(*this, kSection); }
+
+RewardKind parse_reward_kind(std::string_view text) {
+  if (text == "sliding") return RewardKind::kSliding;
+  if (text == "quadratic") return RewardKind::kQuadratic;
+  throw std::invalid_argument("reward.kind must be sliding or quadratic; got '" +
+                              std::string(text) + "'");
+}
+
+std::string_view to_string(RewardKind kind) {
+  return kind == RewardKind::kQuadratic ? "quadratic" : "sliding";
+}
+
+void RewardParams::validate() const {
+  check_declared(*this, kSection);
+  if (q.size() != 3) {
+    throw std::invalid_argument(
+        "reward.q must be a list of 3 numbers (on theta_b^2, theta_b'^2, phi'^2); got a list of " +
+        std::to_string(q.size()));
+  }
+}
 
 Reward::Reward(std::string name, const RewardParams& params, double period)
     : Block(std::move(name)), params_(params) {

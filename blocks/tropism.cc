@@ -1,11 +1,24 @@
 #include "cbbg/blocks/tropism.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "cbbg/blocks/parameter_checks.h"
 #include "cbbg/framework/block_context.h"
 
 namespace cbbg::blocks {
+
+TropismKind parse_tropism_kind(std::string_view text) {
+  if (text == "value") return TropismKind::kValue;
+  if (text == "fixed") return TropismKind::kFixed;
+  throw std::invalid_argument("tropism.kind must be value or fixed; got '" + std::string(text) +
+                              "'");
+}
+
+std::string_view to_string(TropismKind kind) {
+  return kind == TropismKind::kFixed ? "fixed" : "value";
+}
 
 void TropismParams::validate() const { check_declared(*this, kSection); }
 
@@ -18,9 +31,14 @@ Tropism::Tropism(std::string name, const TropismParams& params)
       "temperature", 1,
       [this, &value](const BlockContext& context, VectorRef temperature) {
         const double k1 = context.parameter(k1_index_)[0];
+        if (params_.kind == TropismKind::kFixed) {
+          temperature[0] = k1 / 2.0;
+          return;
+        }
         temperature[0] = k1 / (1.0 + std::exp(params_.k2 * context.input(value)[0]));
       },
-      {&value}, "T = k1 / (1 + exp(k2 V))");
+      {&value},  // read by "value" only; "fixed" keeps the same topology
+      params_.kind == TropismKind::kFixed ? "T = k1 / 2" : "T = k1 / (1 + exp(k2 V))");
 }
 
 void Tropism::set_k1(Context& context, double k1) const {

@@ -23,12 +23,13 @@ install(FILES apps/cli.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/apps)
 install(TARGETS cbbg RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The command finds its plotting script in share/cbbg/ beside its bin/.
 install(PROGRAMS scripts/plot_results.py DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
-# The robustness and teacher studies and their reports (README: Beyond the paper), and the
-# variants' configs the teacher study runs.
+# The robustness, teacher and ablation studies and their reports (README: Beyond the paper),
+# what they share, and the variants' configs the teacher and ablation studies run.
 install(PROGRAMS scripts/robustness_study.sh scripts/robustness_report.py
                  scripts/teacher_study.sh scripts/teacher_report.py
+                 scripts/ablation_study.sh scripts/ablation_report.py
         DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
-install(FILES scripts/study_kit.sh DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
+install(FILES scripts/study_kit.sh scripts/study_stats.py DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
 install(DIRECTORY configs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/configs)
 # The Slurm batch scripts of a sweep (README: Sweeps).
 install(PROGRAMS scripts/slurm/sweep.sbatch scripts/slurm/merge.sbatch scripts/slurm/submit_sweep.sh

@@ -13,6 +13,7 @@
 #include "cbbg/blocks/actor.h"
 #include "cbbg/blocks/boltzmann_sampler.h"
 #include "cbbg/blocks/critic.h"
+#include "cbbg/blocks/exploration_params.h"
 #include "cbbg/blocks/lqr_supervisor.h"
 #include "cbbg/blocks/normaliser.h"
 #include "cbbg/blocks/omega_schedule.h"
@@ -220,6 +221,7 @@ struct Parameters {
   blocks::ActorParams actor;
   blocks::TropismParams tropism;
   blocks::SamplerParams sampler;
+  blocks::ExplorationParams exploration;
   blocks::OmegaParams omega;
   blocks::RewardParams reward;
   blocks::SensorsParams sensors;
@@ -250,6 +252,7 @@ struct Parameters {
     a.section(blocks::ActorParams::kSection, actor);
     a.section(blocks::TropismParams::kSection, tropism);
     a.section(blocks::SamplerParams::kSection, sampler);
+    a.section(blocks::ExplorationParams::kSection, exploration);
     a.section(blocks::OmegaParams::kSection, omega);
     a.section(blocks::RewardParams::kSection, reward);
     a.section(blocks::SensorsParams::kSection, sensors);

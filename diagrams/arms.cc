@@ -29,19 +29,29 @@ void add(std::string name, std::string description,
   registry().push_back({{std::move(name), std::move(description)}, std::move(make)});
 }
 
+// `loop` with the arm's own task slots where the caller's are empty.
+ClosedLoopOptions with_task(ClosedLoopOptions loop, const TaskSlots& task) {
+  for (auto slot : {&TaskSlots::sensors, &TaskSlots::failure, &TaskSlots::reward}) {
+    if (!(loop.slots.*slot)) loop.slots.*slot = task.*slot;
+  }
+  return loop;
+}
+
 }  // namespace
 
-void register_arm(std::string name, std::string description, ControllerOptions options) {
+void register_arm(std::string name, std::string description, ControllerOptions options,
+                  TaskSlots task) {
   options.validate();
-  add(name, std::move(description),
-      [name, options](const ClosedLoopOptions& loop) { return make_arm(name, options, loop); });
+  add(name, std::move(description), [name, options, task](const ClosedLoopOptions& loop) {
+    return make_arm(name, options, with_task(loop, task));
+  });
 }
 
 void register_arm(std::string name, std::string description, ControllerFactory learner,
-                  ControllerFactory policy) {
+                  ControllerFactory policy, TaskSlots task) {
   if (!learner) throw std::invalid_argument("arm '" + name + "' has no controller factory");
-  add(name, std::move(description), [name, learner, policy](const ClosedLoopOptions& loop) {
-    return make_arm(name, learner, policy, loop);
+  add(name, std::move(description), [name, learner, policy, task](const ClosedLoopOptions& loop) {
+    return make_arm(name, learner, policy, with_task(loop, task));
   });
 }
 

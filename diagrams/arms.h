@@ -32,11 +32,13 @@ struct ArmName {
 
 // Registers the arm `name` (a config::is_name word no preset or registered arm has) of a
 // CB-BG controller with `options`, or of a controller of the user's own (`learner`, and
-// `policy`, its learnt actor alone, for an arm that learns). Register before running the
-// command line. Throws std::invalid_argument.
-void register_arm(std::string name, std::string description, ControllerOptions options);
+// `policy`, its learnt actor alone, for an arm that learns), in a task whose slots `task`
+// fills (its reward, sensors, failure detector; empty: the parameters' own). Register before
+// running the command line. Throws std::invalid_argument.
+void register_arm(std::string name, std::string description, ControllerOptions options,
+                  TaskSlots task = {});
 void register_arm(std::string name, std::string description, ControllerFactory learner,
-                  ControllerFactory policy = {});
+                  ControllerFactory policy = {}, TaskSlots task = {});
 
 // The registered arms, in registration order.
 std::vector<ArmName> registered_arms();

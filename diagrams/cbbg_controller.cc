@@ -3,13 +3,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "cbbg/blocks/lqr_supervisor.h"
-#include "cbbg/blocks/mixer.h"
-#include "cbbg/blocks/normaliser.h"
-#include "cbbg/blocks/pd_supervisor.h"
-#include "cbbg/blocks/rbf_features.h"
 #include "cbbg/config/parameters.h"
-#include "cbbg/diagrams/plant_kinds.h"
+#include "cbbg/diagrams/configured_blocks.h"
 #include "cbbg/diagrams/slot_check.h"
 #include "cbbg/framework/diagram_builder.h"
 #include "cbbg/framework/number_text.h"
@@ -18,53 +13,42 @@
 namespace cbbg::diagrams {
 namespace {
 
-std::shared_ptr<Block> configured_supervisor(const std::string& name, const config::Parameters& p) {
-  if (p.supervisor.kind == "lqr") {
-    return std::make_unique<blocks::LqrSupervisor>(name, planar_linearization(p), p.supervisor.lqr);
-  }
-  return std::make_unique<blocks::PdSupervisor>(name, p.supervisor.pd);
-}
-
-std::shared_ptr<Block> configured_normaliser(const std::string& name, const config::Parameters& p) {
-  return std::make_unique<blocks::Normaliser>(name, p.normaliser);
-}
-
-std::shared_ptr<Block> configured_features(const std::string& name, const config::Parameters& p) {
-  return std::make_unique<blocks::RbfFeatures>(name, p.rbf, p.normaliser.size());
-}
-
-// The slot's block: the user's where a factory is given, else the parameters'.
-std::shared_ptr<Block> fill_slot(const BlockFactory& user, const BlockFactory& configured,
-                                 const std::string& name, const config::Parameters& p) {
-  std::shared_ptr<Block> block = user ? user(name, p) : configured(name, p);
-  if (!block) throw std::invalid_argument("the factory of slot '" + name + "' returned null");
-  return block;
-}
-
 const OutputPort& constant(DiagramBuilder& builder, const std::string& name, double value) {
   return builder.emplace<ConstantSource>(name, Vector::Constant(1, value)).output_port("y");
 }
 
-BasalGangliaParams basal_ganglia_params(const config::Parameters& p,
+// The blocks of the basal ganglia's slots, each the user's or the parameters' own.
+BasalGangliaBlocks basal_ganglia_blocks(const config::Parameters& p,
                                         const ControllerOptions& options) {
-  BasalGangliaParams params;
-  params.critic = p.critic;
-  params.actor = p.actor;
-  if (options.actor_rule) params.actor.rule = *options.actor_rule;
-  params.critic.frozen = !options.critic_learns;
-  params.actor.frozen = !options.actor_learns;
-  params.tropism = p.tropism;
-  params.sampler = p.sampler;
-  params.entropy = blocks::EntropyParams{p.sampler.k_b};
-  params.period = p.trial.period;
-  params.exploration = options.exploration;
-  return params;
+  const ControllerSlots& slots = options.slots;
+  BasalGangliaBlocks blocks;
+  blocks.features = fill_slot("features", slots.features, configured_features, {"features", p});
+  check_slot_block(blocks.features.get(), "features slot", "x", "features");
+  const int n = blocks.features->output_port("features").size();
+  blocks.critic =
+      fill_slot("critic", slots.critic, configured_critic, {"critic", p, n, options.critic_learns});
+  blocks.actor =
+      fill_slot("actor", slots.actor, configured_actor, {"actor", p, n, options.actor_learns});
+  if (options.exploration) {
+    blocks.tropism = fill_slot("tropism", slots.tropism, configured_tropism, {"tropism", p});
+    blocks.exploration =
+        fill_slot("exploration", slots.exploration, configured_exploration, {"sampler", p});
+    blocks.entropy = fill_slot("entropy", slots.entropy, configured_entropy, {"entropy", p});
+  }
+  return blocks;
+}
+
+// The run's parameters with the options' own choices (the actor's rule).
+config::Parameters with_options(const config::Parameters& p, const ControllerOptions& options) {
+  config::Parameters adjusted = p;
+  if (options.actor_rule) adjusted.actor.rule = *options.actor_rule;
+  return adjusted;
 }
 
 // The omega slot's block, or the schedule in the options' mode.
 std::shared_ptr<Block> omega_block(const ControllerOptions& options, const config::Parameters& p) {
   if (options.slots.omega) {
-    std::shared_ptr<Block> block = options.slots.omega("omega", p);
+    std::shared_ptr<Block> block = options.slots.omega({"omega", p});
     check_slot_block(block.get(), "omega slot", nullptr, "omega", 1);
     return block;
   }
@@ -96,8 +80,8 @@ CbbgController::CbbgController(std::string name, const config::Parameters& param
   const OutputPort* supervisor_action = nullptr;
   if (options.supervisor) {
     auto& cerebellum = builder.emplace<Cerebellum>(
-        "cerebellum",
-        fill_slot(options.slots.supervisor, configured_supervisor, "supervisor", parameters));
+        "cerebellum", fill_slot("supervisor", options.slots.supervisor, configured_supervisor,
+                                {"supervisor", parameters}));
     cerebellum_ = &cerebellum;
     measured_ = &builder.export_input(cerebellum.measured(), "measured");
     supervisor_action = &cerebellum.action();
@@ -105,7 +89,7 @@ CbbgController::CbbgController(std::string name, const config::Parameters& param
     supervisor_action = &constant(builder, "no_supervisor", 0.0);
   }
   if (options.basal_ganglia) {
-    add_basal_ganglia(builder, parameters, options, *supervisor_action);
+    add_basal_ganglia(builder, with_options(parameters, options), options, *supervisor_action);
   } else {
     add_supervisor_alone(builder, *supervisor_action);
   }
@@ -115,30 +99,34 @@ CbbgController::CbbgController(std::string name, const config::Parameters& param
 void CbbgController::add_basal_ganglia(DiagramBuilder& builder, const config::Parameters& p,
                                        const ControllerOptions& options,
                                        const OutputPort& supervisor_action) {
-  const Block& normaliser =
-      builder.add(fill_slot(options.slots.normaliser, configured_normaliser, "normaliser", p));
-  auto& basal_ganglia = builder.emplace<BasalGanglia>(
-      "basal_ganglia", fill_slot(options.slots.features, configured_features, "features", p),
-      basal_ganglia_params(p, options));
+  const Block& normaliser = builder.add(
+      fill_slot("normaliser", options.slots.normaliser, configured_normaliser, {"normaliser", p}));
+  auto& basal_ganglia =
+      builder.emplace<BasalGanglia>("basal_ganglia", basal_ganglia_blocks(p, options));
   const Block& omega = builder.add(omega_block(options, p));
-  auto& mixer = builder.emplace<blocks::Mixer>("mixer");
+  const Block& mixer =
+      builder.add(fill_slot("mixer", options.slots.mixer, configured_mixer, {"mixer", p}));
+  check_slot(&mixer, mixer_contract());
   basal_ganglia_ = &basal_ganglia;
 
   measured_ = &builder.export_input(normaliser.input_port("measured"), "measured");
-  reward_ = &builder.export_input(basal_ganglia.reward());
-  failed_ = &builder.export_input(basal_ganglia.failed());
+  if (basal_ganglia.reward() != nullptr) reward_ = &builder.export_input(*basal_ganglia.reward());
+  if (basal_ganglia.failed() != nullptr) failed_ = &builder.export_input(*basal_ganglia.failed());
   builder.connect(normaliser.output_port("x"), basal_ganglia.state());
-  builder.connect(supervisor_action, basal_ganglia.supervisor_action());
-  builder.connect(supervisor_action, mixer.input_port("supervisor_action"));
-  builder.connect(omega.output_port("omega"), basal_ganglia.omega());
-  builder.connect(omega.output_port("omega"), mixer.input_port("omega"));
-  builder.connect(basal_ganglia.exploration_action(), mixer.input_port("exploration_action"));
+  const OutputPort& omega_value = omega.output_port("omega");
+  if (const InputPort* learns_towards = basal_ganglia.supervisor_action()) {
+    builder.connect(supervisor_action, *learns_towards);
+  }
+  connect_if_read(builder, supervisor_action, mixer, "supervisor_action");
+  if (const InputPort* mixing = basal_ganglia.omega()) builder.connect(omega_value, *mixing);
+  connect_if_read(builder, omega_value, mixer, "omega");
+  connect_if_read(builder, basal_ganglia.exploration_action(), mixer, "exploration_action");
 
   builder.export_output(mixer.output_port("action"), "action");
   builder.export_output(supervisor_action, "supervisor_action");
   builder.export_output(basal_ganglia.actor_action(), "actor_action");
   builder.export_output(basal_ganglia.exploration_action(), "exploration_action");
-  builder.export_output(omega.output_port("omega"), "omega");
+  builder.export_output(omega_value, "omega");
   builder.export_output(basal_ganglia.value(), "value");
   builder.export_output(basal_ganglia.td_error(), "td_error");
   builder.export_output(basal_ganglia.temperature(), "temperature");

@@ -4,7 +4,6 @@
 // are ControllerOptions: the named presets (presets.h) are rows of options, and a user's
 // ablation is one more set of options, with no edit of the library.
 
-#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +13,7 @@
 #include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/basal_ganglia.h"
 #include "cbbg/diagrams/cerebellum.h"
+#include "cbbg/diagrams/controller_slots.h"
 #include "cbbg/framework/diagram.h"
 
 namespace cbbg {
@@ -21,28 +21,6 @@ class DiagramBuilder;
 }
 
 namespace cbbg::diagrams {
-
-// Makes the block of one slot, named `name`, from the run's typed parameters (a user's own
-// section is in parameters.own: config/own_sections.h). Called once per controller built (so
-// once per task, maybe in several threads at once). It may return a std::unique_ptr.
-using BlockFactory = std::function<std::shared_ptr<Block>(const std::string& name,
-                                                          const config::Parameters& parameters)>;
-
-// The blocks that fill the controller's slots; an empty factory takes the parameters' own.
-struct ControllerSlots {
-  // Input "measured" (6, blocks/measured_signals.h), output "action" (1): a_S. Default:
-  // supervisor.kind's (blocks::PdSupervisor or blocks::LqrSupervisor).
-  BlockFactory supervisor;
-  // Input "measured" (6), output "x": the state the basal ganglia sees, in the units its
-  // features expect. Robot-specific. Default: blocks::Normaliser (normaliser.*).
-  BlockFactory normaliser;
-  // Input "x", output "features": what critic and actor share. Default: blocks::RbfFeatures
-  // (rbf.*).
-  BlockFactory features;
-  // No input, output "omega" (1): omega(t), in [0, 1]. Default: blocks::OmegaSchedule, in
-  // ControllerOptions::omega's mode. Set, it replaces that mode.
-  BlockFactory omega;
-};
 
 // Independent choices; each preset of presets.h is one set of them.
 struct ControllerOptions {
@@ -54,9 +32,10 @@ struct ControllerOptions {
   // ganglia drive), kConstant (omega_constant throughout). slots.omega replaces it.
   blocks::OmegaMode omega = blocks::OmegaMode::kSchedule;
   double omega_constant = 0.5;  // kConstant's omega, in [0, 1]
-  // The actor's learning rule; unset: actor.rule.
+  // The actor's learning rule; unset: actor.rule (the library's actor only).
   std::optional<blocks::ActorRule> actor_rule;
-  // False: that learner acts but never changes its weights (frozen); the other learns on.
+  // False: that learner acts but never changes what it learns (frozen; a user's block is told
+  // by SlotRequest::learns); the other learns on.
   bool critic_learns = true;
   bool actor_learns = true;
   // False: no exploration; a_E = a_A, and T and E are NaN.
@@ -87,16 +66,18 @@ struct ControllerOptions {
 ///
 /// Without basal ganglia the outputs from actor_action on are NaN, except omega = 0.
 /// Blocks: "cerebellum" (Cerebellum) or the constant "no_supervisor"; "normaliser",
-/// "basal_ganglia" (BasalGanglia), "omega" (blocks::OmegaSchedule or the omega slot's),
-/// "mixer". The closed loop needs none of these names: any diagram with these ports is a
-/// controller (closed_loop.h).
+/// "basal_ganglia" (BasalGanglia: "features", "critic", "actor", "tropism", "sampler" (the
+/// exploration slot's), "entropy"), "omega", "mixer": each its slot's block
+/// (controller_slots.h). The closed loop needs none of these names: any diagram with these
+/// ports is a controller (closed_loop.h). "reward" and "failed" are inputs only when a block
+/// reads them.
 class CbbgController final : public Diagram {
  public:
   CbbgController(std::string name, const config::Parameters& parameters,
                  const ControllerOptions& options);
 
   const InputPort& measured() const { return *measured_; }
-  // Null without basal ganglia: a supervisor alone needs neither.
+  // Null when no block reads it: a supervisor alone needs neither.
   const InputPort* reward() const { return reward_; }
   const InputPort* failed() const { return failed_; }
   const OutputPort& action() const { return output_port("action"); }

@@ -4,12 +4,12 @@
 #include <stdexcept>
 
 #include "cbbg/blocks/external_push.h"
-#include "cbbg/blocks/failure_detector.h"
-#include "cbbg/blocks/reward.h"
-#include "cbbg/blocks/sensors.h"
+#include "cbbg/blocks/measured_signals.h"
 #include "cbbg/blocks/torque_push.h"
 #include "cbbg/config/config.h"
 #include "cbbg/config/parameters.h"
+#include "cbbg/diagrams/configured_blocks.h"
+#include "cbbg/diagrams/slot_check.h"
 #include "cbbg/framework/diagram_builder.h"
 #include "cbbg/framework/primitives/constant_source.h"
 #include "cbbg/framework/primitives/multiplexer.h"
@@ -176,7 +176,52 @@ const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& meas
   return telemetry.output_port("y");
 }
 
+// The task's blocks: sensors, failure detector, and the reward, unless the controller makes
+// its own (null then).
+struct Task {
+  const Block& sensors;
+  const Block& failure;
+  const Block* reward;
+};
+
+Task add_task(DiagramBuilder& builder, const config::Parameters& p, const TaskSlots& slots,
+              const plant::RobotPlant& robot, const plant::SignalIndex& signals,
+              const Diagram& controller) {
+  const int state_size = robot.state_output().size();
+  const Block& sensors = builder.add(fill_slot("sensors", slots.sensors, configured_sensors,
+                                               {"sensors", p, 0, true, state_size, &signals}));
+  check_slot(&sensors, sensors_contract(state_size));
+  const Block& failure =
+      builder.add(fill_slot("failure", slots.failure, configured_failure, {"failure", p}));
+  check_slot(&failure, failure_contract());
+  if (controller.find_output_port("reward") != nullptr) {
+    if (controller.find_input_port("reward") != nullptr) {
+      throw std::invalid_argument("controller '" + controller.name() +
+                                  "' has both an input \"reward\" and an output \"reward\": it "
+                                  "learns from the loop's reward or makes its own, not both");
+    }
+    return {sensors, failure, nullptr};
+  }
+  const Block& reward =
+      builder.add(fill_slot("reward", slots.reward, configured_reward, {"reward", p}));
+  check_slot(&reward, reward_contract());
+  return {sensors, failure, &reward};
+}
+
 }  // namespace
+
+SlotContract sensors_contract(int plant_state_size) {
+  return {
+      "sensors slot", {{"plant_state", plant_state_size}}, {{"measured", blocks::kMeasuredSize}}};
+}
+
+SlotContract failure_contract() {
+  return {"failure slot", {{"measured", blocks::kMeasuredSize}}, {{"failed", 1}}};
+}
+
+SlotContract reward_contract() {
+  return {"reward slot", {{"measured", blocks::kMeasuredSize}, {"failed", 1}}, {{"reward", 1}}};
+}
 
 void ClosedLoop::start_trial(Context& context, double theta0) const {
   context.reset_trial_state();
@@ -198,11 +243,7 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   if (!made) throw std::invalid_argument("the plant factory returned null");
   loop.signals = check_plant(*made);
   const plant::RobotPlant& robot = builder.add(std::move(made));
-  auto& sensors = builder.emplace<blocks::Sensors>("sensors", p.sensors, period, loop.signals,
-                                                   robot.state_output().size());
-  auto& failure = builder.emplace<blocks::FailureDetector>(
-      "failure", blocks::FailureDetectorParams{p.trial.failure_angle}, period);
-  auto& reward = builder.emplace<blocks::Reward>("reward", p.reward, period);
+  const Task task = add_task(builder, p, options.slots, robot, loop.signals, *controller);
   const Diagram& brain = builder.add(std::move(controller));
   loop.plant = &robot;
   loop.controller = &brain;
@@ -211,22 +252,22 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
   loop.layout = std::move(survey.layout);
   loop.layout_notes = std::move(survey.layout_notes);
 
-  builder.connect(robot.state_output(), sensors.input_port("plant_state"));
-  const OutputPort& measured = sensors.output_port("measured");
-  builder.connect(measured, failure.input_port("measured"));
-  builder.connect(measured, reward.input_port("measured"));
-  builder.connect(failure.output_port("failed"), reward.input_port("failed"));
+  connect_if_read(builder, robot.state_output(), task.sensors, "plant_state");
+  const OutputPort& measured = task.sensors.output_port("measured");
+  const OutputPort& failed = task.failure.output_port("failed");
+  connect_if_read(builder, measured, task.failure, "measured");
+  if (task.reward != nullptr) {
+    connect_if_read(builder, measured, *task.reward, "measured");
+    connect_if_read(builder, failed, *task.reward, "failed");
+  }
   builder.connect(measured, brain.input_port("measured"));
-  if (const InputPort* learns_from = brain.find_input_port("reward")) {
-    builder.connect(reward.output_port("reward"), *learns_from);
-  }
-  if (const InputPort* ends_on = brain.find_input_port("failed")) {
-    builder.connect(failure.output_port("failed"), *ends_on);
-  }
+  const OutputPort& reward =
+      task.reward != nullptr ? task.reward->output_port("reward") : brain.output_port("reward");
+  connect_if_read(builder, reward, brain, "reward");
+  connect_if_read(builder, failed, brain, "failed");
   wire_actuation(builder, period, brain.output_port("action"), robot, push);
   wire_disturbance(builder, period, robot, push);
-  loop.telemetry =
-      &wire_telemetry(builder, measured, brain, reward.output_port("reward"), robot, loop.signals);
+  loop.telemetry = &wire_telemetry(builder, measured, brain, reward, robot, loop.signals);
   loop.diagram = builder.build();
   return loop;
 }

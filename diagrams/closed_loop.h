@@ -1,7 +1,7 @@
 #pragma once
 // The closed loop a trial runs: any robot plant (plant/robot_plant.h, plant_kinds.h), the sensors,
-// the task (failure detector and sliding-surface reward), any controller (a CbbgController, or a
-// diagram of the user's with a controller's ports), the zero-order hold on its action, and a
+// the task (failure detector and reward: slots, TaskSlots), any controller (a CbbgController, or
+// a diagram of the user's with a controller's ports), the zero-order hold on its action, and a
 // telemetry multiplexer of what each tick records (telemetry.h).
 //
 //   plant -> sensors -> failure, reward -> controller -> hold [-> push] -> both wheels -> plant
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cbbg/blocks/push_params.h"
+#include "cbbg/diagrams/block_factory.h"
 #include "cbbg/diagrams/cbbg_controller.h"
 #include "cbbg/diagrams/controller_ports.h"
 #include "cbbg/diagrams/plant_kinds.h"
@@ -52,6 +53,30 @@ struct ClosedLoop {
   void start_trial(Context& context, double theta0) const;
 };
 
+// The task's slots around the controller, each filled by a user's block or the parameters'
+// own (configured_blocks.h), with the port contract the loop checks when it builds
+// (check_slot). The reward the loop records in steps.csv is the one the controller learns
+// from, wherever it comes from.
+struct TaskSlots {
+  // Feeds "plant_state" (the plant's output "state", SlotRequest::plant_state_size; where
+  // each signal sits: SlotRequest::signals); reads "measured" (6, blocks/measured_signals.h).
+  // Default: blocks::Sensors (sensors.*).
+  BlockFactory sensors;
+  // Feeds "measured" (6); reads "failed" (1: 1 when the trial fails at this tick). Default:
+  // blocks::FailureDetector (trial.failure_angle).
+  BlockFactory failure;
+  // Feeds "measured" (6) and "failed" (1); reads "reward" (1: r_{t-1}). Default:
+  // reward.kind's (sliding: blocks::Reward; quadratic: blocks::QuadraticReward). A
+  // controller with an output "reward" (1) makes its own reward instead: the loop builds
+  // none, and records the controller's.
+  BlockFactory reward;
+};
+
+// The contracts check_slot checks; `plant_state_size` the plant's output "state" size.
+SlotContract sensors_contract(int plant_state_size);
+SlotContract failure_contract();
+SlotContract reward_contract();
+
 struct ClosedLoopOptions {
   // Empty: plant.kind's (plant_kinds.h). A plant given here is the arm's own: an evaluation
   // that changes the robot refuses it (the change reaches a plant through its kind).
@@ -60,10 +85,11 @@ struct ClosedLoopOptions {
   // its force and pitch torque into the plant's input "disturbance" (ExternalPush). Empty:
   // push.*'s, if it pushes at all.
   std::optional<blocks::PushParams> push{};
+  TaskSlots slots{};
 };
 
 // Wires `controller` (any diagram with the ports of controller_ports.h; CbbgController is
-// one) into the closed loop named `name`. Its learners (blocks::WeightLearner, blocks::Tropism)
+// one) into the closed loop named `name`. Its learners (blocks::Learner, blocks::Tropism)
 // are found wherever they sit in it. Throws std::invalid_argument when the controller's or
 // the plant's ports or signals do not fit, naming them, or the controller has two learners
 // of a kind; config::ConfigError when the push comes from outside (push.force,

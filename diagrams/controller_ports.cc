@@ -7,7 +7,7 @@
 namespace cbbg::diagrams {
 namespace {
 
-std::string path_of(const blocks::WeightLearner& learner) { return learner.learner_block().path(); }
+std::string path_of(const blocks::Learner& learner) { return learner.learner_block().path(); }
 std::string path_of(const Block& block) { return block.path(); }
 
 // Sets `slot` to `found` (the block `block`), refusing a second learner of the same kind.
@@ -35,8 +35,8 @@ void survey_blocks(const Diagram& diagram, const Diagram& controller, Controller
     }
     if (block->is_diagram()) {
       survey_blocks(static_cast<const Diagram&>(*block), controller, survey);
-    } else if (const auto* learner = dynamic_cast<const blocks::WeightLearner*>(block.get())) {
-      const bool critic = learner->learner_role() == blocks::WeightLearner::Role::kCritic;
+    } else if (const auto* learner = dynamic_cast<const blocks::Learner*>(block.get())) {
+      const bool critic = learner->learner_role() == blocks::Learner::Role::kCritic;
       keep_learner(critic ? found.critic : found.actor, learner, *block, controller,
                    critic ? "critic" : "actor");
     } else if (const auto* tropism = dynamic_cast<const blocks::Tropism*>(block.get())) {
@@ -86,6 +86,9 @@ void check_controller_ports(const Diagram& controller) {
     if (const OutputPort* output = controller.find_output_port(name)) {
       check_port_size(controller, "output", name, output->size(), 1);
     }
+  }
+  if (const OutputPort* own = controller.find_output_port("reward")) {
+    check_port_size(controller, "output", "reward", own->size(), 1);
   }
 }
 

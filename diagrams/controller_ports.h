@@ -7,15 +7,17 @@
 #include <vector>
 
 #include "cbbg/blocks/feature_layout.h"
+#include "cbbg/blocks/learner.h"
 #include "cbbg/blocks/tropism.h"
-#include "cbbg/blocks/weight_learner.h"
 #include "cbbg/framework/diagram.h"
 
 namespace cbbg::diagrams {
 
 // Required: input "measured" (6, blocks/measured_signals.h) and output "action" (1).
-// Optional: inputs "reward" and "failed" (1 each: a learner's), and any of the diagnostic
-// outputs (1 each), which the telemetry records (NaN for those it lacks).
+// Optional: inputs "reward" and "failed" (1 each: a learner's), any of the diagnostic
+// outputs (1 each), which the telemetry records (NaN for those it lacks), and an output
+// "reward" (1) for a controller that makes its own reward (the loop then records it, and
+// builds no reward of its own).
 inline constexpr const char* kControllerDiagnostics[] = {
     "supervisor_action", "actor_action", "exploration_action", "omega", "value", "td_error",
     "temperature",       "entropy"};
@@ -27,10 +29,10 @@ void check_controller_ports(const Diagram& controller);
 
 // The learning blocks the protocols read and write (weights files, exp2's annealing of k1),
 // found anywhere in the controller: its critic and actor by their interface
-// (blocks::WeightLearner, a user's own too), its tropism by type; null where it has none.
+// (blocks::Learner, a user's own too), its tropism by type; null where it has none.
 struct LearnerBlocks {
-  const blocks::WeightLearner* critic = nullptr;
-  const blocks::WeightLearner* actor = nullptr;
+  const blocks::Learner* critic = nullptr;
+  const blocks::Learner* actor = nullptr;
   const blocks::Tropism* tropism = nullptr;  // null without exploration
   bool learns() const { return actor != nullptr; }
 };

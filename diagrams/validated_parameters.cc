@@ -5,8 +5,8 @@
 #include <string>
 
 #include "cbbg/blocks/failure_detector.h"
+#include "cbbg/blocks/learner.h"
 #include "cbbg/blocks/lqr_supervisor.h"
-#include "cbbg/blocks/weight_learner.h"
 #include "cbbg/config/declared_keys.h"
 #include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/framework/number_text.h"
@@ -46,6 +46,7 @@ void check_blocks(const config::Parameters& p) {
   p.actor.validate();
   p.tropism.validate();
   p.sampler.validate();
+  p.exploration.validate();
   p.omega.validate();
   p.reward.validate();
   p.push.validate();

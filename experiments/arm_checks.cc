@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/blocks/weight_learner.h"
+#include "cbbg/blocks/learner.h"
 #include "cbbg/diagrams/arms.h"
 #include "cbbg/experiments/protocols.h"
 #include "cbbg/experiments/trial_runner.h"
@@ -31,10 +31,32 @@ diagrams::ClosedLoop build_arm(const std::string& name, const config::Parameters
   }
 }
 
+// A user's learner may learn parts larger than its features: each is a file's section too.
+void check_learnt_parts(const std::string& name, const blocks::Learner* learner) {
+  if (learner == nullptr) return;
+  const std::string who = "arm '" + name + "': its " + blocks::role_name(learner->learner_role()) +
+                          " '" + learner->learner_block().path() + "' learns a part '";
+  for (const StatePart& part : learner->learnt_parts()) {
+    if (!blocks::is_part_name(part.name)) {
+      throw config::ConfigError(who + part.name +
+                                "'; a weights file names parts with letters, digits and '_' only");
+    }
+    if (part.size > blocks::kMaxFeatures) {
+      throw config::ConfigError(who + part.name + "' of " + std::to_string(part.size) +
+                                " numbers; a weights file stores at most " +
+                                std::to_string(blocks::kMaxFeatures) + " per part");
+    }
+  }
+}
+
 void check_features(const std::string& name, const diagrams::ClosedLoop& loop) {
   if (!loop.learner.learns()) return;
   const int features = loop.learner.actor->num_features();
-  if (features <= blocks::kMaxFeatures) return;
+  if (features <= blocks::kMaxFeatures) {
+    check_learnt_parts(name, loop.learner.actor);
+    check_learnt_parts(name, loop.learner.critic);
+    return;
+  }
   std::vector<std::string> keys;
   for (const blocks::LayoutEntry& entry : loop.layout) keys.push_back(entry.key);
   throw config::ConfigError("arm '" + name + "' has " + std::to_string(features) +

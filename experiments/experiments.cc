@@ -74,7 +74,7 @@ void run_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
     if (has_actor) {
       const LearntWeights weights = learnt_weights(loop, runner.context(), provenance(p, run));
       record.actor_alone_passed =
-          weights.actor.allFinite() && actor_alone_balances(p, arm, weights, run.seed);
+          weights.actor.all_finite() && actor_alone_balances(p, arm, weights, run.seed);
     }
     run.trials.push_back(record);
     if (record.actor_alone_passed.value_or(false)) {

@@ -2,46 +2,145 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "cbbg/config/config.h"
 #include "cbbg/diagrams/plant_kinds.h"
 
 namespace cbbg::experiments {
 
-int LearntWeights::num_features() const { return static_cast<int>(actor.size()); }
+namespace {
+
+bool same_values(const Vector& a, const Vector& b) {
+  return a.size() == b.size() && (a.size() == 0 || (a.array() == b.array()).all());
+}
+
+// "weights (49), trace (49)": a learner's parts in messages.
+template <typename Parts, typename Size>
+std::string parts_text(const Parts& parts, Size size) {
+  std::string text;
+  for (const auto& part : parts) {
+    text += (text.empty() ? "" : ", ") + part.name + " (" + std::to_string(size(part)) + ")";
+  }
+  return text.empty() ? "nothing" : text;
+}
+
+// What `learner` learns in `context`, part by part.
+LearntState learnt_state(const blocks::Learner& learner, const Context& context) {
+  LearntState state;
+  for (const StatePart& part : learner.learnt_parts()) {
+    state.parts.push_back({part.name, learner.learnt(context, part)});
+  }
+  return state;
+}
+
+// Empty when `state` holds exactly the parts `learner` learns, by name and size, in its
+// order; else the line that says how they differ, starting with `what`.
+std::string parts_difference(const LearntState& state, const blocks::Learner& learner,
+                             const std::string& what) {
+  const std::vector<StatePart> parts = learner.learnt_parts();
+  bool same = parts.size() == state.parts.size();
+  for (std::size_t k = 0; same && k < parts.size(); ++k) {
+    same = parts[k].name == state.parts[k].name &&
+           parts[k].size == static_cast<int>(state.parts[k].values.size());
+  }
+  if (same) return {};
+  const char* role = blocks::role_name(learner.learner_role());
+  return what + " holds " + role + " parts " +
+         parts_text(state.parts, [](const LearntPart& p) { return p.values.size(); }) + "; the " +
+         role + " '" + learner.learner_block().path() + "' learns " +
+         parts_text(parts, [](const StatePart& p) { return p.size; });
+}
+
+}  // namespace
+
+const Vector* LearntState::find(std::string_view name) const {
+  for (const LearntPart& part : parts) {
+    if (part.name == name) return &part.values;
+  }
+  return nullptr;
+}
+
+LearntState LearntState::of_weights(Vector weights) {
+  return LearntState{{{"weights", std::move(weights)}}};
+}
+
+Vector& LearntState::weights(const char* role) {
+  return const_cast<Vector&>(std::as_const(*this).weights(role));
+}
+
+const Vector& LearntState::weights(const char* role) const {
+  if (const Vector* found = find("weights")) return *found;
+  throw std::invalid_argument(
+      std::string("the ") + role + " learnt no part 'weights'; it learnt " +
+      parts_text(parts, [](const LearntPart& p) { return p.values.size(); }));
+}
+
+bool LearntState::is_weights_only(int features) const {
+  return parts.size() == 1 && parts[0].name == "weights" && parts[0].values.size() == features;
+}
+
+bool LearntState::all_finite() const {
+  for (const LearntPart& part : parts) {
+    if (!part.values.allFinite()) return false;
+  }
+  return true;
+}
+
+bool LearntState::operator==(const LearntState& other) const {
+  if (parts.size() != other.parts.size()) return false;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    if (parts[k].name != other.parts[k].name ||
+        !same_values(parts[k].values, other.parts[k].values)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+const LearntState& LearntWeights::of(blocks::Learner::Role role) const {
+  return role == blocks::Learner::Role::kCritic ? critic : actor;
+}
 
 bool LearntWeights::operator==(const LearntWeights& other) const {
-  auto same = [](const Vector& a, const Vector& b) {
-    return a.size() == b.size() && (a.size() == 0 || (a.array() == b.array()).all());
-  };
-  return layout == other.layout && same(actor, other.actor) && same(critic, other.critic) &&
-         provenance == other.provenance;
+  return layout == other.layout && features == other.features && actor == other.actor &&
+         critic == other.critic && provenance == other.provenance;
 }
 
 LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& context,
                              const WeightsProvenance& provenance) {
-  if (loop.learner.actor == nullptr || loop.learner.critic == nullptr) {
+  if (loop.learner.actor == nullptr) {
     throw std::invalid_argument("diagram '" + loop.diagram->name() +
-                                "' has no critic and actor: it learns no weights");
+                                "' has no actor: it learns no weights");
   }
   LearntWeights weights;
   weights.layout = loop.layout;
   weights.layout_notes = loop.layout_notes;
-  weights.actor = loop.learner.actor->weights(context);
-  weights.critic = loop.learner.critic->weights(context);
+  weights.features = loop.learner.actor->num_features();
+  weights.actor = learnt_state(*loop.learner.actor, context);
+  // A critic that is no blocks::Learner (a user's that keeps nothing) leaves no parts.
+  if (loop.learner.critic != nullptr) {
+    weights.critic = learnt_state(*loop.learner.critic, context);
+  }
   weights.provenance = provenance;
   return weights;
 }
 
 void check_weights_fit(const LearntWeights& weights, const std::string& plant_kind,
-                       const blocks::FeatureLayout& layout, const std::string& what) {
+                       const diagrams::ClosedLoop& loop, const std::string& what) {
   const std::string& learnt_on = weights.provenance.plant;
   if (!diagrams::same_robot(learnt_on, plant_kind)) {
     throw config::ConfigError(what + " was made on plant kind '" + learnt_on +
                               "' and cannot be loaded onto plant kind '" + plant_kind +
                               "' (plant.kind): another robot");
   }
-  check_layout_fit(weights, layout, what);
+  check_layout_fit(weights, loop.layout, what);
+  for (const blocks::Learner* learner : {loop.learner.actor, loop.learner.critic}) {
+    if (learner == nullptr) continue;
+    const std::string difference =
+        parts_difference(weights.of(learner->learner_role()), *learner, what);
+    if (!difference.empty()) throw config::ConfigError(difference);
+  }
 }
 
 void check_layout_fit(const LearntWeights& weights, const blocks::FeatureLayout& layout,
@@ -64,20 +163,16 @@ void load_learnt_weights(const diagrams::ClosedLoop& loop, Context& context,
     throw std::invalid_argument("the weights were made for " + difference.first + "; diagram '" +
                                 loop.diagram->name() + "' has " + difference.second);
   }
-  auto check = [&loop](const char* name, Eigen::Index size, int features) {
-    if (size != features) {
-      throw std::invalid_argument("the weights have " + std::to_string(size) + " " + name +
-                                  " weights; diagram '" + loop.diagram->name() + "' has " +
-                                  std::to_string(features) + " features");
+  for (const blocks::Learner* learner : {loop.learner.actor, loop.learner.critic}) {
+    if (learner == nullptr) continue;
+    const LearntState& state = weights.of(learner->learner_role());
+    const std::string difference = parts_difference(state, *learner, "the weights");
+    if (!difference.empty()) throw std::invalid_argument(difference);
+    const std::vector<StatePart> parts = learner->learnt_parts();
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      learner->mutable_learnt(context, parts[k]) = state.parts[k].values;
     }
-  };
-  check("actor", weights.actor.size(), loop.learner.actor->num_features());
-  if (loop.learner.critic != nullptr) {
-    check("critic", weights.critic.size(), loop.learner.critic->num_features());
   }
-  loop.learner.actor->mutable_weights(context) = weights.actor;
-  if (loop.learner.critic != nullptr)
-    loop.learner.critic->mutable_weights(context) = weights.critic;
 }
 
 }  // namespace cbbg::experiments

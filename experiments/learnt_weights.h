@@ -4,9 +4,11 @@
 // loop's context. store/weights_file.h keeps them in files.
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cbbg/blocks/feature_layout.h"
+#include "cbbg/blocks/learner.h"
 #include "cbbg/diagrams/closed_loop.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/types.h"
@@ -23,46 +25,78 @@ struct WeightsProvenance {
   bool operator==(const WeightsProvenance&) const = default;
 };
 
-// The weights of the critic (V = w . phi) and the actor (a_A = theta . phi), and the layout
-// that gives phi its meaning, as the loop's blocks describe it (blocks/feature_layout.h: the
+// One part of what a learner learnt (blocks::Learner::learnt_parts): its name ("weights",
+// or a user's learner's own: "trace", "second_weights") and its numbers.
+struct LearntPart {
+  std::string name;
+  Vector values;
+};
+
+// What one learner learnt: its parts, in the order it declares them.
+struct LearntState {
+  std::vector<LearntPart> parts;
+
+  // The part `name`; null when there is none.
+  const Vector* find(std::string_view name) const;
+  // The library's shape: one part, "weights".
+  static LearntState of_weights(Vector weights);
+  // The part "weights" (the library's critic's w, its actor's theta). Throws
+  // std::invalid_argument naming `role` ("actor") when there is none.
+  const Vector& weights(const char* role) const;
+  Vector& weights(const char* role);
+  // Whether it is the library's shape: one part, "weights", of `features` numbers.
+  bool is_weights_only(int features) const;
+  bool all_finite() const;
+  bool operator==(const LearntState& other) const;
+};
+
+// What the critic and the actor learnt (the library's: w with V = w . phi, theta with
+// a_A = theta . phi; a user's learner's: whatever parts it declares), and the layout that
+// gives phi its meaning, as the loop's blocks describe it (blocks/feature_layout.h: the
 // normaliser's scales and the RBF grid for the presets, a user's features block's own).
 // Weights are only meaningful on the same robot, in a loop of the same layout
 // (check_weights_fit).
 struct LearntWeights {
   blocks::FeatureLayout layout;
   std::vector<std::string> layout_notes;  // the blocks' notes, for a reader of the file
-  Vector actor;                           // theta, one per feature
-  Vector critic;                          // w, as many
+  int features = 0;                       // n, the features the learners read
+  LearntState actor;
+  LearntState critic;
   WeightsProvenance provenance;
 
-  // The feature count: the actor's weights.
-  int num_features() const;
-  // The same layout, weights and provenance (the notes are a reader's help only).
+  int num_features() const { return features; }
+  // The role's state: `role` is "actor" or "critic".
+  const LearntState& of(blocks::Learner::Role role) const;
+  // The same layout, feature count, parts and provenance (the notes are a reader's help only).
   bool operator==(const LearntWeights& other) const;
 };
 
-// The weights `loop` has learnt in `context`, with the loop's layout. Throws
-// std::invalid_argument when the loop has no critic and actor.
+// What `loop`'s learners have learnt in `context` (every part they declare; none for a critic
+// that is no blocks::Learner), with the loop's layout. Throws std::invalid_argument when the
+// loop has no actor.
 LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& context,
                              const WeightsProvenance& provenance);
 
 // The one check of weights from elsewhere (a file, a run before) before they are loaded into
-// a loop on plant kind `plant_kind` whose blocks describe `layout`. Throws config::ConfigError,
-// a line that starts with `what` (store::check_weights: "weights file 'w.txt'"), unless they
-// were learnt on the same robot (diagrams::same_robot: the Simbody and the analytic plant are
-// one) and for the same layout, every key and number bit for bit:
+// `loop` on plant kind `plant_kind`. Throws config::ConfigError, a line that starts with
+// `what` (store::check_weights: "weights file 'w.txt'"), unless they were learnt on the same
+// robot (diagrams::same_robot: the Simbody and the analytic plant are one), for the same
+// layout, every key and number bit for bit, and hold the parts the loop's learners declare:
 //   <what> was made on plant kind 'cartpole' and cannot be loaded onto plant kind 'simbody'
 //   (plant.kind): another robot
 //   <what> was made for rbf.centres [-1, 0, 1]; this diagram has rbf.centres [-2, 0, 2]
+//   <what> holds critic parts weights (49); the critic 'controller/basal_ganglia/critic'
+//   learns weights (49), trace (49)
 void check_weights_fit(const LearntWeights& weights, const std::string& plant_kind,
-                       const blocks::FeatureLayout& layout, const std::string& what);
-// Its second half: the layout alone.
+                       const diagrams::ClosedLoop& loop, const std::string& what);
+// Its layout half alone.
 void check_layout_fit(const LearntWeights& weights, const blocks::FeatureLayout& layout,
                       const std::string& what);
 
-// Sets the actor's weights in `context`, and the critic's where the loop has one. Throws
-// std::invalid_argument when the loop has no actor, or its layout or feature counts differ
-// from the weights'; check_weights_fit first for a user's message.
+// Sets every part the actor declares in `context`, and the critic's where the loop has one.
+// Throws std::invalid_argument when the loop has no actor, or its layout, feature count or
+// learnt parts (names and sizes) differ from the weights'; check_weights_fit first for a
+// user's message.
 void load_learnt_weights(const diagrams::ClosedLoop& loop, Context& context,
                          const LearntWeights& weights);
 

@@ -27,7 +27,7 @@ WeightsProvenance provenance(const config::Parameters& p, const SeedRun& run) {
 }
 
 void keep_weights(LearntWeights weights, SeedRun& run) {
-  if (weights.actor.allFinite() && weights.critic.allFinite()) {
+  if (weights.actor.all_finite() && weights.critic.all_finite()) {
     run.weights = std::move(weights);
   } else {
     run.weights_diverged = true;
@@ -117,8 +117,7 @@ ExperimentResults run_per_arm(const std::string& experiment, const PerSeed& prot
     if (options.initial_weights != nullptr) {
       const diagrams::ClosedLoop loop = arm.learner(p);
       if (loop.learner.learns()) {
-        check_weights_fit(*options.initial_weights, p.plant.kind, loop.layout,
-                          "the initial weights");
+        check_weights_fit(*options.initial_weights, p.plant.kind, loop, "the initial weights");
       }
     }
   }

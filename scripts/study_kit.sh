@@ -1,5 +1,5 @@
-# Sourced by the study scripts (robustness_study.sh, teacher_study.sh), after they parse their
-# options: what they share. The caller sets
+# Sourced by the study scripts (robustness_study.sh, teacher_study.sh, ablation_study.sh),
+# after they parse their options: what they share. The caller sets
 #   study     its own name, for messages ("robustness_study.sh")
 #   here      its folder
 #   usage     a function that prints "$study: MESSAGE (usage: ...)" and exits 2
@@ -13,12 +13,15 @@
 # keep a killed invocation's temporaries out of a finished study; study_folder_take_back
 # removes a folder this invocation made while it holds only its marker (cbbg refused the
 # study's first command).
-#
-# The lock: the marker itself, flocked (fd 9) for as long as the study runs. Every process
-# the study starts inherits it, so a cbbg that outlives a killed study keeps its study locked
-# until it ends too; the kernel drops it however they end. A new folder is made, and a made
-# one taken back, under a second lock (fd 8), on the folder's parent, held a moment: two
-# studies starting at once on one new --out make it once, and the second is refused.
+# The studies of variants (teacher_study.sh, ablation_study.sh) set all_variants (their own,
+# by name, paper first), source this before they parse, and define runs_of VARIANT, which sets
+# the `cbbg run` arguments of each of the variant's runs (without --out) in NAME_args, NAME
+# one of study_runs (the runs' folders in DIR/VARIANT/, in the order they run):
+# study_variant_options parses and checks their options (--variants too) before anything is
+# made and sets `chosen`, the variants; study_variants_run MARKER REPORT has cbbg check every
+# run of every variant, opens the study's folder (marked MARKER), runs each run into
+# DIR/VARIANT/NAME (resuming one a kill interrupted, skipping one done) and then REPORT, a
+# Python script beside the study's, on DIR.
 
 study_check_options() {
   [[ -n "$out" ]] || usage "--out DIR is required"
@@ -58,6 +61,123 @@ study_probe() {
   fi
   echo "$study: $what: cbbg could not check it: $line" >&2
   exit 1
+}
+
+# study_variant_options ARGS...: a study of variants' options, parsed and checked: --out, --plant
+# (analytic), --seeds (20), --jobs (nproc) and --variants (all_variants).
+study_variant_options() {
+  plant=analytic seeds=20 jobs="$(nproc)" out="" variants="$all_variants"
+  while [[ $# -gt 0 ]]; do
+    [[ $# -ge 2 ]] || usage "$1 needs a value"
+    case "$1" in
+      --out) out="$2" ;;
+      --plant) plant="$2" ;;
+      --seeds) seeds="$2" ;;
+      --jobs) jobs="$2" ;;
+      --variants) variants="$2" ;;
+      *) usage "unknown option '$1'" ;;
+    esac
+    shift 2
+  done
+  study_check_options
+  study_check_variants
+}
+
+# A variant is a config of the study's configs/ by name (the tree's configs/, or the installed
+# ones beside the script), or a user's own YAML config by path, named after its file; paper
+# is the paper's learner (no config). study_config_of VARIANT: its config ("" for paper);
+# study_name_of VARIANT: its folder's name in DIR.
+study_config_of() {
+  case "$1" in
+    paper) echo "" ;;
+    *.yaml) realpath -- "$1" ;;
+    *) echo "$configs/$1.yaml" ;;
+  esac
+}
+study_name_of() { basename -- "$1" .yaml; }
+
+# --variants checked (exit 2, one line, nothing made): paper first (the others are paired
+# with it), each variant known or an existing config named as a lowercase word, no two with
+# one folder. Sets `chosen`, the variants in order, and `configs`.
+study_check_variants() {
+  configs="$here/../configs"
+  [[ -d "$configs" ]] || configs="$here/configs"
+  IFS=, read -r -a chosen <<<"$variants"
+  [[ "${chosen[0]:-}" == paper ]] || usage "--variants must begin with paper (the others are paired with it); got '$variants'"
+  local names=" " variant name
+  for variant in "${chosen[@]}"; do
+    name="$(study_name_of "$variant")"
+    [[ "$names" != *" $name "* ]] ||
+      usage "--variants: two variants named $name (each has its folder DIR/NAME)"
+    names+="$name "
+    if [[ "$variant" == *.yaml ]]; then
+      [[ -f "$variant" ]] || usage "--variants: no config file '$variant'"
+      [[ "$name" =~ ^[a-z][a-z0-9_]*$ && "$name" != paper ]] ||
+        usage "--variants: a config's file name must be a lowercase word other than paper; got '$variant'"
+    else
+      [[ "$variant" == paper || -f "$configs/$variant.yaml" ]] ||
+        usage "--variants: no variant '$variant' (there are ${all_variants//,/, }, or a config's path.yaml)"
+    fi
+  done
+}
+
+# Every variant's runs checked by cbbg before anything is made: a key it refuses in the last
+# variant refuses the study, not the study after the paper's runs.
+study_probe_variants() {
+  local variant what run
+  for variant in "${chosen[@]}"; do
+    runs_of "$variant"
+    what="--variants $variant"
+    [[ "$variant" != paper ]] || what="the paper's runs"
+    for run in "${study_runs[@]}"; do
+      local -n study_args="${run}_args"
+      study_probe "$what" "${study_args[@]}"
+    done
+  done
+}
+
+# study_run_or_resume DIR ARGS...: cbbg run ARGS... --out DIR, or --resume DIR after a kill,
+# or nothing when DIR is done. Exits with cbbg's status when it fails.
+study_run_or_resume() {
+  local run="$1" status=0
+  shift
+  if [[ -e "$run.partial" || -e "$run/.cbbg-run" ]]; then
+    "$cbbg" run --resume "$run" --jobs "$jobs" || status=$?
+  elif [[ ! -d "$run" ]]; then
+    mkdir -p "$(dirname "$run")"
+    "$cbbg" run "$@" --out "$run" || status=$?
+    if [[ $status == 2 ]]; then
+      rmdir "$(dirname "$run")" 2>/dev/null || true
+      study_folder_take_back
+    fi
+  fi
+  [[ $status == 0 ]] || exit "$status"
+}
+
+# Every variant's runs, in order, each into DIR/VARIANT/NAME.
+study_run_variants() {
+  local variant run
+  for variant in "${chosen[@]}"; do
+    runs_of "$variant"
+    for run in "${study_runs[@]}"; do
+      local -n study_args="${run}_args"
+      study_run_or_resume "$out/$(study_name_of "$variant")/$run" "${study_args[@]}"
+    done
+  done
+}
+
+# study_variants_run MARKER REPORT: the study of variants, from its checks to its report.
+study_variants_run() {
+  study_probe_variants
+  marker_name="$1"
+  # The variants are not part of it: a study grows by variants, each paired with the same
+  # seeds.
+  settings="plant=$plant seeds=$seeds"
+  study_folder_open
+  study_remove_leftovers "$out" "$out"/*/
+  study_run_variants
+  study_refuse_temporaries
+  /usr/bin/python3 "$here/$2" "$out"
 }
 
 # Removes `folder` if it holds at most the marker (a study's start or take-back, killed);

@@ -28,45 +28,19 @@ Exit status: 0 done, 2 a missing or malformed input (one line on stderr naming t
 import csv
 import math
 import os
-import random
 import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import plot_results  # noqa: E402  (the figures.csv reader, the figure style, publishing)
 from plot_results import InputError, plt  # noqa: E402
+from study_stats import paired, paired_text  # noqa: E402  (seed by seed, shared)
 
 STUDY_MARKER = ".cbbg-teacher-study"
 ARMS = ("cbbg", "bg_only")
 LATE_TRIALS = range(23, 31)  # exp2's trials 23-30: the learner alone (omega = 1)
 MOONSHOT_RATE = 0.9          # of the runs: 45/50 in the issue's 10 seeds x 5 angles
 MOONSHOT_SPEED = 0.1         # m/s
-
-
-def sign_test_p(positive, negative):
-    """Exact two-sided sign test (ties dropped): twice the smaller binomial tail, at most 1."""
-    n = positive + negative
-    if n == 0:
-        return 1.0
-    tail = sum(math.comb(n, k) for k in range(min(positive, negative) + 1)) / 2.0 ** n
-    return min(1.0, 2.0 * tail)
-
-
-def paired(a, b):
-    """b - a seed by seed: (mean, low, high, p) with a seeded percentile bootstrap."""
-    differences = [y - x for x, y in zip(a, b)]
-    n = len(differences)
-    mean = sum(differences) / n
-    draw = random.Random(1)
-    means = sorted(sum(draw.choice(differences) for _ in range(n)) / n for _ in range(10000))
-    positive = sum(d > 0 for d in differences)
-    negative = sum(d < 0 for d in differences)
-    return mean, means[249], means[9749], sign_test_p(positive, negative)
-
-
-def paired_text(a, b, digits=1):
-    mean, low, high, p = paired(a, b)
-    return f"{mean:+.{digits}f} [{low:+.{digits}f}, {high:+.{digits}f}], p = {p:.2g}"
 
 
 def read_transfer(directory):

@@ -4,7 +4,9 @@
 # spring, the toolbox's PID and discrete LQR loops); a user's supervisor through experiment
 # 1 against the cbbg preset, writing a results directory, then sweeping the supervisor's own
 # keys over a 2 x 2 grid; and the cart-pole project through every command
-# (test_cartpole_project.sh); and the installed Python module through its example.
+# (test_cartpole_project.sh); a critic, an exploration and a reward of the user's in their
+# slots through exp1, exp3, resume and eval (test_own_blocks.sh); and the installed Python
+# module through its example.
 # Also runs the installed `cbbg` command, which must find its plotting script by itself.
 # A check whose prerequisite is missing (Debian's python3 with matplotlib and NumPy, a build
 # with the Python module) is not passed: the others still run, and then the test exits 77
@@ -144,6 +146,8 @@ else
 fi
 # A whole project of the user's (examples/cartpole) through every command, as installed.
 "$root/scripts/test_cartpole_project.sh" "$scratch/example/cartpole" "$scratch/cartpole"
+# Ablations by slot (examples/own_blocks): a critic, exploration and reward of the user's.
+"$root/scripts/test_own_blocks.sh" "$scratch/example/own_blocks" "$scratch/own_blocks"
 if ((${#not_checked[@]} > 0)); then
   printf 'test_find_package: SKIPPED, not checked: %s\n' "${not_checked[@]}" >&2
   exit 77

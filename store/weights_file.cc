@@ -9,13 +9,14 @@
 #include <string_view>
 #include <system_error>
 
-#include "cbbg/blocks/weight_learner.h"
+#include "cbbg/blocks/learner.h"
 #include "cbbg/config/config.h"
 #include "cbbg/store/files.h"
 #include "cbbg/store/output_guard.h"
 
 namespace cbbg::store {
 
+using experiments::LearntState;
 using experiments::LearntWeights;
 using experiments::WeightsProvenance;
 namespace {
@@ -25,8 +26,8 @@ std::string file_name(const std::filesystem::path& path) {
   return "weights file '" + path.string() + "'";
 }
 
-std::string format_header() {
-  return std::string(kWeightsFormat) + " " + std::to_string(kWeightsFormatVersion);
+std::string format_header(int version) {
+  return std::string(kWeightsFormat) + " " + std::to_string(version);
 }
 
 // The shortest text that reads back to the same double.
@@ -197,44 +198,92 @@ std::string read_file(const std::filesystem::path& path) {
   return text.str();
 }
 
-void check_format_line(const Reader& reader, const std::optional<Line>& first) {
-  const std::string expected = format_header();
-  if (!first) reader.fail("is empty; a weights file starts with the line '" + expected + "'");
+// The file's version, 1 or 2.
+int read_format_line(const Reader& reader, const std::optional<Line>& first) {
+  std::string expected = "'";  // appended: GCC 12 misreads "'" + std::string as overlapping
+  expected.append(format_header(1)).append("' or '");
+  expected.append(format_header(kWeightsFormatVersion)).append("'");
+  if (!first) reader.fail("is empty; a weights file starts with the line " + expected);
   if (first->words.size() == 2 && first->words[0] == kWeightsFormat) {
-    if (first->words[1] == std::to_string(kWeightsFormatVersion)) return;
-    reader.fail("is format '" + shown(first->text) + "'; this cbbg reads '" + expected + "'");
+    for (const int version : {1, kWeightsFormatVersion}) {
+      if (first->words[1] == std::to_string(version)) return version;
+    }
+    reader.fail("is format '" + shown(first->text) + "'; this cbbg reads " + expected);
   }
   reader.fail("is not a cbbg weights file: its first line is '" + shown(first->text) +
-              "', expected '" + expected + "'");
+              "', expected " + expected);
 }
 
-// "actor <count>" and one weight per line.
-Vector read_weights(Reader& reader, const std::string& name, long long features) {
-  const std::string_view count_word = reader.keyed(name, "<count>");
-  const long long count = reader.integer(reader.last(), count_word, name + " count");
-  if (count != features) {
-    reader.fail(reader.last(), name + " has " + std::to_string(count) +
-                                   " weights, but features is " + std::to_string(features));
-  }
-  Vector weights(count);
+// `count` numbers, one per line: `item` names one in messages ("actor weight [3]",
+// "critic visits [3]"), `items` them all ("critic weights").
+Vector read_numbers(Reader& reader, const std::string& item, const std::string& items,
+                    long long count) {
+  Vector values(count);
   for (long long k = 0; k < count; ++k) {
-    const std::string what = name + " weight [" + std::to_string(k) + "]";
+    const std::string what = item + " [" + std::to_string(k) + "]";
     const auto line = reader.next();
     if (!line) {
       reader.fail("ends after line " + std::to_string(reader.line_number()) + " with " +
-                  std::to_string(k) + " of " + std::to_string(count) + " " + name + " weights");
+                  std::to_string(k) + " of " + std::to_string(count) + " " + items);
     }
     if (line->words.size() != 1) {
       reader.fail(*line,
                   "expected " + what + " alone on its line, got '" + shown(line->text) + "'");
     }
-    weights[k] = reader.number(*line, line->words[0], what);
+    values[k] = reader.number(*line, line->words[0], what);
   }
-  return weights;
+  return values;
+}
+
+// How messages name one number of a part: "actor weight", "critic visits".
+std::string item_name(const std::string& role, const std::string& part) {
+  return role + " " + (part == "weights" ? std::string("weight") : part);
+}
+
+// Version 1: "actor <count>" and one weight per line.
+LearntState read_weights(Reader& reader, const std::string& role, long long features) {
+  const std::string_view count_word = reader.keyed(role, "<count>");
+  const long long count = reader.integer(reader.last(), count_word, role + " count");
+  if (count != features) {
+    reader.fail(reader.last(), role + " has " + std::to_string(count) +
+                                   " weights, but features is " + std::to_string(features));
+  }
+  return LearntState{
+      {{"weights", read_numbers(reader, role + " weight", role + " weights", count)}}};
 }
 
 // A bound far above any real layout keeps the weight count an int and the file's size sane.
 constexpr long long kMaxFeatures = blocks::kMaxFeatures;
+
+// Version 2: "<role> <part> <count>" and one number per line, every part of the actor, then
+// every part of the critic.
+void read_parts(Reader& reader, LearntWeights& weights) {
+  const std::string expected = "'actor <part> <count>' or 'critic <part> <count>'";
+  for (auto line = reader.next(); line; line = reader.next()) {
+    const bool fits = line->words.size() == 3 &&
+                      (line->words[0] == "actor" || line->words[0] == "critic") &&
+                      blocks::is_part_name(line->words[1]);
+    if (!fits) reader.fail(*line, "expected " + expected + ", got '" + shown(line->text) + "'");
+    const std::string role(line->words[0]);
+    const std::string part(line->words[1]);
+    LearntState& state = role == "actor" ? weights.actor : weights.critic;
+    if (role == "actor" && !weights.critic.parts.empty()) {
+      reader.fail(*line, "the actor's parts must come before the critic's");
+    }
+    if (state.find(part) != nullptr) reader.fail(*line, role + " part " + part + " appears twice");
+    const long long count = reader.integer(*line, line->words[2], role + " " + part + " count");
+    if (count < 1 || count > kMaxFeatures) {
+      reader.fail(*line, role + " " + part + " count must be from 1 to " +
+                             std::to_string(kMaxFeatures) + "; got " + std::to_string(count));
+    }
+    state.parts.push_back({part, read_numbers(reader, item_name(role, part),
+                                              "numbers of " + role + " " + part, count)});
+  }
+  // A critic that is no blocks::Learner learns nothing; an actor always learns.
+  if (weights.actor.parts.empty()) {
+    reader.fail("ends after line " + std::to_string(reader.line_number()) + " with no actor part");
+  }
+}
 
 // A layout key: one word with a dot inside ("rbf.width"), as blocks/feature_layout.h keys.
 bool is_layout_key(const std::string& word) {
@@ -265,7 +314,7 @@ blocks::LayoutEntry read_layout_entry(const Reader& reader, const Line& line,
 
 LearntWeights parse(const std::filesystem::path& path, std::string_view text) {
   Reader reader(path, text);
-  check_format_line(reader, reader.next_raw());
+  const int version = read_format_line(reader, reader.next_raw());
 
   LearntWeights weights;
   WeightsProvenance& provenance = weights.provenance;
@@ -292,7 +341,12 @@ LearntWeights parse(const std::filesystem::path& path, std::string_view text) {
     reader.fail(line, "features must be from 1 to " + std::to_string(kMaxFeatures) + "; got " +
                           std::to_string(features));
   }
+  weights.features = static_cast<int>(features);
   weights.layout_notes = reader.comments();  // the blocks' notes, kept for a copy of the file
+  if (version >= 2) {
+    read_parts(reader, weights);
+    return weights;
+  }
   weights.actor = read_weights(reader, "actor", features);
   weights.critic = read_weights(reader, "critic", features);
   if (const auto extra = reader.next()) {
@@ -312,14 +366,10 @@ void check_finite(const std::string& name, const std::vector<double>& values) {
 
 void check_savable(const LearntWeights& weights) {
   auto fail = [](const std::string& what) { throw std::invalid_argument("save_weights: " + what); };
-  if (weights.actor.size() == 0) fail("the weights have no features");
+  if (weights.features < 1) fail("the weights have no features");
   if (!is_one_word(weights.provenance.arm) || !is_one_word(weights.provenance.plant)) {
     fail("arm '" + weights.provenance.arm + "' and plant '" + weights.provenance.plant +
          "' must be single words");
-  }
-  if (weights.critic.size() != weights.actor.size()) {
-    fail("critic has " + std::to_string(weights.critic.size()) + " weights; the actor has " +
-         std::to_string(weights.actor.size()));
   }
   for (const blocks::LayoutEntry& entry : weights.layout) {
     if (!is_layout_key(entry.key) || entry.values.empty()) {
@@ -328,8 +378,27 @@ void check_savable(const LearntWeights& weights) {
     }
     check_finite(entry.key, entry.values);
   }
-  check_finite("actor weight", {weights.actor.begin(), weights.actor.end()});
-  check_finite("critic weight", {weights.critic.begin(), weights.critic.end()});
+  for (const auto& [role, state] :
+       {std::pair<std::string, const LearntState*>{"actor", &weights.actor},
+        {"critic", &weights.critic}}) {
+    if (role == "actor" && state->parts.empty()) fail("the actor learnt nothing");
+    for (const experiments::LearntPart& part : state->parts) {
+      if (!blocks::is_part_name(part.name) || part.values.size() == 0) {
+        fail(role + " part '" + part.name + "' must be a name of letters, digits and '_' with " +
+             "at least one number");
+      }
+      check_finite(item_name(role, part.name), {part.values.begin(), part.values.end()});
+    }
+  }
+}
+
+// Version 1 holds the library's shape (one "weights" part per learner, one per feature), so
+// the presets' files read as they always have; anything else takes version 2.
+int version_for(const LearntWeights& weights) {
+  return weights.actor.is_weights_only(weights.features) &&
+                 weights.critic.is_weights_only(weights.features)
+             ? 1
+             : kWeightsFormatVersion;
 }
 
 std::string format_weights(const LearntWeights& weights) {
@@ -339,7 +408,7 @@ std::string format_weights(const LearntWeights& weights) {
   auto line = [&text](std::string_view key, const std::string& value) {
     text.append(key).append(" ").append(value).append("\n");
   };
-  text.append(format_header()).append("\n");
+  text.append(format_header(version_for(weights))).append("\n");
   text.append("# Learnt cbbg weights (docs/weights-format.md).\n");
   line("arm", provenance.arm);
   line("seed", std::to_string(provenance.seed));
@@ -352,10 +421,15 @@ std::string format_weights(const LearntWeights& weights) {
   }
   line("features", std::to_string(weights.num_features()));
   for (const std::string& note : weights.layout_notes) text.append("# ").append(note).append("\n");
-  for (const auto& [name, vector] : {std::pair<const char*, const Vector*>{"actor", &weights.actor},
-                                     {"critic", &weights.critic}}) {
-    line(name, std::to_string(vector->size()));
-    for (const double weight : *vector) text.append(format_number(weight)).append("\n");
+  const int version = version_for(weights);
+  for (const auto& [role, state] :
+       {std::pair<std::string, const LearntState*>{"actor", &weights.actor},
+        {"critic", &weights.critic}}) {
+    for (const experiments::LearntPart& part : state->parts) {
+      const std::string count = std::to_string(part.values.size());
+      line(role, version == 1 ? count : part.name + " " + count);
+      for (const double value : part.values) text.append(format_number(value)).append("\n");
+    }
   }
   return text;
 }
@@ -376,8 +450,8 @@ LearntWeights load_weights(const std::filesystem::path& path) {
 }
 
 void check_weights(const LearntWeights& weights, const std::string& plant_kind,
-                   const blocks::FeatureLayout& layout, const std::filesystem::path& source) {
-  experiments::check_weights_fit(weights, plant_kind, layout, file_name(source));
+                   const diagrams::ClosedLoop& loop, const std::filesystem::path& source) {
+  experiments::check_weights_fit(weights, plant_kind, loop, file_name(source));
 }
 
 void check_layout(const LearntWeights& weights, const blocks::FeatureLayout& layout,

@@ -12,19 +12,21 @@
 
 namespace cbbg::store {
 
-// The first line of every weights file this cbbg writes and the only one it reads.
+// The first line of a weights file: "cbbg-weights 1" (one weight per feature and learner, the
+// library's critic and actor) or "cbbg-weights 2" (any learnt parts); this cbbg reads both.
 inline constexpr const char* kWeightsFormat = "cbbg-weights";
-inline constexpr int kWeightsFormatVersion = 1;
+inline constexpr int kWeightsFormatVersion = 2;
 
 using experiments::LearntWeights;
 
 // Writes `weights` to `path` in the text format, every number in the shortest text that
-// reads back to the same double. Writes a temporary file beside `path` and renames it, so
-// `path` is never half-written; creates missing parent directories. Throws
-// std::invalid_argument for weights the format cannot hold (critic and actor counts that
-// differ, a provenance word with spaces, a non-finite number), config::ConfigError when `path`
-// holds anything but a weights file (a file of the user's, a FIFO: never replaced), and
-// std::runtime_error when writing fails.
+// reads back to the same double: version 1 when both learners learnt "weights" alone, one
+// per feature (so the presets' files are what they always were), else version 2. Writes a temporary
+// file beside `path` and renames it, so `path` is never half-written; creates missing parent
+// directories. Throws std::invalid_argument for weights the format cannot hold (a learner with no
+// part, a part name that is not one word of letters, digits and '_', a provenance word with spaces,
+// a non-finite number), config::ConfigError when `path` holds anything but a weights file (a file
+// of the user's, a FIFO: never replaced), and std::runtime_error when writing fails.
 void save_weights(const std::filesystem::path& path, const LearntWeights& weights);
 
 // Reads a weights file. Every problem (missing file, other format or version, a malformed
@@ -32,13 +34,13 @@ void save_weights(const std::filesystem::path& path, const LearntWeights& weight
 // file, the line where it applies, and what is wrong.
 LearntWeights load_weights(const std::filesystem::path& path);
 
-// Before weights read from the file `source` are loaded into a loop on plant kind
-// `plant_kind` (a run's plant.kind) whose blocks describe `layout` (diagrams::ClosedLoop::
-// layout): experiments::check_weights_fit, its messages naming the file ("weights file
-// 'w.txt' was made on plant kind 'cartpole' and cannot be loaded onto plant kind 'simbody'
-// (plant.kind): another robot"). cbbg eval and cbbg run --load-weights check so.
+// Before weights read from the file `source` are loaded into `loop` on plant kind
+// `plant_kind` (a run's plant.kind): experiments::check_weights_fit, its messages naming the
+// file ("weights file 'w.txt' was made on plant kind 'cartpole' and cannot be loaded onto
+// plant kind 'simbody' (plant.kind): another robot"). cbbg eval and cbbg run --load-weights
+// check so.
 void check_weights(const LearntWeights& weights, const std::string& plant_kind,
-                   const blocks::FeatureLayout& layout, const std::filesystem::path& source);
+                   const diagrams::ClosedLoop& loop, const std::filesystem::path& source);
 // Its layout half alone: throws config::ConfigError, naming `source` and where the layouts
 // first differ, unless the weights were made for `layout`, the same keys and numbers, bit for
 // bit.

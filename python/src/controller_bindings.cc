@@ -41,7 +41,51 @@ void bind_slots(py::module_& m) {
       slots, "normaliser", "input \"measured\" (6), output \"x\": what the features expect");
   def_slot<&ControllerSlots::features>(
       slots, "features", "input \"x\", output \"features\": what critic and actor share");
+  def_slot<&ControllerSlots::critic>(
+      slots, "critic",
+      "callable(name, parameters, num_features, learns): reads any of \"features\" (n), "
+      "\"reward\", \"failed\"; outputs \"value\", \"td_error\" (1 each)");
+  def_slot<&ControllerSlots::actor>(
+      slots, "actor",
+      "callable(name, parameters, num_features, learns): reads any of \"features\" (n), "
+      "\"td_error\", \"supervisor_action\", \"omega\", \"exploration_action\"; outputs "
+      "\"actor_action\" (1)");
+  def_slot<&ControllerSlots::exploration>(
+      slots, "exploration",
+      "reads any of \"actor_action\", \"temperature\"; outputs \"exploration_action\" (1); "
+      "named \"sampler\": draw from context.random_generator() for common random numbers");
+  def_slot<&ControllerSlots::tropism>(slots, "tropism",
+                                      "reads \"value\" (1); outputs \"temperature\" (1)");
+  def_slot<&ControllerSlots::entropy>(slots, "entropy",
+                                      "reads \"temperature\" (1); outputs \"entropy\" (1)");
+  def_slot<&ControllerSlots::mixer>(
+      slots, "mixer",
+      "reads any of \"exploration_action\", \"supervisor_action\", \"omega\"; outputs "
+      "\"action\" (1)");
   def_slot<&ControllerSlots::omega>(slots, "omega", "no input, output \"omega\" (1), in [0, 1]");
+}
+
+template <diagrams::BlockFactory diagrams::TaskSlots::*slot>
+void def_task_slot(py::class_<diagrams::TaskSlots>& cls, const char* name, const char* doc) {
+  cls.def_property(
+      name, [](const diagrams::TaskSlots& slots) { return callable_of(slots.*slot); },
+      [](diagrams::TaskSlots& slots, py::object value) { slots.*slot = block_factory_from(value); },
+      doc);
+}
+
+void bind_task_slots(py::module_& m) {
+  py::class_<diagrams::TaskSlots> slots(
+      m, "TaskSlots",
+      "The task's slots around the controller: each a callable(name, parameters) -> Block, or "
+      "None for the parameters' own. The reward the loop records is the one the controller "
+      "learns from.");
+  slots.def(py::init<>());
+  def_task_slot<&diagrams::TaskSlots::sensors>(slots, "sensors",
+                                               "reads \"plant_state\"; outputs \"measured\" (6)");
+  def_task_slot<&diagrams::TaskSlots::failure>(slots, "failure",
+                                               "reads \"measured\" (6); outputs \"failed\" (1)");
+  def_task_slot<&diagrams::TaskSlots::reward>(
+      slots, "reward", "reads any of \"measured\" (6), \"failed\" (1); outputs \"reward\" (1)");
 }
 
 void bind_options(py::module_& m) {
@@ -89,8 +133,11 @@ void bind_options(py::module_& m) {
   m.def("learnt_actor", &diagrams::learnt_actor, py::arg("options"));
 }
 
-diagrams::ClosedLoopOptions loop_options(py::handle plant, std::optional<blocks::PushParams> push) {
-  return diagrams::ClosedLoopOptions{.plant = plant_factory_from(plant), .push = std::move(push)};
+diagrams::ClosedLoopOptions loop_options(py::handle plant, std::optional<blocks::PushParams> push,
+                                         const std::optional<diagrams::TaskSlots>& task = {}) {
+  return diagrams::ClosedLoopOptions{.plant = plant_factory_from(plant),
+                                     .push = std::move(push),
+                                     .slots = task.value_or(diagrams::TaskSlots{})};
 }
 
 void bind_closed_loop(py::module_& m) {
@@ -117,23 +164,23 @@ void bind_closed_loop(py::module_& m) {
   m.def(
       "build_closed_loop",
       [](std::string name, const config::Parameters& p, py::object controller, py::object plant,
-         std::optional<blocks::PushParams> push) {
+         std::optional<blocks::PushParams> push, std::optional<diagrams::TaskSlots> task) {
         return diagrams::build_closed_loop(
             std::move(name), p, shared_from_python<Diagram>(controller, "build_closed_loop"),
-            loop_options(plant, std::move(push)));
+            loop_options(plant, std::move(push), task));
       },
       py::arg("name"), py::arg("parameters"), py::arg("controller"), py::arg("plant") = py::none(),
-      py::arg("push") = std::nullopt,
+      py::arg("push") = std::nullopt, py::arg("task") = std::nullopt,
       "Wires `controller` (a diagram with a controller's ports) into a closed loop; `plant`: a "
       "callable(name, parameters) -> RobotPlant, or None for plant.kind's.");
   m.def(
       "build_preset",
       [](std::string_view name, const config::Parameters& p, py::object plant,
-         std::optional<blocks::PushParams> push) {
-        return diagrams::build_preset(name, p, loop_options(plant, std::move(push)));
+         std::optional<blocks::PushParams> push, std::optional<diagrams::TaskSlots> task) {
+        return diagrams::build_preset(name, p, loop_options(plant, std::move(push), task));
       },
       py::arg("name"), py::arg("parameters"), py::arg("plant") = py::none(),
-      py::arg("push") = std::nullopt);
+      py::arg("push") = std::nullopt, py::arg("task") = std::nullopt);
 }
 
 void bind_arms(py::module_& m) {
@@ -149,10 +196,13 @@ void bind_arms(py::module_& m) {
           "learns", [](const diagrams::Arm& arm) { return static_cast<bool>(arm.policy); });
   m.def(
       "make_arm",
-      [](std::string name, const ControllerOptions& options, py::object plant) {
-        return diagrams::make_arm(std::move(name), options, loop_options(plant, std::nullopt));
+      [](std::string name, const ControllerOptions& options, py::object plant,
+         std::optional<diagrams::TaskSlots> task) {
+        return diagrams::make_arm(std::move(name), options,
+                                  loop_options(plant, std::nullopt, task));
       },
-      py::arg("name"), py::arg("options"), py::arg("plant") = py::none());
+      py::arg("name"), py::arg("options"), py::arg("plant") = py::none(),
+      py::arg("task") = std::nullopt);
   m.def(
       "make_arm_of",
       [](std::string name, py::object learner, py::object policy, py::object plant) {
@@ -172,10 +222,14 @@ void bind_arms(py::module_& m) {
       "A preset's or a registered arm, by name.");
   m.def(
       "register_arm",
-      [](std::string name, std::string description, const ControllerOptions& options) {
-        diagrams::register_arm(std::move(name), std::move(description), options);
+      [](std::string name, std::string description, const ControllerOptions& options,
+         std::optional<diagrams::TaskSlots> task) {
+        diagrams::register_arm(std::move(name), std::move(description), options,
+                               task.value_or(diagrams::TaskSlots{}));
       },
-      py::arg("name"), py::arg("description"), py::arg("options"));
+      py::arg("name"), py::arg("description"), py::arg("options"), py::arg("task") = std::nullopt,
+      "Registers an arm of a CB-BG controller with `options`, in a task whose slots `task` "
+      "(TaskSlots) fills.");
   m.def(
       "register_arm_of",
       [](std::string name, std::string description, py::object learner, py::object policy) {
@@ -237,6 +291,7 @@ void bind_plant_kinds(py::module_& m) {
 
 void bind_controller(py::module_& m) {
   bind_slots(m);
+  bind_task_slots(m);
   bind_options(m);
   bind_closed_loop(m);
   bind_arms(m);

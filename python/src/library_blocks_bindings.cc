@@ -15,13 +15,17 @@
 #include "cbbg/blocks/boltzmann_sampler.h"
 #include "cbbg/blocks/critic.h"
 #include "cbbg/blocks/entropy.h"
+#include "cbbg/blocks/exploration_params.h"
 #include "cbbg/blocks/external_push.h"
 #include "cbbg/blocks/failure_detector.h"
+#include "cbbg/blocks/gaussian_exploration.h"
 #include "cbbg/blocks/lqr_supervisor.h"
 #include "cbbg/blocks/mixer.h"
 #include "cbbg/blocks/normaliser.h"
 #include "cbbg/blocks/omega_schedule.h"
+#include "cbbg/blocks/ou_exploration.h"
 #include "cbbg/blocks/pd_supervisor.h"
+#include "cbbg/blocks/quadratic_reward.h"
 #include "cbbg/blocks/rbf_features.h"
 #include "cbbg/blocks/reward.h"
 #include "cbbg/blocks/sensors.h"
@@ -105,9 +109,9 @@ constexpr const char* kActorDoc =
 | supervisor_action  | in  | 1    | a_S(t), the supervisor's action         |
 | exploration_action | in  | 1    | a_E(t), the sampler's action            |
 | omega              | in  | 1    | omega(t), the mixing factor             |
-| action             | out | 1    | a_A(t) = theta . phi(s_t)               |
+| actor_action       | out | 1    | a_A(t) = theta . phi(s_t)               |
 
-"action" reads only the features, so the mixer's loop through the sampler is not
+"actor_action" reads only the features, so the mixer's loop through the sampler is not
 algebraic. The periodic update at tick t learns from the transition s_{t-1} -> s_t with
 delta = delta_{t-1} and the values it stored at t-1 (phi, a_S, a_E, a_A, omega):
   improved: theta <- theta + alpha delta [omega (a_E - a_S) + (a_S - a_A)] phi
@@ -127,19 +131,24 @@ Discrete state: weights theta (n, persistent); per trial: previous_features phi(
 constexpr const char* kBoltzmannSamplerDoc =
     R"(BoltzmannSampler: the basal ganglia's exploratory action (docs/model.md §2.6).
 
-| port         | dir | size | meaning                        |
-|--------------|-----|------|--------------------------------|
-| actor_action | in  | 1    | a_A(t), from the Actor         |
-| temperature  | in  | 1    | T(t) >= 0, from the Tropism    |
-| action       | out | 1    | a_E(t) ~ N(a_A, K_B T / 2)     |
+| port               | dir | size | meaning                        |
+|--------------------|-----|------|--------------------------------|
+| actor_action       | in  | 1    | a_A(t), from the Actor         |
+| temperature        | in  | 1    | T(t) >= 0, from the Tropism    |
+| exploration_action | out | 1    | a_E(t) ~ N(a_A, K_B T / 2)     |
 
 Equation: a_E = a_A + sqrt(K_B T / 2) eps, eps a standard normal held in the discrete
 state, drawn from the block's own generator by the initialization update (first tick)
 and by each periodic update (next tick). The Boltzmann law exp(-(a_E - a_A)^2 / (K_B T))
-is this normal. Parameters: K_B = sampler.k_b, the period trial.period.)";
+is this normal. Parameters: K_B = sampler.k_b, the period trial.period.
+exploration.kind boltzmann selects it (GaussianExploration and OuExploration are the
+alternatives, drawing the same eps).
+
+Discrete state, per trial: noise eps (1).)";
 
 constexpr const char* kCriticDoc =
-    R"(Critic: the value function V(s) = w . phi(s), learnt by TD(lambda) (docs/model.md §2.3, §2.10).
+    R"(Critic: the value function V(s) = w . phi(s), learnt by TD(lambda), the paper's, or by
+normalised TD(0) (docs/model.md §2.3, §2.10, §5.4).
 
 | port     | dir | size | meaning                                              |
 |----------|-----|------|------------------------------------------------------|
@@ -153,14 +162,16 @@ Equations, at tick t, with the weights w before this tick's update:
   delta_{t-1} = r_{t-1} + gamma V'(s_t) - w . phi(s_{t-1}),
   V'(s_t) = 0 if failed else w . phi(s_t);  delta = 0 on the first tick of a trial.
 The periodic update then learns from that transition and remembers phi(s_t):
-  z <- gamma lambda z + phi(s_{t-1});  w <- w + beta delta_{t-1} z.
+  td_lambda: z <- gamma lambda z + phi(s_{t-1});  w <- w + beta delta_{t-1} z;
+  td0:       w <- w + beta delta_{t-1} phi(s_{t-1}) / (epsilon + phi(s_{t-1}) . phi(s_{t-1})).
 w starts at 0. A new trial (Context::reset_trial_state) clears z and the previous tick and
 keeps w. A frozen critic skips the update of z and w.
-Parameters: beta = critic.beta, gamma = critic.gamma, lambda = critic.lambda, the period
-trial.period; n is the feature count (RbfFeatures::num_features).
+Parameters: the rule critic.kind, beta = critic.beta, gamma = critic.gamma, lambda =
+critic.lambda (td_lambda), epsilon = critic.epsilon (td0), the period trial.period; n is
+the feature count (RbfFeatures::num_features).
 
-Discrete state: weights w (n, persistent); per trial: trace z (n), previous_features
-phi(s_{t-1}) (n), has_previous (1).)";
+Discrete state: weights w (n, persistent); per trial: trace z (n, td_lambda only),
+previous_features phi(s_{t-1}) (n), has_previous (1).)";
 
 constexpr const char* kEntropyDoc =
     R"(Entropy: the differential entropy of the exploration law, for logging (docs/model.md §2.12).
@@ -280,7 +291,8 @@ slowest: phi_k(x) = exp(-sum_a (x_a - c_{k_a})^2 / (2 b^2)), k = sum_a k_a m^(d-
 Parameters: c = rbf.centres (m of them), b = rbf.width. Its layout (feature_layout.h):
 rbf.centres and rbf.width.)";
 
-constexpr const char* kRewardDoc = R"(Reward: the sliding-surface reward of docs/model.md §2.9.
+constexpr const char* kRewardDoc =
+    R"(Reward: the sliding-surface reward of docs/model.md §2.9.
 
 | port     | dir | size | meaning                                              |
 |----------|-----|------|------------------------------------------------------|
@@ -288,11 +300,13 @@ constexpr const char* kRewardDoc = R"(Reward: the sliding-surface reward of docs
 | failed   | in  | 1    | 1 when the trial fails at this tick, else 0           |
 | reward   | out | 1    | r_{t-1}, the reward of the transition s_{t-1} -> s_t  |
 
-Equations: s(t) = a1 theta_b + a2 theta_b';
+Equations: s(t) = a1 theta_b + a2 theta_b' + k_phi phi', phi' = (phi_l' + phi_r') / 2 (with
+  k_phi = 0, the paper's surface, computed without the term: the same bits);
   r_{t-1} = -1 if failed, else 0 if s(t)^2 <= s(t-1)^2, else -1;
 0 on the first tick of a trial without failure (there is no transition yet). The
 periodic update remembers s(t); a new trial forgets it.
-Parameters: a1 = reward.a1, a2 = reward.a2, the period trial.period.
+Parameters: a1 = reward.a1, a2 = reward.a2, k_phi = reward.k_phi, the period trial.period.
+reward.kind sliding selects it (QuadraticReward is quadratic's).
 
 Discrete state, per trial: previous_surface s(t-1), has_previous.)";
 
@@ -359,9 +373,70 @@ constexpr const char* kTropismDoc =
 | value       | in  | 1    | V(s_t), from the Critic       |
 | temperature | out | 1    | T                             |
 
-Equation: T = k1 / (1 + exp(k2 V)): high value, low temperature.
+Equation: T = k1 / (1 + exp(k2 V)): high value, low temperature. With tropism.kind fixed,
+T = k1 / 2 (the paper's T at V = 0) whatever V: exploration no longer cools as the critic
+learns, yet still follows k1's annealing.
 Parameters: k1 is the context parameter "k1" (default tropism.k1), so the annealing
-schedule changes it between trials without rebuilding (set_k1); k2 = tropism.k2.)";
+schedule changes it between trials without rebuilding (set_k1); k2 = tropism.k2, kind =
+tropism.kind.)";
+
+constexpr const char* kGaussianExplorationDoc =
+    R"(GaussianExploration: exploration.kind gaussian, a temperature-free alternative to the
+BoltzmannSampler (docs/model.md §5.4).
+
+| port               | dir | size | meaning                          |
+|--------------------|-----|------|----------------------------------|
+| actor_action       | in  | 1    | a_A(t), from the Actor           |
+| exploration_action | out | 1    | a_E(t) = a_A + sigma(t) eps      |
+
+Equations: a_E = a_A + sigma(t) eps, sigma(t) = sigma_0 2^(-elapsed / half_life)
+(sigma_0 when half_life = 0), elapsed the learning time the block has run. eps is a
+standard normal held in the discrete state, drawn from the block's own generator by the
+initialization update (first tick) and by each periodic update (next tick), exactly as
+the BoltzmannSampler draws its own: at the same path and seed both see the same eps.
+Each periodic update advances elapsed by the period.
+Parameters: sigma_0 = exploration.sigma, half_life = exploration.half_life, the period
+trial.period.
+
+Discrete state: per trial, noise eps (1); persistent, elapsed (1, s), carried across
+trials as learning goes on.)";
+
+constexpr const char* kOuExplorationDoc =
+    R"(OuExploration: exploration.kind ou, temporally correlated exploration: the actor's action
+plus an Ornstein-Uhlenbeck process (docs/model.md §5.4).
+
+| port               | dir | size | meaning                  |
+|--------------------|-----|------|--------------------------|
+| actor_action       | in  | 1    | a_A(t), from the Actor   |
+| exploration_action | out | 1    | a_E(t) = a_A + x(t)      |
+
+Equations: dx = -theta x dt + sigma sqrt(2 theta) dW, stationary law N(0, sigma^2),
+sampled exactly at the ticks: the initialization update draws x from the stationary law,
+x = sigma eps_0; each periodic update sets
+  x <- x e^(-theta Ts) + sigma sqrt(1 - e^(-2 theta Ts)) eps_k,
+so the lag-one autocorrelation is e^(-theta Ts). eps is a standard normal from the
+block's own generator, one per update in the BoltzmannSampler's order (common random
+numbers); for theta Ts large enough that e^(-theta Ts) is 0, a_E is GaussianExploration's
+with a fixed sigma, bit for bit.
+Parameters: sigma = exploration.sigma, theta = exploration.ou_theta, the period Ts =
+trial.period.
+
+Discrete state, per trial: noise x (1, N m); a new trial draws it afresh.)";
+
+constexpr const char* kQuadraticRewardDoc =
+    R"(QuadraticReward: reward.kind quadratic, a graded reward in place of the paper's sliding
+surface's 0 or -1 (docs/model.md §5.4).
+
+| port     | dir | size | meaning                                              |
+|----------|-----|------|------------------------------------------------------|
+| measured | in  | 6    | the Sensors output (measured_signals.h)               |
+| failed   | in  | 1    | 1 when the trial fails at this tick, else 0           |
+| reward   | out | 1    | r_{t-1}, the reward of the transition s_{t-1} -> s_t  |
+
+Equation: r_{t-1} = -1 if failed, else -(q0 theta_b^2 + q1 theta_b'^2 + q2 phi'^2) of
+s_t, phi' = (phi_l' + phi_r') / 2 the wheels' mean rate. It remembers nothing, so it
+rewards the first tick of a trial too.
+Parameters: q = reward.q (3 numbers, each >= 0); the period trial.period is checked only.)";
 
 constexpr const char* kAnalyticPlantDoc =
     R"(AnalyticPlant: the robot of docs/model.md §1 as its equations of motion (robot_dynamics.h),
@@ -436,6 +511,9 @@ void bind_all_params(py::module_& m) {
   bind_params<blocks::CriticParams>(m, "CriticParams", "Config keys critic.*, and frozen.");
   bind_params<blocks::ActorParams>(m, "ActorParams", "Config keys actor.*, and frozen.");
   bind_params<blocks::SamplerParams>(m, "SamplerParams", "Config key sampler.k_b.");
+  bind_params<blocks::ExplorationParams>(
+      m, "ExplorationParams",
+      "Config keys exploration.*: the exploration block's kind and the alternatives' noise.");
   bind_params<blocks::EntropyParams>(m, "EntropyParams",
                                      "The entropy's constant, config key sampler.k_b.");
   bind_params<blocks::OmegaParams>(m, "OmegaParams", "Config keys omega.*, and mode and constant.");
@@ -598,6 +676,16 @@ void bind_exploration(py::module_& m) {
   py::class_<blocks::BoltzmannSampler, Block>(m, "BoltzmannSampler", kBoltzmannSamplerDoc)
       .def(py::init<std::string, const blocks::SamplerParams&, double>(), py::arg("name"),
            py::arg("params"), py::arg("period"));
+  py::class_<blocks::GaussianExploration, Block>(m, "GaussianExploration", kGaussianExplorationDoc)
+      .def(py::init<std::string, const blocks::ExplorationParams&, double>(), py::arg("name"),
+           py::arg("params"), py::arg("period"))
+      .def("sigma_at", &blocks::GaussianExploration::sigma_at, py::arg("elapsed"),
+           "sigma after `elapsed` s of learning.")
+      .def("elapsed", &blocks::GaussianExploration::elapsed, py::arg("context"),
+           "The learning time elapsed in `context`, s.");
+  py::class_<blocks::OuExploration, Block>(m, "OuExploration", kOuExplorationDoc)
+      .def(py::init<std::string, const blocks::ExplorationParams&, double>(), py::arg("name"),
+           py::arg("params"), py::arg("period"));
   py::class_<blocks::Entropy, Block>(m, "Entropy", kEntropyDoc)
       .def(py::init<std::string, const blocks::EntropyParams&>(), py::arg("name"),
            py::arg("params"));
@@ -620,6 +708,9 @@ void bind_exploration(py::module_& m) {
 
 void bind_task(py::module_& m) {
   py::class_<blocks::Reward, Block>(m, "Reward", kRewardDoc)
+      .def(py::init<std::string, const blocks::RewardParams&, double>(), py::arg("name"),
+           py::arg("params"), py::arg("period"));
+  py::class_<blocks::QuadraticReward, Block>(m, "QuadraticReward", kQuadraticRewardDoc)
       .def(py::init<std::string, const blocks::RewardParams&, double>(), py::arg("name"),
            py::arg("params"), py::arg("period"));
   py::class_<blocks::FailureDetector, Block>(m, "FailureDetector", kFailureDetectorDoc)

@@ -38,6 +38,13 @@ void check_index(const char* function, const char* argument, long long index, st
                         std::to_string(index));
 }
 
+// A learner's parts as a dict of arrays (copies), in its order.
+py::dict parts_of(const experiments::LearntState& state) {
+  py::dict parts;
+  for (const experiments::LearntPart& part : state.parts) parts[py::str(part.name)] = part.values;
+  return parts;
+}
+
 ExperimentOptions options_of(int jobs, const LearntWeights* initial_weights) {
   ExperimentOptions options;
   options.jobs = jobs;
@@ -77,9 +84,22 @@ void bind_records(py::module_& m) {
            py::arg("name"), py::arg("value"))
       .def_readonly("name", &experiments::SeedFigure::name)
       .def_readonly("value", &experiments::SeedFigure::value);
-  py::class_<LearntWeights>(m, "LearntWeights", "What a learner learnt: actor and critic weights.")
-      .def_readonly("actor", &LearntWeights::actor)
-      .def_readonly("critic", &LearntWeights::critic)
+  py::class_<LearntWeights>(
+      m, "LearntWeights",
+      "What a learner learnt: the actor's and the critic's parts (the library's: 'weights' "
+      "alone), with the feature layout they were learnt on.")
+      .def_property_readonly(
+          "actor", [](const LearntWeights& w) { return Vector(w.actor.weights("actor")); },
+          "The actor's part 'weights' (theta); ValueError if it learnt none.")
+      .def_property_readonly(
+          "critic", [](const LearntWeights& w) { return Vector(w.critic.weights("critic")); },
+          "The critic's part 'weights' (w); ValueError if it learnt none.")
+      .def_property_readonly(
+          "actor_parts", [](const LearntWeights& w) { return parts_of(w.actor); },
+          "Every part the actor learnt, by name, in its order.")
+      .def_property_readonly(
+          "critic_parts", [](const LearntWeights& w) { return parts_of(w.critic); },
+          "Every part the critic learnt, by name, in its order.")
       .def_property_readonly("num_features", &LearntWeights::num_features);
   m.def("load_weights", &store::load_weights, py::arg("path"));
   m.def("save_weights", &store::save_weights, py::arg("path"), py::arg("weights"),

@@ -48,12 +48,17 @@ py::object copy_of(const config::Parameters& parameters) {
   return py::cast(parameters, py::return_value_policy::copy);
 }
 
-std::shared_ptr<Block> PythonBlockFactory::operator()(const std::string& name,
-                                                      const config::Parameters& p) const {
+std::shared_ptr<Block> PythonBlockFactory::operator()(const diagrams::SlotRequest& request) const {
   py::gil_scoped_acquire gil;
-  py::object block = calling_python(
-      [&] { return py::reinterpret_borrow<py::object>(callable.get())(name, copy_of(p)); });
-  return shared_from_python<Block>(block, "the factory of slot '" + name + "'");
+  py::object block = calling_python([&] {
+    const py::object factory = py::reinterpret_borrow<py::object>(callable.get());
+    py::object parameters = copy_of(request.parameters);
+    if (request.num_features > 0) {  // a learner: it needs the features' size
+      return factory(request.name, parameters, request.num_features, request.learns);
+    }
+    return factory(request.name, parameters);
+  });
+  return shared_from_python<Block>(block, "the factory of slot '" + request.name + "'");
 }
 
 std::shared_ptr<plant::RobotPlant> PythonPlantFactory::operator()(

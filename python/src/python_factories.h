@@ -16,10 +16,11 @@
 
 namespace cbbg::python {
 
-// A slot's factory: callable(name, parameters) -> Block.
+// A slot's factory: callable(name, parameters) -> Block, and for the critic and actor slots
+// callable(name, parameters, num_features, learns) (diagrams::SlotRequest).
 struct PythonBlockFactory {
   SharedPythonObject callable;
-  std::shared_ptr<Block> operator()(const std::string& name, const config::Parameters& p) const;
+  std::shared_ptr<Block> operator()(const diagrams::SlotRequest& request) const;
 };
 
 // A plant's factory: callable(name, parameters) -> RobotPlant.

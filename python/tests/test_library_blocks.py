@@ -135,6 +135,94 @@ def test_learners_weights_and_schedules():
                     "temperature")[0] == 5.0
 
 
+def run_block(block, inputs, output_name, ticks, seed=7):
+    """The output `output_name` of `block`, its inputs held at `inputs` (name -> value), after
+    each of `ticks` ticks of 0.01 s under root seed `seed`; and the last context."""
+    builder = cbbg.DiagramBuilder("loop")
+    builder.add(block)
+    for name, value in inputs.items():
+        source = builder.add(cbbg.ConstantSource(name + "_source", np.asarray(value, dtype=float)))
+        builder.connect(source, "y", block, name)
+    diagram = builder.build()
+    simulator = cbbg.Simulator(diagram, seed=seed)
+    values = []
+    for t in range(ticks):
+        simulator.advance_to((t + 0.5) * 0.01)
+        values.append(diagram.eval_output(simulator.context, block.output_port(output_name))[0])
+    return values, simulator.context
+
+
+def test_the_alternatives_keys_default_to_the_papers():
+    assert cbbg.ExplorationParams().to_dict() == {
+        "kind": "boltzmann", "sigma": 1.58, "half_life": 0.0, "ou_theta": 5.0}
+    critic = cbbg.CriticParams()
+    assert list(critic.to_dict())[0] == "kind" and list(critic.to_dict())[-2:] == [
+        "epsilon", "frozen"]
+    assert critic.kind == "td_lambda" and critic.epsilon == 0.001
+    reward = cbbg.RewardParams()
+    assert reward.kind == "sliding" and reward.q == [1.0, 0.1, 0.0]
+    assert cbbg.TropismParams().kind == "value"
+    with pytest.raises(ValueError, match=r"^ExplorationParams\.kind must be one of boltzmann, "
+                                         r"gaussian, ou; got 'normal'"):
+        cbbg.ExplorationParams(kind="normal")
+    with pytest.raises(ValueError, match=r"^exploration\.half_life must be finite and >= 0; "
+                                         r"got -1$"):
+        cbbg.GaussianExploration("sampler", cbbg.ExplorationParams(half_life=-1.0), 0.01)
+    with pytest.raises(ValueError, match=r"^reward\.q must be a list of 3 numbers .*; got a list "
+                                         r"of 2$"):
+        cbbg.QuadraticReward("reward", cbbg.RewardParams(kind="quadratic", q=[1.0, 0.1]), 0.01)
+
+
+def test_exploration_alternatives_draw_the_samplers_numbers():
+    # At the same path and seed the three kinds see the same eps: with sigma = 1 the Gaussian
+    # is the Boltzmann sampler at K_B T / 2 = 1, and an OU process that forgets at once.
+    boltzmann, _ = run_block(cbbg.BoltzmannSampler("sampler", cbbg.SamplerParams(), 0.01),
+                             {"actor_action": [0.5], "temperature": [2.0]},
+                             "exploration_action", 50)
+    gaussian, _ = run_block(
+        cbbg.GaussianExploration("sampler", cbbg.ExplorationParams(kind="gaussian", sigma=1.0),
+                                 0.01),
+        {"actor_action": [0.5]}, "exploration_action", 50)
+    forgetful, _ = run_block(
+        cbbg.OuExploration("sampler", cbbg.ExplorationParams(kind="ou", sigma=1.0, ou_theta=1e6),
+                           0.01),
+        {"actor_action": [0.5]}, "exploration_action", 50)
+    assert gaussian == boltzmann and forgetful == gaussian
+    assert len(set(gaussian)) == 50  # a fresh draw at every tick
+
+    annealed = cbbg.GaussianExploration(
+        "sampler", cbbg.ExplorationParams(kind="gaussian", sigma=2.0, half_life=0.05), 0.01)
+    assert annealed.sigma_at(0.05) == 1.0 and annealed.sigma_at(0.1) == 0.5
+    _, context = run_block(annealed, {"actor_action": [0.0]}, "exploration_action", 5)
+    assert annealed.elapsed(context) == pytest.approx(0.05, abs=1e-12)
+    assert [part.name for part in annealed.discrete_state_parts] == ["noise", "elapsed"]
+
+
+def test_td0_critic_quadratic_reward_and_fixed_temperature():
+    critic = cbbg.Critic("critic", 4, cbbg.CriticParams(kind="td0", epsilon=0.5), 0.01)
+    assert critic.num_features == 4
+    builder = cbbg.DiagramBuilder("learners")
+    builder.add(critic)
+    for port in ("features", "reward", "failed"):
+        builder.export_input(critic.input_port(port))
+    diagram = builder.build()
+    context = diagram.create_context()
+    critic.set_weights(context, [1.0, 2.0, 3.0, 4.0])
+    np.testing.assert_array_equal(critic.weights(context), [1.0, 2.0, 3.0, 4.0])
+    assert [part.name for part in critic.discrete_state_parts] == [
+        "weights", "previous_features", "has_previous"]
+
+    reward = cbbg.QuadraticReward("reward", cbbg.RewardParams(kind="quadratic", q=[2.0, 0.5, 0.25]),
+                                  0.01)
+    values, _ = run_block(reward, {"measured": [0.1, 0.2, 0.0, 0.0, 1.0, 3.0], "failed": [0.0]},
+                          "reward", 1)
+    assert values[0] == pytest.approx(-(2.0 * 0.01 + 0.5 * 0.04 + 0.25 * 4.0), abs=1e-15)
+
+    fixed = cbbg.Tropism("tropism", cbbg.TropismParams(k1=10.0, kind="fixed"))
+    for value in (-30.0, 0.0, 30.0):
+        assert evaluate(fixed, "value", [value], "temperature")[0] == 5.0
+
+
 # --- Plants ---------------------------------------------------------------------------------
 
 

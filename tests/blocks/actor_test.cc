@@ -56,9 +56,9 @@ TEST(Actor, ActionIsTheWeightsDotTheFeatures) {
   Harness harness("actor", 2, ActorParams{}, kPeriod);
   harness.block().mutable_weights(harness.context()) = vector2(0.2, -0.4);
   set_tick(harness, {vector2(1.0, 0.5), 0.0, 0.0, 0.0, 0.0});
-  EXPECT_EQ(harness.scalar_output("action"), 0.0);  // 0.2 - 0.2
+  EXPECT_EQ(harness.scalar_output("actor_action"), 0.0);  // 0.2 - 0.2
   set_tick(harness, {vector2(-2.0, 1.0), 0.0, 0.0, 0.0, 0.0});
-  EXPECT_NEAR(harness.scalar_output("action"), -0.8, 1e-15);
+  EXPECT_NEAR(harness.scalar_output("actor_action"), -0.8, 1e-15);
 }
 
 // theta = (0.2, -0.4); at t = 0: phi = (1, 0.5) so a_A = 0, a_S = 2, a_E = 1, omega = 0.25.
@@ -133,7 +133,7 @@ TEST(Actor, ImprovedRuleEqualsAlphaDeltaTimesMixedActionError) {
     set_scalar("exploration_action", 3.0 * normal(generator));
     set_scalar("omega", unit(generator));
     const Vector before = actor.weights(context);
-    const double actor_action = diagram->eval_output(context, actor.output_port("action"))[0];
+    const double actor_action = diagram->eval_output(context, actor.output_port("actor_action"))[0];
     const double mixed = diagram->eval_output(context, mixer.output_port("action"))[0];
     simulator.advance_to((t + 0.5) * kPeriod);
     const Vector change = actor.weights(context) - before;
@@ -192,7 +192,7 @@ TEST(Actor, WeightedRuleWithOmegaZeroMovesTheActionTowardTheSupervisor) {
     // Exploration and TD error are noise; with omega = 0 they must not matter.
     set_tick(harness, {phi, normal(generator), supervisor, 5.0 * normal(generator), 0.0});
     harness.tick();
-    const double new_gap = std::abs(supervisor - harness.scalar_output("action"));
+    const double new_gap = std::abs(supervisor - harness.scalar_output("actor_action"));
     if (t > 0) {
       ASSERT_LT(new_gap, gap) << "tick " << t;
     }

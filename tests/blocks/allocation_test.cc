@@ -71,9 +71,9 @@ TEST(BlocksAllocation, ATickOfEveryLearningBlockAllocatesNothing) {
   builder.connect(critic, "td_error", actor, "td_error");
   builder.connect(tropism, "temperature", sampler, "temperature");
   builder.connect(tropism, "temperature", entropy, "temperature");
-  builder.connect(actor, "action", sampler, "actor_action");
-  builder.connect(sampler, "action", actor, "exploration_action");
-  builder.connect(sampler, "action", mixer, "exploration_action");
+  builder.connect(actor, "actor_action", sampler, "actor_action");
+  builder.connect(sampler, "exploration_action", actor, "exploration_action");
+  builder.connect(sampler, "exploration_action", mixer, "exploration_action");
   builder.connect(supervisor, "action", actor, "supervisor_action");
   builder.connect(supervisor, "action", mixer, "supervisor_action");
   builder.connect(omega, "omega", actor, "omega");

@@ -28,7 +28,7 @@ std::vector<double> draws(std::uint64_t root_seed, int ticks) {
   harness.set_input("temperature", 3.0);
   std::vector<double> values;
   for (int t = 0; t < ticks; ++t) {
-    values.push_back(harness.scalar_output("action"));
+    values.push_back(harness.scalar_output("exploration_action"));
     harness.tick();
   }
   return values;
@@ -70,8 +70,10 @@ TEST(BoltzmannSampler, TwoSamplersInOneDiagramAreNotCorrelated) {
   double sum_a = 0.0, sum_b = 0.0, sum_aa = 0.0, sum_bb = 0.0, sum_ab = 0.0;
   for (int t = 0; t < n; ++t) {
     simulator.advance_to((t + 0.5) * kPeriod);
-    const double a = diagram->eval_output(simulator.context(), first.output_port("action"))[0];
-    const double b = diagram->eval_output(simulator.context(), second.output_port("action"))[0];
+    const double a =
+        diagram->eval_output(simulator.context(), first.output_port("exploration_action"))[0];
+    const double b =
+        diagram->eval_output(simulator.context(), second.output_port("exploration_action"))[0];
     sum_a += a;
     sum_b += b;
     sum_aa += a * a;
@@ -94,7 +96,7 @@ TEST(BoltzmannSampler, ZeroTemperatureGivesTheActorAction) {
   harness.set_input("temperature", 0.0);
   for (int t = 0; t < 5; ++t) {
     harness.tick();
-    EXPECT_EQ(harness.scalar_output("action"), -1.25);
+    EXPECT_EQ(harness.scalar_output("exploration_action"), -1.25);
   }
 }
 
@@ -107,8 +109,9 @@ TEST(BoltzmannSampler, DeviationIsSqrtOfKbTOverTwoTimesTheHeldDraw) {
   harness.tick();
   const double eps = harness.state_part("noise")[0];
   ASSERT_NE(eps, 0.0);
-  EXPECT_EQ(harness.scalar_output("action"), 2.0 + std::sqrt(1.38e-23 * 10.0 / 2.0) * eps);
-  EXPECT_LT(std::abs(harness.scalar_output("action") - 2.0), 1e-10);
+  EXPECT_EQ(harness.scalar_output("exploration_action"),
+            2.0 + std::sqrt(1.38e-23 * 10.0 / 2.0) * eps);
+  EXPECT_LT(std::abs(harness.scalar_output("exploration_action") - 2.0), 1e-10);
 }
 
 TEST(BoltzmannSampler, RejectsNonPositiveOrNonFiniteKb) {

@@ -16,11 +16,14 @@
 #include "cbbg/blocks/entropy.h"
 #include "cbbg/blocks/external_push.h"
 #include "cbbg/blocks/failure_detector.h"
+#include "cbbg/blocks/gaussian_exploration.h"
 #include "cbbg/blocks/lqr_supervisor.h"
 #include "cbbg/blocks/mixer.h"
 #include "cbbg/blocks/normaliser.h"
 #include "cbbg/blocks/omega_schedule.h"
+#include "cbbg/blocks/ou_exploration.h"
 #include "cbbg/blocks/pd_supervisor.h"
+#include "cbbg/blocks/quadratic_reward.h"
 #include "cbbg/blocks/rbf_features.h"
 #include "cbbg/blocks/reward.h"
 #include "cbbg/blocks/sensors.h"
@@ -66,7 +69,7 @@ std::vector<Topology> topologies() {
         {"supervisor_action", 1},
         {"exploration_action", 1},
         {"omega", 1}},
-       {{"action", 1, {"features"}}},  // never the TD error: no loop through the critic
+       {{"actor_action", 1, {"features"}}},  // never the TD error: no loop through the critic
        {{"weights", n, kKept},
         {"previous_features", n, kTrial},
         {"previous_actions", 4, kTrial},
@@ -74,7 +77,7 @@ std::vector<Topology> topologies() {
       {"BoltzmannSampler",
        [] { return std::make_unique<BoltzmannSampler>("sampler", SamplerParams{}, kPeriod); },
        {{"actor_action", 1}, {"temperature", 1}},
-       {{"action", 1, {"actor_action", "temperature"}}},
+       {{"exploration_action", 1, {"actor_action", "temperature"}}},
        {{"noise", 1, kTrial}}},
       {"Critic",
        [] { return std::make_unique<Critic>("critic", 49, CriticParams{}, kPeriod); },
@@ -96,6 +99,13 @@ std::vector<Topology> topologies() {
        {{"measured", 6}},
        {{"failed", 1, {"measured"}}},
        {}},
+      {"GaussianExploration",
+       [] {
+         return std::make_unique<GaussianExploration>("sampler", ExplorationParams{}, kPeriod);
+       },
+       {{"actor_action", 1}},
+       {{"exploration_action", 1, {"actor_action"}}},  // no temperature
+       {{"noise", 1, kTrial}, {"elapsed", 1, kKept}}},
       {"LqrSupervisor",
        [] {
          return std::make_unique<LqrSupervisor>("supervisor", plant::RobotParams{},
@@ -119,10 +129,20 @@ std::vector<Topology> topologies() {
        {},
        {{"omega", 1, {}}},
        {{"ticks", 1, kKept}}},
+      {"OuExploration",
+       [] { return std::make_unique<OuExploration>("sampler", ExplorationParams{}, kPeriod); },
+       {{"actor_action", 1}},
+       {{"exploration_action", 1, {"actor_action"}}},
+       {{"noise", 1, kTrial}}},
       {"PdSupervisor",
        [] { return std::make_unique<PdSupervisor>("supervisor", PdSupervisorParams{}); },
        {{"measured", 6}},
        {{"action", 1, {"measured"}}},
+       {}},
+      {"QuadraticReward",
+       [] { return std::make_unique<QuadraticReward>("reward", RewardParams{}, kPeriod); },
+       {{"measured", 6}, {"failed", 1}},
+       {{"reward", 1, {"measured", "failed"}}},
        {}},
       {"RbfFeatures",
        [] { return std::make_unique<RbfFeatures>("features", RbfParams{}); },
@@ -147,6 +167,15 @@ std::vector<Topology> topologies() {
        {{"plant_state", 10}},
        {{"measured", 6, {"plant_state"}}},
        {{"noise", 6, kTrial}}},
+      {"CriticTd0",
+       [] {
+         CriticParams td0;
+         td0.kind = CriticKind::kTd0;
+         return std::make_unique<Critic>("critic", 49, td0, kPeriod);
+       },
+       {{"features", n}, {"reward", 1}, {"failed", 1}},
+       {{"value", 1, {"features"}}, {"td_error", 1, {"features", "reward", "failed"}}},
+       {{"weights", n, kKept}, {"previous_features", n, kTrial}, {"has_previous", 1, kTrial}}},
       {"TorquePush",
        [] {
          return std::make_unique<TorquePush>("push", PushParams{0.0, 1.0, 0.1}, kPeriod);

@@ -8,10 +8,12 @@
 #include <gtest/gtest.h>
 
 #include "cbbg/framework/block_harness.h"
+#include "key_order.h"
 
 namespace cbbg::blocks {
 namespace {
 
+using ::testing::ElementsAre;
 using ::testing::StrEq;
 using ::testing::ThrowsMessage;
 using Harness = testing::BlockHarness<Tropism>;
@@ -43,6 +45,33 @@ TEST(Tropism, AnnealingChangesK1InTheContext) {
   // The same block in a fresh context keeps the configured k1.
   EXPECT_EQ(harness.simulator().diagram().create_context()->parameter(harness.block(), "k1")[0],
             10.0);
+}
+
+TEST(Tropism, FixedKindHoldsHalfK1WhateverTheValueAndFollowsTheAnnealing) {
+  TropismParams fixed;
+  fixed.kind = TropismKind::kFixed;
+  Harness harness("tropism", fixed);
+  for (const double value : {0.0, 10.0, -10.0, 1e5, -1e5}) {
+    EXPECT_EQ(temperature_at(harness, value), 5.0) << "V = " << value;  // k1 / 2
+  }
+  harness.block().set_k1(harness.context(), 0.5);  // exp2's annealing still reaches it
+  EXPECT_EQ(temperature_at(harness, 10.0), 0.25);
+}
+
+TEST(TropismParams, KindIsLastAndTheDefaultIsThePapers) {
+  EXPECT_THAT(testing::declared_keys<TropismParams>(), ElementsAre("k1", "k2", "kind"));
+  EXPECT_EQ(TropismParams{}.kind, TropismKind::kValue);
+  for (const TropismKind kind : {TropismKind::kValue, TropismKind::kFixed}) {
+    EXPECT_EQ(parse_tropism_kind(to_string(kind)), kind);
+  }
+  EXPECT_THAT([] { parse_tropism_kind("constant"); },
+              ThrowsMessage<std::invalid_argument>(
+                  StrEq("tropism.kind must be value or fixed; got 'constant'")));
+  TropismParams unknown;
+  unknown.kind = static_cast<TropismKind>(4);
+  EXPECT_THAT(
+      [&] { Tropism("tropism", unknown); },
+      ThrowsMessage<std::invalid_argument>(StrEq("tropism.kind must be one of value, fixed")));
 }
 
 TEST(Tropism, RejectsInvalidParameters) {

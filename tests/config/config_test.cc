@@ -233,7 +233,8 @@ TEST(Config, TheResolvedYamlLoadsBackToTheSameConfig) {
   config.set("annealing=[{from_trial: 1, k1: 3}, {from_trial: 4, k1: 0.25}]");
   config.set("sensors.noise_std=[0.001, 0, 0, 0, 0, 1e-9]");
   const std::string yaml = config.to_yaml();
-  EXPECT_THAT(yaml, HasSubstr("critic:\n  beta: 0.1\n  gamma: 0.1\n  lambda: 0.8\n"));
+  EXPECT_THAT(yaml,
+              HasSubstr("critic:\n  kind: td_lambda\n  beta: 0.1\n  gamma: 0.1\n  lambda: 0.8\n"));
   EXPECT_THAT(yaml,
               HasSubstr("annealing:\n  - {from_trial: 1, k1: 3}\n  - {from_trial: 4, k1: 0.25}\n"));
   Config reloaded;

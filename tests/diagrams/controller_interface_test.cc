@@ -98,8 +98,8 @@ TEST(ControllerInterface, AUsersBlockFillsTheOmegaSlot) {
 std::pair<Vector, Vector> weights_after_a_trial(const ClosedLoop& loop) {
   experiments::TrialRunner runner(loop, 1, 0.01);
   runner.run_trial(0.1744, 3.0);
-  return {loop.learner.critic->weights(runner.context()),
-          loop.learner.actor->weights(runner.context())};
+  return {loop.learner.critic->learnt(runner.context(), "weights"),
+          loop.learner.actor->learnt(runner.context(), "weights")};
 }
 
 TEST(ControllerInterface, EachLearnerFreezesAlone) {
@@ -165,11 +165,11 @@ std::unique_ptr<Diagram> half_and_half(const config::Parameters& p) {
   const Block& mixer = builder.emplace<blocks::Mixer>("mixer");
   builder.export_input(law.input_port("measured"), "measured");
   builder.export_input(normaliser.input_port("measured"), "measured");
-  builder.export_input(bg.reward(), "reward");
-  builder.export_input(bg.failed(), "failed");
+  builder.export_input(*bg.reward(), "reward");
+  builder.export_input(*bg.failed(), "failed");
   builder.connect(normaliser.output_port("x"), bg.state());
-  builder.connect(law.output_port("action"), bg.supervisor_action());
-  builder.connect(half, bg.omega());
+  builder.connect(law.output_port("action"), *bg.supervisor_action());
+  builder.connect(half, *bg.omega());
   builder.connect(law.output_port("action"), mixer.input_port("supervisor_action"));
   builder.connect(half, mixer.input_port("omega"));
   builder.connect(bg.exploration_action(), mixer.input_port("exploration_action"));
@@ -190,13 +190,13 @@ TEST(ControllerInterface, AHandBuiltLearningControllerHasItsLearnersFound) {
   const experiments::ExperimentResults results =
       experiments::run_exp1(quick_parameters(), {make_arm("half", half_and_half)});
   ASSERT_TRUE(results.run(0, 0).weights.has_value());
-  EXPECT_GT(results.run(0, 0).weights->actor.norm(), 0.0);
+  EXPECT_GT(results.run(0, 0).weights->actor.weights("actor").norm(), 0.0);
 }
 
 // A user's own learner: a weight per feature of its input, its output their dot product.
 // It learns nothing itself (a policy found by another method, say), but it answers to the
 // protocols as the library's critic and actor do.
-class DotProduct final : public Block, public blocks::WeightLearner {
+class DotProduct final : public Block, public blocks::Learner {
  public:
   DotProduct(std::string name, Role role) : Block(std::move(name)), role_(role) {
     const InputPort& features = declare_input_port("features", kFeatures);
@@ -211,12 +211,6 @@ class DotProduct final : public Block, public blocks::WeightLearner {
   Role learner_role() const override { return role_; }
   const Block& learner_block() const override { return *this; }
   int num_features() const override { return kFeatures; }
-  ConstVectorView weights(const Context& context) const override {
-    return {context.discrete_state(*this).data() + weights_.offset, kFeatures};
-  }
-  VectorView mutable_weights(Context& context) const override {
-    return {context.discrete_state(*this).data() + weights_.offset, kFeatures};
-  }
 
  private:
   static constexpr int kFeatures = 2;  // theta_b, theta_b'
@@ -224,7 +218,7 @@ class DotProduct final : public Block, public blocks::WeightLearner {
   StatePart weights_;
 };
 
-using Role = blocks::WeightLearner::Role;
+using Role = blocks::Learner::Role;
 
 // Two DotProducts of the given names and roles in `builder`'s controller, both fed the
 // measured pitch and pitch rate (the controller's input "measured").
@@ -276,8 +270,9 @@ TEST(ControllerInterface, AUsersLearnersAreFoundAndTheirWeightsKept) {
   EXPECT_EQ(loop.learner.actor->learner_block().name(), "policy");
   EXPECT_EQ(loop.learner.critic->learner_block().name(), "value");
   experiments::LearntWeights pd;
-  pd.actor = Vector{{40.0, 8.0}};  // the weights of a PD law
-  pd.critic = Vector{{-1.0, 0.0}};
+  pd.features = 2;
+  pd.actor = experiments::LearntState::of_weights(Vector{{40.0, 8.0}});  // a PD law's weights
+  pd.critic = experiments::LearntState::of_weights(Vector{{-1.0, 0.0}});
   experiments::TrialRunner runner(loop, 1, 0.01);
   experiments::load_learnt_weights(loop, runner.context(), pd);
   EXPECT_EQ(runner.run_trial(0.1744, 5.0).status, experiments::TrialStatus::kSuccess);

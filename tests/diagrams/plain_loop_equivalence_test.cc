@@ -158,8 +158,8 @@ BothRuns run_both(const std::string& arm, const config::Config& config,
   experiments::TrialRunner runner(controller, seed, config.number("trial.period"));
   PlainLoop loop(loop_config, loop_seed, arm);
   if (start) {
-    controller.learner.critic->mutable_weights(runner.context()) = start->critic;
-    controller.learner.actor->mutable_weights(runner.context()) = start->actor;
+    controller.learner.critic->mutable_learnt(runner.context(), "weights") = start->critic;
+    controller.learner.actor->mutable_learnt(runner.context(), "weights") = start->actor;
     loop.set_weights(start->critic, start->actor);
   }
   const double duration = config.number("trial.duration");
@@ -170,11 +170,11 @@ BothRuns run_both(const std::string& arm, const config::Config& config,
     testing::AssertionResult same =
         SameTrial(run.outcomes.back(), runner.telemetry(), loop_outcome, loop.ticks());
     if (same && controller.learner.learns()) {
-      same = SameWeights("w", controller.learner.critic->weights(runner.context()),
+      same = SameWeights("w", controller.learner.critic->learnt(runner.context(), "weights"),
                          loop.critic_weights());
     }
     if (same && controller.learner.learns()) {
-      same = SameWeights("theta", controller.learner.actor->weights(runner.context()),
+      same = SameWeights("theta", controller.learner.actor->learnt(runner.context(), "weights"),
                          loop.actor_weights());
     }
     if (!same) {

@@ -76,8 +76,8 @@ TEST(Slots, AUsersFeaturesFeedCriticAndActor) {
   EXPECT_EQ(loop.learner.actor->num_features(), 3);
   experiments::TrialRunner runner(loop, 1, 0.01);
   runner.run_trial(0.1744, 2.0);
-  EXPECT_GT(loop.learner.critic->weights(runner.context()).norm(), 0.0);
-  EXPECT_GT(loop.learner.actor->weights(runner.context()).norm(), 0.0);
+  EXPECT_GT(loop.learner.critic->learnt(runner.context(), "weights").norm(), 0.0);
+  EXPECT_GT(loop.learner.actor->learnt(runner.context(), "weights").norm(), 0.0);
 }
 
 // Features of the user's with a layout of their own: one-hot tiles, n x n over the grid

@@ -66,7 +66,7 @@ TEST(BasalGanglia, HasTheDocumentedPortsAndBlocks) {
   EXPECT_EQ(&bg.temperature(), &bg.output_port("temperature"));
   EXPECT_EQ(child_names(bg), (std::vector<std::string>{"features", "critic", "actor", "tropism",
                                                        "sampler", "entropy"}));
-  EXPECT_EQ(bg.critic().num_features(), 49);
+  EXPECT_EQ(dynamic_cast<const blocks::Learner&>(bg.critic()).num_features(), 49);
   ASSERT_NE(bg.tropism(), nullptr);
 }
 
@@ -77,10 +77,12 @@ TEST(BasalGanglia, WithoutExplorationTheActorActsAloneAndTheTemperatureIsNaN) {
             (std::vector<std::string>{"features", "critic", "actor", "no_exploration"}));
   auto context = bg.create_context(1);
   context->fix_input(bg.state(), Vector::Constant(2, 0.5));
-  for (const InputPort* port : {&bg.reward(), &bg.failed(), &bg.supervisor_action(), &bg.omega()}) {
+  for (const InputPort* port : {bg.reward(), bg.failed(), bg.supervisor_action(), bg.omega()}) {
     context->fix_input(*port, Vector::Zero(1));
   }
-  bg.actor().mutable_weights(*context).setConstant(0.25);
+  dynamic_cast<const blocks::Learner&>(bg.actor())
+      .mutable_learnt(*context, "weights")
+      .setConstant(0.25);
   const double actor_action = bg.eval_output(*context, bg.actor_action())[0];
   EXPECT_GT(actor_action, 0.0);
   EXPECT_EQ(bg.eval_output(*context, bg.exploration_action())[0], actor_action);
@@ -154,12 +156,12 @@ TEST(ClosedLoop, AStartedTrialResetsPerTrialStateAndKeepsTheWeights) {
   const experiments::TrialOutcome first = runner.run_trial(0.1744, 20.0);
   EXPECT_EQ(first.status, experiments::TrialStatus::kFailed);  // a blank actor cannot balance
   Context& context = runner.context();
-  const Vector learnt = loop.learner.actor->weights(context);
+  const Vector learnt = loop.learner.actor->learnt(context, "weights");
   EXPECT_GT(learnt.norm(), 0.0);
   const Block& critic = loop.learner.critic->learner_block();
   EXPECT_GT(critic.discrete_state_part("trace").of(context.discrete_state(critic)).norm(), 0.0);
   loop.start_trial(context, 0.1);
-  EXPECT_EQ(loop.learner.actor->weights(context), learnt);
+  EXPECT_EQ(loop.learner.actor->learnt(context, "weights"), learnt);
   EXPECT_EQ(critic.discrete_state_part("trace").of(context.discrete_state(critic)).norm(), 0.0);
   EXPECT_EQ(context.time(), 0.0);
   EXPECT_EQ(loop.diagram->eval_output(context, *loop.telemetry)[kTelemetryThetaB], 0.1);

@@ -31,11 +31,12 @@ LearntWeights random_weights(const config::Parameters& p, std::uint64_t seed) {
   LearntWeights weights;
   weights.layout = policy()(p).layout;
   const int n = 49;
-  weights.actor = Vector::Zero(n);
-  weights.critic = Vector::Zero(n);
+  weights.features = n;
+  weights.actor = LearntState::of_weights(Vector::Zero(n));
+  weights.critic = LearntState::of_weights(Vector::Zero(n));
   std::mt19937_64 generator(seed);
   std::normal_distribution<double> normal(0.0, 2.0);
-  for (int k = 0; k < n; ++k) weights.actor[k] = normal(generator);
+  for (int k = 0; k < n; ++k) weights.actor.weights("actor")[k] = normal(generator);
   return weights;
 }
 
@@ -53,8 +54,10 @@ TEST(ActorLinearisation, SlopesAreTheDerivativeOfTheRbfLawAtRest) {
       const double ci = c[static_cast<size_t>(i)];
       const double cj = c[static_cast<size_t>(j)];
       const double phi = std::exp(-(ci * ci + cj * cj) / (2.0 * b2));
-      pitch += weights.actor[i * 7 + j] * phi * ci / (b2 * p.normaliser.scale_theta);
-      rate += weights.actor[i * 7 + j] * phi * cj / (b2 * p.normaliser.scale_dtheta);
+      pitch +=
+          weights.actor.weights("actor")[i * 7 + j] * phi * ci / (b2 * p.normaliser.scale_theta);
+      rate +=
+          weights.actor.weights("actor")[i * 7 + j] * phi * cj / (b2 * p.normaliser.scale_dtheta);
     }
   }
   const ActorLinearisation linear = linearise_actor(p, policy(), weights);
@@ -69,7 +72,7 @@ TEST(ActorLinearisation, SlopesAreTheDerivativeOfTheRbfLawAtRest) {
 TEST(ActorLinearisation, WithoutAnActionTheRobotFalls) {
   const config::Parameters p = analytic();
   LearntWeights weights = random_weights(p, 1);
-  weights.actor.setZero();
+  weights.actor.weights("actor").setZero();
   const ActorLinearisation linear = linearise_actor(p, policy(), weights);
   ASSERT_EQ(linear.modes.size(), 4u);
   EXPECT_GT(std::abs(linear.modes[0].z), 1.0);
@@ -85,7 +88,7 @@ TEST(ActorLinearisation, WithoutAnActionTheRobotFalls) {
 TEST(ActorLinearisation, RefusesWeightsThatDoNotFitTheActor) {
   const config::Parameters p = analytic();
   LearntWeights short_weights = random_weights(p, 2);
-  short_weights.actor = Vector::Zero(3);
+  short_weights.actor = LearntState::of_weights(Vector::Zero(3));
   EXPECT_THROW(linearise_actor(p, policy(), short_weights), std::invalid_argument);
 }
 

@@ -9,7 +9,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "cbbg/blocks/weight_learner.h"
+#include "cbbg/blocks/learner.h"
 #include "cbbg/config/declared_keys.h"
 #include "cbbg/diagrams/arms.h"
 #include "cbbg/diagrams/presets.h"

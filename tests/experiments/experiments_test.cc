@@ -303,10 +303,10 @@ TEST(Experiments, Exp2CarriesTheCoordinatedTrialsLearningIntoOperantLearning) {
   first.run_trial(0.1744, 20.0);
   TrialRunner later(operant, 1, 0.01);
   later.context().continue_from(first.context());
-  EXPECT_EQ(operant.learner.actor->weights(later.context()),
-            coordinated.learner.actor->weights(first.context()));
-  EXPECT_EQ(operant.learner.critic->weights(later.context()),
-            coordinated.learner.critic->weights(first.context()));
+  EXPECT_EQ(operant.learner.actor->learnt(later.context(), "weights"),
+            coordinated.learner.actor->learnt(first.context(), "weights"));
+  EXPECT_EQ(operant.learner.critic->learnt(later.context(), "weights"),
+            coordinated.learner.critic->learnt(first.context(), "weights"));
   operant.learner.tropism->set_k1(later.context(), 10.0);
   const TrialOutcome second = later.run_trial(0.1744, 20.0);
   EXPECT_EQ(results.runs.front().trials[1].outcome.final_theta, second.final_theta);

@@ -65,8 +65,8 @@ const LearntWeights& bg_only_weights() {
 
 LearntWeights zero_weights() {
   LearntWeights weights = bg_only_weights();
-  weights.actor.setZero();
-  weights.critic.setZero();
+  weights.actor.weights("actor").setZero();
+  weights.critic.weights("critic").setZero();
   return weights;
 }
 

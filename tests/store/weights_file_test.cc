@@ -123,8 +123,9 @@ blocks::FeatureLayout default_layout() {
 LearntWeights default_layout_weights() {
   LearntWeights weights;
   weights.layout = default_layout();
-  weights.actor = Vector::Zero(49);
-  weights.critic = Vector::Zero(49);
+  weights.features = 49;
+  weights.actor = experiments::LearntState::of_weights(Vector::Zero(49));
+  weights.critic = experiments::LearntState::of_weights(Vector::Zero(49));
   return weights;
 }
 
@@ -136,11 +137,11 @@ TEST_F(WeightsFile, ReadsAFileWrittenByHand) {
                                                    {"normaliser.saturation", {3}},
                                                    {"rbf.centres", {-1, 0, 1}},
                                                    {"rbf.width", {0.5}}}));
-  ASSERT_EQ(weights.actor.size(), 9);
-  ASSERT_EQ(weights.critic.size(), 9);
-  EXPECT_EQ(weights.actor[0], 0.5);
-  EXPECT_EQ(weights.actor[8], 8.5);
-  EXPECT_EQ(weights.critic[8], -8.0);
+  ASSERT_EQ(weights.actor.weights("actor").size(), 9);
+  ASSERT_EQ(weights.critic.weights("critic").size(), 9);
+  EXPECT_EQ(weights.actor.weights("actor")[0], 0.5);
+  EXPECT_EQ(weights.actor.weights("actor")[8], 8.5);
+  EXPECT_EQ(weights.critic.weights("critic")[8], -8.0);
 }
 
 TEST_F(WeightsFile, SaveThenLoadGivesEveryDoubleBackBitForBit) {
@@ -155,8 +156,9 @@ TEST_F(WeightsFile, SaveThenLoadGivesEveryDoubleBackBitForBit) {
                             0.1,   1.0 / 3.0, std::nextafter(1.0, 2.0), 123456789.123456789,
                             -1e-17};
   std::mt19937_64 bits(2011);
-  weights.actor.resize(49);
-  weights.critic.resize(49);
+  weights.features = 49;
+  weights.actor = experiments::LearntState::of_weights(Vector(49));
+  weights.critic = experiments::LearntState::of_weights(Vector(49));
   for (int k = 0; k < 98; ++k) {
     double value = 0.0;
     if (k < static_cast<int>(std::size(awkward))) {
@@ -165,7 +167,7 @@ TEST_F(WeightsFile, SaveThenLoadGivesEveryDoubleBackBitForBit) {
       do value = std::bit_cast<double>(bits());
       while (!std::isfinite(value));
     }
-    (k < 49 ? weights.actor[k] : weights.critic[k - 49]) = value;
+    (k < 49 ? weights.actor.weights("actor")[k] : weights.critic.weights("critic")[k - 49]) = value;
   }
 
   const fs::path path = directory_ / "nested" / "w.txt";  // the directory is created
@@ -181,11 +183,13 @@ TEST_F(WeightsFile, SaveThenLoadGivesEveryDoubleBackBitForBit) {
           << weights.layout[e].key << " " << i;
     }
   }
-  ASSERT_EQ(loaded.actor.size(), 49);
-  ASSERT_EQ(loaded.critic.size(), 49);
+  ASSERT_EQ(loaded.actor.weights("actor").size(), 49);
+  ASSERT_EQ(loaded.critic.weights("critic").size(), 49);
   for (int k = 0; k < 49; ++k) {
-    EXPECT_TRUE(same_bits(loaded.actor[k], weights.actor[k])) << "actor " << k;
-    EXPECT_TRUE(same_bits(loaded.critic[k], weights.critic[k])) << "critic " << k;
+    EXPECT_TRUE(same_bits(loaded.actor.weights("actor")[k], weights.actor.weights("actor")[k]))
+        << "actor " << k;
+    EXPECT_TRUE(same_bits(loaded.critic.weights("critic")[k], weights.critic.weights("critic")[k]))
+        << "critic " << k;
   }
   EXPECT_TRUE(loaded == weights);
 
@@ -198,13 +202,13 @@ TEST_F(WeightsFile, SaveThenLoadGivesEveryDoubleBackBitForBit) {
 
 TEST_F(WeightsFile, SavingReplacesTheFileWholeAndLeavesNothingElse) {
   LearntWeights first = default_layout_weights();
-  first.actor[3] = 1.0;
+  first.actor.weights("actor")[3] = 1.0;
   LearntWeights second = default_layout_weights();
-  second.actor[3] = 2.0;
+  second.actor.weights("actor")[3] = 2.0;
   const fs::path path = directory_ / "w.txt";
   save_weights(path, first);
   save_weights(path, second);
-  EXPECT_EQ(load_weights(path).actor[3], 2.0);
+  EXPECT_EQ(load_weights(path).actor.weights("actor")[3], 2.0);
   int files = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(directory_)) ++files;
   EXPECT_EQ(files, 1);  // no temporary file left beside it
@@ -233,8 +237,17 @@ TEST_F(WeightsFile, SavingRefusesWhatTheFormatCannotHold) {
     return "(saved)";
   };
   LearntWeights weights = default_layout_weights();
-  weights.actor = Vector::Zero(48);
-  EXPECT_EQ(save_error(weights), "save_weights: critic has 49 weights; the actor has 48");
+  weights.actor = experiments::LearntState::of_weights(Vector::Zero(48));
+  save_weights(directory_ / "v2.txt", weights);  // not the library's shape: a version-2 file
+  EXPECT_EQ(read_text(directory_ / "v2.txt").substr(0, 15), "cbbg-weights 2\n");
+  weights = default_layout_weights();
+  weights.critic.parts[0].name = "two words";
+  EXPECT_EQ(save_error(weights),
+            "save_weights: critic part 'two words' must be a name of letters, digits and '_' with "
+            "at least one number");
+  weights = default_layout_weights();
+  weights.actor.parts.clear();
+  EXPECT_EQ(save_error(weights), "save_weights: the actor learnt nothing");
   weights = default_layout_weights();
   weights.layout.push_back({"no_dot", {1}});
   EXPECT_EQ(save_error(weights),
@@ -244,7 +257,7 @@ TEST_F(WeightsFile, SavingRefusesWhatTheFormatCannotHold) {
   weights.layout[3].values[1] = std::numeric_limits<double>::infinity();
   EXPECT_EQ(save_error(weights), "save_weights: rbf.centres [1] is inf; numbers must be finite");
   weights = default_layout_weights();
-  weights.critic[5] = std::numeric_limits<double>::quiet_NaN();
+  weights.critic.weights("critic")[5] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(save_error(weights), "save_weights: critic weight [5] is nan; numbers must be finite");
   weights = default_layout_weights();
   weights.provenance.arm = "bg only";
@@ -271,21 +284,60 @@ TEST_F(WeightsFile, MissingFileAndDirectoryAreNamed) {
 }
 
 TEST_F(WeightsFile, OtherFormatsAndVersionsAreNamed) {
-  EXPECT_EQ(load_error(""),
-            prefix() + "is empty; a weights file starts with the line 'cbbg-weights 1'");
-  EXPECT_EQ(load_error(with_line(small_file(), 1, "cbbg-weights 2")),
-            prefix() + "is format 'cbbg-weights 2'; this cbbg reads 'cbbg-weights 1'");
+  const std::string versions = "'cbbg-weights 1' or 'cbbg-weights 2'";
+  EXPECT_EQ(load_error(""), prefix() + "is empty; a weights file starts with the line " + versions);
+  EXPECT_EQ(load_error(with_line(small_file(), 1, "cbbg-weights 3")),
+            prefix() + "is format 'cbbg-weights 3'; this cbbg reads " + versions);
   EXPECT_EQ(load_error("experiment: exp1\nseeds: 20\n"),
             prefix() +
-                "is not a cbbg weights file: its first line is 'experiment: exp1', expected "
-                "'cbbg-weights 1'");
+                "is not a cbbg weights file: its first line is 'experiment: exp1', expected " +
+                versions);
   EXPECT_EQ(load_error(std::string("\x7f"
                                    "ELF\x02\x01",
                                    6)),
             prefix() +
                 "is not a cbbg weights file: its first line is '?ELF?"
-                "?', expected "
-                "'cbbg-weights 1'");
+                "?', expected " +
+                versions);
+}
+
+// The small file as version 2, the critic learning a second part "visits" (line 33, its
+// numbers 34-42).
+std::string two_part_file() {
+  std::string text =
+      with_line(with_line(with_line(small_file(), 1, "cbbg-weights 2"), 13, "actor weights 9"), 23,
+                "critic weights 9");
+  text += "critic visits 9\n";
+  for (int k = 0; k < 9; ++k) text += std::to_string(k * k) + "\n";
+  return text;
+}
+
+TEST_F(WeightsFile, Version2HoldsEveryPartALearnerLearns) {
+  const LearntWeights weights = load_weights(write("w.txt", two_part_file()));
+  EXPECT_EQ(weights.num_features(), 9);
+  ASSERT_EQ(weights.critic.parts.size(), 2u);
+  EXPECT_EQ(weights.critic.parts[1].name, "visits");
+  EXPECT_EQ(weights.critic.parts[1].values[3], 9.0);
+  EXPECT_EQ(weights.actor.weights("actor")[8], 8.5);
+  // Saved again, it is version 2, the same bytes but the comment.
+  save_weights(directory_ / "again.txt", weights);
+  EXPECT_EQ(load_weights(directory_ / "again.txt"), weights);
+  EXPECT_EQ(read_text(directory_ / "again.txt").substr(0, 15), "cbbg-weights 2\n");
+
+  const std::string file = two_part_file();
+  EXPECT_EQ(load_error(with_line(file, 33, "critic visits")),
+            prefix() +
+                "line 33: expected 'actor <part> <count>' or 'critic <part> <count>', got "
+                "'critic visits'");
+  EXPECT_EQ(load_error(with_line(file, 33, "critic weights 9")),
+            prefix() + "line 33: critic part weights appears twice");
+  EXPECT_EQ(load_error(with_line(file, 33, "actor visits 9")),
+            prefix() + "line 33: the actor's parts must come before the critic's");
+  EXPECT_EQ(load_error(with_line(file, 33, "critic visits 0")),
+            prefix() + "line 33: critic visits count must be from 1 to 1000000; got 0");
+  EXPECT_EQ(load_error(first_lines(file, 36)),
+            prefix() + "ends after line 36 with 3 of 9 numbers of critic visits");
+  EXPECT_EQ(load_error(first_lines(file, 12)), prefix() + "ends after line 12 with no actor part");
 }
 
 TEST_F(WeightsFile, MalformedLinesAreNamedWithTheirNumber) {
@@ -408,7 +460,10 @@ LearntWeights made_on(LearntWeights weights, const std::string& plant) {
 TEST_F(WeightsFile, WeightsLoadOnlyOntoTheRobotTheyWereLearntOn) {
   register_user_kinds();
   const LearntWeights weights = default_layout_weights();
-  const blocks::FeatureLayout layout = default_layout();
+  config::Config config;
+  config.set("plant.kind=analytic");
+  const ClosedLoop layout = build_preset("bg_only", config::read_parameters(config));
+  ASSERT_EQ(layout.layout, default_layout());
   auto refusal = [&](const std::string& made, const std::string& loaded) {
     return "weights file 'w.txt' was made on plant kind '" + made +
            "' and cannot be loaded onto plant kind '" + loaded + "' (plant.kind): another robot";
@@ -432,8 +487,8 @@ TEST_F(WeightsFile, WeightsLoadOnlyOntoTheRobotTheyWereLearntOn) {
         << made << " onto " << loaded;
   }
   // The robot is checked first, then the layout.
-  blocks::FeatureLayout other = layout;
-  other[4].values = {0.7};
+  config.set("rbf.width=0.7");
+  const ClosedLoop other = build_preset("bg_only", config::read_parameters(config));
   EXPECT_THAT([&] { check_weights(made_on(weights, "pole"), "simbody", other, "w.txt"); },
               ::testing::ThrowsMessage<config::ConfigError>(refusal("pole", "simbody")));
   EXPECT_THAT([&] { check_weights(made_on(weights, "simbody"), "analytic", other, "w.txt"); },
@@ -449,21 +504,21 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
   const ClosedLoop learner = build_preset("bg_only", config::read_parameters(config));
   auto learnt = learner.diagram->create_context(1);
   for (int k = 0; k < 9; ++k) {
-    learner.learner.actor->mutable_weights(*learnt)[k] = 0.5 * k;
-    learner.learner.critic->mutable_weights(*learnt)[k] = -1.0 * k;
+    learner.learner.actor->mutable_learnt(*learnt, "weights")[k] = 0.5 * k;
+    learner.learner.critic->mutable_learnt(*learnt, "weights")[k] = -1.0 * k;
   }
   const LearntWeights weights = learnt_weights(learner, *learnt, {"bg_only", 4, 9, "analytic"});
   EXPECT_EQ(weights.layout, learner.layout);  // what the loop's blocks describe
   EXPECT_EQ(weights.layout[3], (blocks::LayoutEntry{"rbf.centres", {-1, 0, 1}}));
   EXPECT_EQ(weights.layout[1], (blocks::LayoutEntry{"normaliser.scale_dtheta", {0.05817764}}));
-  EXPECT_EQ(weights.actor[4], 2.0);
-  EXPECT_EQ(weights.critic[8], -8.0);
+  EXPECT_EQ(weights.actor.weights("actor")[4], 2.0);
+  EXPECT_EQ(weights.critic.weights("critic")[8], -8.0);
   EXPECT_EQ(weights.provenance.trials, 9);
 
   const ClosedLoop policy = build_preset(kLearntActor, config::read_parameters(config));
   auto evaluated = policy.diagram->create_context(1);
   load_learnt_weights(policy, *evaluated, weights);
-  EXPECT_EQ(policy.learner.actor->weights(*evaluated)[4], 2.0);
+  EXPECT_EQ(policy.learner.actor->learnt(*evaluated, "weights")[4], 2.0);
 
   config::Config grid_of_49;
   grid_of_49.set("plant.kind=analytic");
@@ -481,7 +536,7 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
   auto supervisor_context = supervisor.diagram->create_context(1);
   EXPECT_THAT(([&] { learnt_weights(supervisor, *supervisor_context, {}); }),
               ::testing::ThrowsMessage<std::invalid_argument>(
-                  "diagram 'pd_only' has no critic and actor: it learns no weights"));
+                  "diagram 'pd_only' has no actor: it learns no weights"));
 }
 
 }  // namespace

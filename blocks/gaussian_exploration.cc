@@ -1,0 +1,51 @@
+#include "cbbg/blocks/gaussian_exploration.h"
+
+#include <cmath>
+
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/random.h"
+
+namespace cbbg::blocks {
+
+GaussianExploration::GaussianExploration(std::string name, const ExplorationParams& params,
+                                         double period)
+    : Block(std::move(name)), params_(params) {
+  params_.validate();
+  check_period(period);
+  const InputPort& actor_action = declare_input_port("actor_action", 1, "a_A(t)");
+  noise_ = declare_discrete_state("noise", Vector::Zero(1), StateLifetime::kPerTrial);
+  elapsed_ = declare_discrete_state("elapsed", Vector::Zero(1), StateLifetime::kPersistent);
+  declare_output_port(
+      "exploration_action", 1,
+      [this, &actor_action](const BlockContext& context, VectorRef action) {
+        const auto state = context.discrete_state();
+        action[0] =
+            context.input(actor_action)[0] + sigma_at(elapsed_.of(state)[0]) * noise_.of(state)[0];
+      },
+      {&actor_action}, "a_E(t) = a_A + sigma(t) eps");
+  // The draws of the BoltzmannSampler, in the same order: common random numbers.
+  declare_initialization_update([this](BlockContext& context, VectorRef next) {
+    noise_.of(next)[0] = draw_standard_normal(context.random_generator());
+    return EventStatus::succeeded();
+  });
+  declare_periodic_update(
+      period, 0.0,
+      [this, period](BlockContext& context, VectorRef next) {
+        noise_.of(next)[0] = draw_standard_normal(context.random_generator());
+        elapsed_.of(next)[0] = elapsed_.of(context.discrete_state())[0] + period;
+        return EventStatus::succeeded();
+      },
+      UpdateWrites::kInPlace);  // noise is only written, elapsed read before it is written
+}
+
+double GaussianExploration::sigma_at(double elapsed) const {
+  if (params_.half_life == 0.0) return params_.sigma;
+  return params_.sigma * std::exp2(-elapsed / params_.half_life);
+}
+
+double GaussianExploration::elapsed(const Context& context) const {
+  return context.discrete_state(*this)[elapsed_.offset];
+}
+
+}  // namespace cbbg::blocks

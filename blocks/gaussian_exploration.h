@@ -1,0 +1,45 @@
+#pragma once
+
+#include <string>
+
+#include "cbbg/blocks/exploration_params.h"
+#include "cbbg/framework/block.h"
+#include "cbbg/framework/context.h"
+
+namespace cbbg::blocks {
+
+/// GaussianExploration: exploration.kind gaussian, a temperature-free alternative to the
+/// BoltzmannSampler (docs/model.md §5.4).
+///
+/// | port               | dir | size | meaning                          |
+/// |--------------------|-----|------|----------------------------------|
+/// | actor_action       | in  | 1    | a_A(t), from the Actor           |
+/// | exploration_action | out | 1    | a_E(t) = a_A + sigma(t) eps      |
+///
+/// Equations: a_E = a_A + sigma(t) eps, sigma(t) = sigma_0 2^(-elapsed / half_life)
+/// (sigma_0 when half_life = 0), elapsed the learning time the block has run. eps is a
+/// standard normal held in the discrete state, drawn from the block's own generator by the
+/// initialization update (first tick) and by each periodic update (next tick), exactly as
+/// the BoltzmannSampler draws its own: at the same path and seed both see the same eps.
+/// Each periodic update advances elapsed by the period.
+/// Parameters: sigma_0 = exploration.sigma, half_life = exploration.half_life, the period
+/// trial.period.
+///
+/// Discrete state: per trial, noise eps (1); persistent, elapsed (1, s), carried across
+/// trials as learning goes on.
+class GaussianExploration final : public Block {
+ public:
+  GaussianExploration(std::string name, const ExplorationParams& params, double period);
+
+  // sigma(t) after `elapsed` s of learning.
+  double sigma_at(double elapsed) const;
+  // The learning time elapsed in `context`, s.
+  double elapsed(const Context& context) const;
+
+ private:
+  ExplorationParams params_;
+  StatePart noise_;
+  StatePart elapsed_;
+};
+
+}  // namespace cbbg::blocks

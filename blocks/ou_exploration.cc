@@ -1,0 +1,41 @@
+#include "cbbg/blocks/ou_exploration.h"
+
+#include <cmath>
+
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
+#include "cbbg/framework/random.h"
+
+namespace cbbg::blocks {
+
+OuExploration::OuExploration(std::string name, const ExplorationParams& params, double period)
+    : Block(std::move(name)), params_(params) {
+  params_.validate();
+  check_period(period);
+  const double rate = params_.ou_theta * period;
+  decay_ = std::exp(-rate);
+  // expm1 keeps the innovation accurate when theta Ts is small.
+  innovation_ = params_.sigma * std::sqrt(-std::expm1(-2.0 * rate));
+  const InputPort& actor_action = declare_input_port("actor_action", 1, "a_A(t)");
+  declare_discrete_state("noise", Vector::Zero(1), StateLifetime::kPerTrial);
+  declare_output_port(
+      "exploration_action", 1,
+      [&actor_action](const BlockContext& context, VectorRef action) {
+        action[0] = context.input(actor_action)[0] + context.discrete_state()[0];
+      },
+      {&actor_action}, "a_E(t) = a_A + x(t)");
+  declare_initialization_update([this](BlockContext& context, VectorRef next) {
+    next[0] = params_.sigma * draw_standard_normal(context.random_generator());
+    return EventStatus::succeeded();
+  });
+  declare_periodic_update(
+      period, 0.0,
+      [this](BlockContext& context, VectorRef next) {
+        const double x = context.discrete_state()[0];
+        next[0] = decay_ * x + innovation_ * draw_standard_normal(context.random_generator());
+        return EventStatus::succeeded();
+      },
+      UpdateWrites::kInPlace);  // x is read before it is written
+}
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <string>
+
+#include "cbbg/blocks/exploration_params.h"
+#include "cbbg/framework/block.h"
+
+namespace cbbg::blocks {
+
+/// OuExploration: exploration.kind ou, temporally correlated exploration: the actor's action
+/// plus an Ornstein-Uhlenbeck process (docs/model.md §5.4).
+///
+/// | port               | dir | size | meaning                  |
+/// |--------------------|-----|------|--------------------------|
+/// | actor_action       | in  | 1    | a_A(t), from the Actor   |
+/// | exploration_action | out | 1    | a_E(t) = a_A + x(t)      |
+///
+/// Equations: dx = -theta x dt + sigma sqrt(2 theta) dW, stationary law N(0, sigma^2),
+/// sampled exactly at the ticks: the initialization update draws x from the stationary law,
+/// x = sigma eps_0; each periodic update sets
+///   x <- x e^(-theta Ts) + sigma sqrt(1 - e^(-2 theta Ts)) eps_k,
+/// so the lag-one autocorrelation is e^(-theta Ts). eps is a standard normal from the
+/// block's own generator, one per update in the BoltzmannSampler's order (common random
+/// numbers); for theta Ts large enough that e^(-theta Ts) is 0, a_E is GaussianExploration's
+/// with a fixed sigma, bit for bit.
+/// Parameters: sigma = exploration.sigma, theta = exploration.ou_theta, the period Ts =
+/// trial.period.
+///
+/// Discrete state, per trial: noise x (1, N m); a new trial draws it afresh.
+class OuExploration final : public Block {
+ public:
+  OuExploration(std::string name, const ExplorationParams& params, double period);
+
+ private:
+  ExplorationParams params_;
+  double decay_;       // e^(-theta Ts)
+  double innovation_;  // sigma sqrt(1 - e^(-2 theta Ts))
+};
+
+}  // namespace cbbg::blocks

@@ -1,0 +1,33 @@
+#include "cbbg/blocks/quadratic_reward.h"
+
+#include "cbbg/blocks/measured_signals.h"
+#include "cbbg/blocks/parameter_checks.h"
+#include "cbbg/framework/block_context.h"
+
+namespace cbbg::blocks {
+
+QuadraticReward::QuadraticReward(std::string name, const RewardParams& params, double period)
+    : Block(std::move(name)), params_(params) {
+  params_.validate();
+  check_period(period);
+  const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");
+  const InputPort& failed = declare_input_port("failed", 1, "1 when the trial fails");
+  declare_output_port(
+      "reward", 1,
+      [this, &measured, &failed](const BlockContext& context, VectorRef reward) {
+        if (context.input(failed)[0] > 0.5) {
+          reward[0] = -1.0;
+          return;
+        }
+        const auto y = context.input(measured);
+        const double theta = y[kMeasuredThetaB];
+        const double theta_dot = y[kMeasuredThetaBDot];
+        const double phi_dot = (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
+        const auto& q = params_.q;
+        reward[0] =
+            -(q[0] * theta * theta + q[1] * theta_dot * theta_dot + q[2] * phi_dot * phi_dot);
+      },
+      {&measured, &failed}, "r_{t-1} = -(q0 theta_b^2 + q1 theta_b'^2 + q2 phi'^2), -1 on failure");
+}
+
+}  // namespace cbbg::blocks

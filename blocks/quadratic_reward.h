@@ -1,0 +1,31 @@
+#pragma once
+
+#include <string>
+
+#include "cbbg/blocks/reward.h"
+#include "cbbg/framework/block.h"
+
+namespace cbbg::blocks {
+
+/// QuadraticReward: reward.kind quadratic, a graded reward in place of the paper's sliding
+/// surface's 0 or -1 (docs/model.md §5.4).
+///
+/// | port     | dir | size | meaning                                              |
+/// |----------|-----|------|------------------------------------------------------|
+/// | measured | in  | 6    | the Sensors output (measured_signals.h)               |
+/// | failed   | in  | 1    | 1 when the trial fails at this tick, else 0           |
+/// | reward   | out | 1    | r_{t-1}, the reward of the transition s_{t-1} -> s_t  |
+///
+/// Equation: r_{t-1} = -1 if failed, else -(q0 theta_b^2 + q1 theta_b'^2 + q2 phi'^2) of
+/// s_t, phi' = (phi_l' + phi_r') / 2 the wheels' mean rate. It remembers nothing, so it
+/// rewards the first tick of a trial too.
+/// Parameters: q = reward.q (3 numbers, each >= 0); the period trial.period is checked only.
+class QuadraticReward final : public Block {
+ public:
+  QuadraticReward(std::string name, const RewardParams& params, double period);
+
+ private:
+  RewardParams params_;
+};
+
+}  // namespace cbbg::blocks
