@@ -408,7 +408,8 @@ std::string format_weights(const LearntWeights& weights) {
   auto line = [&text](std::string_view key, const std::string& value) {
     text.append(key).append(" ").append(value).append("\n");
   };
-  text.append(format_header(version_for(weights))).append("\n");
+  const int version = version_for(weights);
+  text.append(format_header(version)).append("\n");
   text.append("# Learnt cbbg weights (docs/weights-format.md).\n");
   line("arm", provenance.arm);
   line("seed", std::to_string(provenance.seed));
@@ -421,7 +422,6 @@ std::string format_weights(const LearntWeights& weights) {
   }
   line("features", std::to_string(weights.num_features()));
   for (const std::string& note : weights.layout_notes) text.append("# ").append(note).append("\n");
-  const int version = version_for(weights);
   for (const auto& [role, state] :
        {std::pair<std::string, const LearntState*>{"actor", &weights.actor},
         {"critic", &weights.critic}}) {
