@@ -1,6 +1,7 @@
 #include "cbbg/diagrams/cbbg_controller.h"
 
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "cbbg/config/parameters.h"
@@ -38,11 +39,15 @@ BasalGangliaBlocks basal_ganglia_blocks(const config::Parameters& p,
   return blocks;
 }
 
-// The run's parameters with the options' own choices (the actor's rule).
-config::Parameters with_options(const config::Parameters& p, const ControllerOptions& options) {
-  config::Parameters adjusted = p;
-  if (options.actor_rule) adjusted.actor.rule = *options.actor_rule;
-  return adjusted;
+// The run's parameters with the options' own choices (the actor's rule): a copy only when
+// the options change something.
+const config::Parameters& with_options(const config::Parameters& p,
+                                       const ControllerOptions& options,
+                                       std::optional<config::Parameters>& adjusted) {
+  if (!options.actor_rule) return p;
+  adjusted = p;
+  adjusted->actor.rule = *options.actor_rule;
+  return *adjusted;
 }
 
 // The omega slot's block, or the schedule in the options' mode.
@@ -89,7 +94,9 @@ CbbgController::CbbgController(std::string name, const config::Parameters& param
     supervisor_action = &constant(builder, "no_supervisor", 0.0);
   }
   if (options.basal_ganglia) {
-    add_basal_ganglia(builder, with_options(parameters, options), options, *supervisor_action);
+    std::optional<config::Parameters> adjusted;
+    add_basal_ganglia(builder, with_options(parameters, options, adjusted), options,
+                      *supervisor_action);
   } else {
     add_supervisor_alone(builder, *supervisor_action);
   }

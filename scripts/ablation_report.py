@@ -201,19 +201,8 @@ def figure(study):
 
 
 def main(argv):
-    if len(argv) != 2:
-        print("usage: ablation_report.py DIR", file=sys.stderr)
-        return 2
-    directory = argv[1]
-    try:
-        study = read_study(directory)
-        table = report(study)
-    except InputError as error:
-        print(f"ablation_report.py: {error}", file=sys.stderr)
-        return 2
-    return plot_results.publish_study_report(
-        "ablation_report.py", directory, STUDY_MARKER, "ablation_study.sh", "ablation", table,
-        lambda: figure(study))
+    return plot_results.study_report_main(argv, "ablation_report.py", STUDY_MARKER, "ablation_study.sh", "ablation",
+                                          read_study, report, figure)
 
 
 if __name__ == "__main__":

@@ -897,6 +897,24 @@ def write_atomically(path, write):
         raise
 
 
+def study_report_main(argv, program, marker, script, name, read_study, report, figure):
+    """A study report's command line: `program DIR` reads the study (read_study(DIR)), and
+    publishes report(study) and figure(study) as NAME.md and NAME.png (publish_study_report).
+    Returns the exit status: 2 for a wrong call or a study it cannot read (one line)."""
+    if len(argv) != 2:
+        print(f"usage: {program} DIR", file=sys.stderr)
+        return 2
+    directory = argv[1]
+    try:
+        study = read_study(directory)
+        table = report(study)
+    except InputError as error:
+        print(f"{program}: {error}", file=sys.stderr)
+        return 2
+    return publish_study_report(program, directory, marker, script, name, table,
+                                lambda: figure(study))
+
+
 def publish_study_report(program, directory, marker, script, name, table, make_figure):
     """A study report's NAME.md (`table`) and NAME.png (make_figure()) in `directory`, each
     atomically, replacing them only in a folder `script` marked with `marker`; the table on

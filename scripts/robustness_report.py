@@ -118,18 +118,9 @@ def figure(study):
 
 
 def main(argv):
-    if len(argv) != 2:
-        print("usage: robustness_report.py DIR", file=sys.stderr)
-        return 2
-    directory = argv[1]
-    try:
-        study = read_study(directory)
-    except InputError as error:
-        print(f"robustness_report.py: {error}", file=sys.stderr)
-        return 2
-    return plot_results.publish_study_report(
-        "robustness_report.py", directory, STUDY_MARKER, "robustness_study.sh", "robustness",
-        markdown_table(study), lambda: figure(study))
+    return plot_results.study_report_main(argv, "robustness_report.py", STUDY_MARKER, "robustness_study.sh", "robustness",
+                                          read_study, markdown_table, figure)
+
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv))

@@ -293,19 +293,9 @@ def report(study):
 
 
 def main(argv):
-    if len(argv) != 2:
-        print("usage: teacher_report.py DIR", file=sys.stderr)
-        return 2
-    directory = argv[1]
-    try:
-        study = read_study(directory)
-        table = report(study)
-    except InputError as error:
-        print(f"teacher_report.py: {error}", file=sys.stderr)
-        return 2
-    return plot_results.publish_study_report(
-        "teacher_report.py", directory, STUDY_MARKER, "teacher_study.sh", "teacher", table,
-        lambda: figure(study))
+    return plot_results.study_report_main(argv, "teacher_report.py", STUDY_MARKER, "teacher_study.sh", "teacher",
+                                          read_study, report, figure)
+
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv))
