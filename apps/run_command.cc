@@ -1,6 +1,7 @@
 // cbbg run: resolve the config, run the experiment, write the results directory.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -22,6 +23,7 @@
 #include "cbbg/store/output_guard.h"
 #include "cbbg/store/results_writer.h"
 #include "cbbg/store/run_directory.h"
+#include "cbbg/store/seed_figures.h"
 #include "cbbg/store/task_store.h"
 #include "cbbg/store/weights_file.h"
 
@@ -50,8 +52,8 @@ config::Config resolve(const RunOptions& options) {
   return config;
 }
 
-// exp2: mean temperature, entropy and successes of the first and last trials, over seeds.
-void print_annealing_summary(const experiments::ExperimentResults& results) {
+// Per trial, over the seeds: k1, mean temperature and entropy, and the runs that balanced.
+void print_trials_summary(const experiments::ExperimentResults& results) {
   const auto& first_run = results.runs.front();
   std::printf("%-6s %6s %12s %12s %10s\n", "trial", "k1", "mean T", "mean E", "balanced");
   for (std::size_t t = 0; t < first_run.trials.size(); ++t) {
@@ -77,72 +79,68 @@ int arm_width(const experiments::ExperimentResults& results) {
   return static_cast<int>(width);
 }
 
-// exp3: per arm, the seeds whose learnt actor alone passed, and the trials it took them.
-void print_skill_summary(const experiments::ExperimentResults& results) {
+// A figure the schema shows on the console: per arm, the seeds with a value, their median and
+// range.
+void print_reached(const experiments::ExperimentResults& results,
+                   const experiments::Figure& figure) {
   const int width = arm_width(results);
-  std::printf("%-*s %8s %10s %8s %s\n", width, "arm", "seeds", "skilled", "median", "range");
+  std::printf("%-*s %8s %10s %8s %s\n", width, "arm", "seeds", "reached", "median", "range");
   for (std::size_t a = 0; a < results.arms.size(); ++a) {
-    std::vector<int> trials;
-    for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-      const auto& run = results.run(a, s);
-      if (run.trials_to_skill) trials.push_back(*run.trials_to_skill);
-    }
-    if (trials.empty()) {
-      std::printf("%-*s %8zu %10d %8s %s\n", width, results.arms[a].c_str(), results.seeds.size(),
-                  0, "-", "(no seed's actor balanced alone)");
+    const std::vector<double> values =
+        store::ranked(store::seed_values(results, a, figure), experiments::Missing::kNotCounted);
+    if (values.empty()) {
+      std::printf("%-*s %8zu %10d %8s (%s: no seed has it)\n", width, results.arms[a].c_str(),
+                  results.seeds.size(), 0, "-", figure.name.c_str());
       continue;
     }
-    std::printf(
-        "%-*s %8zu %10zu %8.1f [%d, %d]  (trials until the actor alone balances; of the "
-        "seeds that got there)\n",
-        width, results.arms[a].c_str(), results.seeds.size(), trials.size(), store::median(trials),
-        *std::min_element(trials.begin(), trials.end()),
-        *std::max_element(trials.begin(), trials.end()));
+    std::printf("%-*s %8zu %10zu %8.1f [%g, %g]  (%s)\n", width, results.arms[a].c_str(),
+                results.seeds.size(), values.size(), store::middle(values), values.front(),
+                values.back(), figure.console.c_str());
   }
 }
 
-// Per arm, the median and range over seeds of the protocol's headline figure; the seeds that
-// succeeded beside exp1's failures before the first success.
-void print_headline_summary(const experiments::ExperimentResults& results,
-                            const experiments::ResultsShape& shape) {
-  const bool failures = !shape.headline_of;
+// Per arm, the median and range over seeds of the schema's headline figure; the seeds that
+// succeeded beside the failures before the first success.
+void print_headline_summary(const experiments::ExperimentResults& results) {
+  const bool failures = results.schema.headline.empty();
+  const experiments::Figure& headline =
+      *store::find_figure(results, results.schema.headline_name());
   const int width = arm_width(results);
   std::printf("%-*s %8s %10s %8s %s\n", width, "arm", "seeds", failures ? "succeeded" : "",
               "median", "range");
   for (std::size_t a = 0; a < results.arms.size(); ++a) {
     int succeeded = 0;
-    std::vector<int> figures;
     for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-      const auto& run = results.run(a, s);
-      succeeded += run.succeeded ? 1 : 0;
-      figures.push_back(experiments::headline(shape, run));
+      succeeded += results.run(a, s).succeeded ? 1 : 0;
     }
-    const auto [low, high] = std::minmax_element(figures.begin(), figures.end());
-    const std::string what = failures ? "failures before the first success" : shape.headline;
-    std::printf("%-*s %8zu %10s %8.1f [%d, %d]  (%s)\n", width, results.arms[a].c_str(),
+    const std::vector<double> values =
+        store::ranked(store::seed_values(results, a, headline), headline.missing);
+    const std::string what = failures ? "failures before the first success" : headline.name;
+    std::printf("%-*s %8zu %10s %8.1f [%g, %g]  (%s)\n", width, results.arms[a].c_str(),
                 results.seeds.size(), failures ? std::to_string(succeeded).c_str() : "",
-                store::median(figures), *low, *high, what.c_str());
+                store::middle(values), values.empty() ? NAN : values.front(),
+                values.empty() ? NAN : values.back(), what.c_str());
   }
 }
 
-// The runs' own figures (SeedRun::figures), each summed over the seeds, an arm a column.
+// The figures the schema sums, each over the seeds, an arm a column.
 void print_figures_summary(const experiments::ExperimentResults& results) {
-  if (results.runs.empty() || results.runs.front().figures.empty()) return;
+  std::vector<const experiments::Figure*> summed;
   std::size_t width = 6;
-  for (const auto& figure : results.runs.front().figures) {
+  for (const auto& figure : results.schema.figures) {
+    if (figure.summary != experiments::FigureSummary::kSum) continue;
+    summed.push_back(&figure);
     width = std::max(width, figure.name.size());
   }
+  if (summed.empty()) return;
   std::printf("\n%-*s", static_cast<int>(width), "figure");
   for (const auto& arm : results.arms) std::printf(" %10s", arm.c_str());
   std::printf("  (sums over %zu seeds)\n", results.seeds.size());
-  for (std::size_t f = 0; f < results.runs.front().figures.size(); ++f) {
-    std::printf("%-*s", static_cast<int>(width), results.runs.front().figures[f].name.c_str());
+  for (const experiments::Figure* figure : summed) {
+    std::printf("%-*s", static_cast<int>(width), figure->name.c_str());
     for (std::size_t a = 0; a < results.arms.size(); ++a) {
       double total = 0.0;
-      for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-        const auto& figures = results.run(a, s).figures;
-        total += f < figures.size() ? figures[f].value : 0.0;
-      }
+      for (const auto& value : store::seed_values(results, a, *figure)) total += value.value_or(0);
       std::printf(" %10g", total);
     }
     std::printf("\n");
@@ -150,13 +148,14 @@ void print_figures_summary(const experiments::ExperimentResults& results) {
 }
 
 void print_summary(const experiments::ExperimentResults& results) {
-  const experiments::ResultsShape& shape = experiments::results_shape(results.experiment);
-  if (shape.trial_table) {
-    print_annealing_summary(results);
+  if (results.schema.console == experiments::ConsoleTable::kTrials) {
+    print_trials_summary(results);
     return;
   }
-  print_headline_summary(results, shape);
-  if (shape.skill) print_skill_summary(results);
+  print_headline_summary(results);
+  for (const auto& figure : results.schema.figures) {
+    if (!figure.console.empty()) print_reached(results, figure);
+  }
   print_figures_summary(results);
 }
 
@@ -308,6 +307,7 @@ void execute(const RunOptions& options, PreparedRun& run) {
 std::string way_forward(const store::RunDirectory& directory, const std::exception& error) {
   std::error_code ignored;
   if (!std::filesystem::exists(directory.work(), ignored)) return "";
+  if (dynamic_cast<const store::EarlierTaskRecord*>(&error) != nullptr) return "";
   const std::string work = store::quoted_path(directory.work());
   if (directory.record_failure(describe(error))) {
     return "; the run failed the same way when it was resumed before, so --resume will not "

@@ -71,4 +71,10 @@ Arm named_arm(std::string_view name, const ClosedLoopOptions& loop) {
                               config::join(arms));
 }
 
+std::vector<Arm> named_arms(const std::vector<std::string>& names) {
+  std::vector<Arm> arms;
+  for (const auto& name : names) arms.push_back(named_arm(name));
+  return arms;
+}
+
 }  // namespace cbbg::diagrams

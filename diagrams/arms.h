@@ -46,5 +46,7 @@ std::vector<ArmName> registered_arms();
 // The arm `name`, a preset's or a registered one, in closed loops with `loop`. Throws
 // std::invalid_argument listing the arms for another name.
 Arm named_arm(std::string_view name, const ClosedLoopOptions& loop = {});
+// named_arm of each.
+std::vector<Arm> named_arms(const std::vector<std::string>& names);
 
 }  // namespace cbbg::diagrams

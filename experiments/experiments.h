@@ -17,13 +17,14 @@
 //          omega = 1) carrying on what was learnt, with k1 from the annealing schedule, for
 //          exp2.trials trials
 //
-// Each is registered by name in protocols.h, beside a user's own, written with the pieces of
-// protocol_kit.h.
+// Each is declared in its own file (exp1.cc, exp2.cc, exp3.cc, evaluate.cc, transfer.cc) as a
+// user's protocol is (protocols.h), written with the pieces of protocol_kit.h.
 //
 // Common random numbers: a block's random stream comes from the seed and its path below the
 // closed loop (framework/context.h), so seed k gives every arm of a comparison the same
 // streams where their blocks have the same paths.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,17 +47,33 @@ namespace cbbg::experiments {
 void run_until_success(const config::Parameters& p, const diagrams::Arm& arm,
                        const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                        SeedRun& run);
+// exp3's records the test after each trial as the trial's actor_alone, and the figures
+// trials_to_skill and failures_to_skill.
 void run_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
                      const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                      SeedRun& run);
+
+// exp3's training alone, for a protocol that records its own figures of it (transfer): the
+// test after each trial (none for an arm without an actor), and when the skill came.
+struct SkillTest {
+  std::vector<std::optional<bool>> passed;  // per trial
+  std::optional<int> trials;                // the trial after which the actor alone balanced
+  std::optional<int> failures;              // the failed trials before it
+};
+SkillTest train_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
+                            const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
+                            SeedRun& run);
+
+// exp1's results schema (the default's, with the paper's figures on the paper's robot), which
+// an arm run alone has too.
+ResultsSchema exp1_schema(const config::Parameters& parameters);
 
 // exp1 for each arm, over the parameters' seeds.
 ExperimentResults run_exp1(const config::Parameters& parameters,
                            const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options = {});
 
-// exp3 for each arm, over the parameters' seeds: SeedRun::trials_to_skill and
-// failures_to_skill, and TrialRecord::actor_alone_passed per trial.
+// exp3 for each arm, over the parameters' seeds.
 ExperimentResults run_exp3(const config::Parameters& parameters,
                            const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options = {});

@@ -88,7 +88,7 @@ TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int tri
 }
 
 TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial, double theta0) {
-  return {trial, p.tropism.k1, runner.run_trial(theta0, p.trial.duration, trial), std::nullopt};
+  return {trial, p.tropism.k1, runner.run_trial(theta0, p.trial.duration, trial)};
 }
 
 ExperimentResults run_per_arm(const std::string& experiment, const PerSeed& protocol,

@@ -1,9 +1,10 @@
 #pragma once
 // The protocols `experiment` may name: exp1, exp2, exp3, evaluate, transfer, and any a user
-// registers, each a name, what it measures, the arms it runs and how it runs them. `cbbg run`
-// (and a user's program through apps/cli.h) runs whichever the config names; a protocol of
-// the user's is written with protocol_kit.h and gets the results directory, resume, sweeps
-// and merge.
+// registers, each a name, what it measures, the arms it runs, how it runs them and what its
+// results hold (results_schema.h). `cbbg run` (and a user's program through apps/cli.h) runs
+// whichever the config names; a protocol of the user's is written with protocol_kit.h and gets
+// the results directory, resume, sweeps, merge, the plots and Python, as the built-in ones
+// (builtin_protocols.h) do.
 //
 //   experiments::register_protocol({
 //       .name = "curriculum",
@@ -11,6 +12,11 @@
 //       .run = [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
 //                 const experiments::ExperimentOptions& options) {
 //         return experiments::run_per_arm("curriculum", curriculum_seed, p, arms, options);
+//       },
+//       .schema = [](const config::Parameters&) {
+//         return experiments::ResultsSchema{.figures = {{.name = "warm_up_trials",
+//                                                        .type = ValueType::kInteger,
+//                                                        .paired = true}}};
 //       }});
 
 #include <functional>
@@ -22,28 +28,10 @@
 #include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/arms.h"
 #include "cbbg/experiments/parallel_runs.h"
+#include "cbbg/experiments/results_schema.h"
 #include "cbbg/experiments/seed_run.h"
 
 namespace cbbg::experiments {
-
-// What a protocol's results hold, which the generic writers (results directory, sweep.csv,
-// the console) show: exp1's by default.
-struct ResultsShape {
-  bool evaluates = true;     // evaluation.csv: each run evaluated from evaluation.angles
-  bool paired = true;        // summary.json compares the first arm with each other, seed by seed
-  bool skill = false;        // trials to skill (exp3): trials.csv's actor_alone, its summaries
-  bool oscillation = false;  // trials.csv's pitch_rms, pitch_peak_to_peak, mean_forward_speed
-  bool trial_table = false;  // the console shows each trial (k1, T, E, balanced), not failures
-  // sweep.csv's figure of a run, and its column; empty: failures_before_success.
-  std::string headline = "failures_before_success";
-  std::function<int(const SeedRun&)> headline_of{};
-  // Which of the runs' own figures (SeedRun::figures) summary.json compares seed by seed, the
-  // first arm against each other, when `paired`; none by default.
-  std::function<bool(const std::string& figure)> pairs_figure{};
-  // The paper's failures before the first success per arm (Fig. 11), which summary.json
-  // shows for the arms that ran on the paper's robot (the two-wheeler); none by default.
-  std::vector<std::pair<std::string, int>> paper{};
-};
 
 struct Protocol {
   std::string name{};
@@ -54,7 +42,9 @@ struct Protocol {
   std::function<ExperimentResults(const config::Parameters&, const std::vector<diagrams::Arm>&,
                                   const ExperimentOptions&)>
       run{};
-  ResultsShape results{};
+  // What its results hold (results_schema.h), from the run's parameters (transfer names its
+  // figures after its conditions); none: exp1's, without the paper's figures.
+  std::function<ResultsSchema(const config::Parameters&)> schema{};
   // Before any work, given the weights learning starts from (none: nullptr): a user's mistake
   // in the parameters, as a config::ConfigError; none by default.
   std::function<void(const config::Parameters&, const LearntWeights* initial_weights)> check{};
@@ -71,10 +61,13 @@ const std::vector<Protocol>& protocols();
 // The protocol named `name`, or nullptr (an arm's name: that arm alone under exp1).
 const Protocol* find_protocol(std::string_view name);
 
-// The shape of results named `experiment`: its protocol's, or exp1's (an arm alone).
-const ResultsShape& results_shape(std::string_view experiment);
-// sweep.csv's figure of `run` under `shape`.
-int headline(const ResultsShape& shape, const SeedRun& run);
+// The schema of the results of the experiment `parameters` name: its protocol's, or exp1's (an
+// arm alone). Throws std::invalid_argument when a protocol declares one that cannot be written.
+ResultsSchema results_schema(const config::Parameters& parameters);
+
+// Throws std::runtime_error naming the run when one of `results`' runs records a figure its
+// schema does not declare (it would be lost).
+void check_recorded_figures(const ExperimentResults& results);
 
 // The check of the protocol `parameters` name, if it has one (Protocol::check).
 void check_protocol(const config::Parameters& parameters, const LearntWeights* initial_weights);

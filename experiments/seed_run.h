@@ -7,32 +7,36 @@
 #include <vector>
 
 #include "cbbg/experiments/learnt_weights.h"
+#include "cbbg/experiments/results_schema.h"
 #include "cbbg/experiments/trial_runner.h"
 
 namespace cbbg::experiments {
+
+// A value a protocol records by name: a figure of a seed (SeedRun::figures), or one of a trial's
+// own columns (TrialRecord::values); none when the seed or trial has none (exp3's
+// trials_to_skill where max_trials came first).
+struct NamedValue {
+  std::string name;  // any text but a line break
+  std::optional<double> value{};
+  bool operator==(const NamedValue&) const = default;
+};
+using SeedFigure = NamedValue;
 
 struct TrialRecord {
   int trial = 0;  // from 1
   double k1 = 0.0;
   TrialOutcome outcome;
-  // exp3: whether the learnt actor alone balanced from every exp3.angles after this trial
-  // (unset in the other experiments).
-  std::optional<bool> actor_alone_passed;
+  // The protocol's own columns of this trial (ResultsSchema::trial_columns), by name (exp3's
+  // actor_alone: whether the learnt actor alone balanced after it).
+  std::vector<NamedValue> values{};
+  // The value named `name`, or none.
+  std::optional<double> value(const std::string& name) const;
 };
 
 // The learnt actor alone from one initial pitch (exp1, learning arms).
 struct EvaluationRecord {
   double theta0 = 0.0;
   TrialOutcome outcome;
-};
-
-// A figure a protocol records per seed beyond SeedRun's own fields, by name: a column of
-// figures.csv, summed per arm in summary.json (transfer: the evaluation runs balanced under
-// each of its conditions).
-struct SeedFigure {
-  std::string name;  // any text but a line break
-  double value = 0.0;
-  bool operator==(const SeedFigure&) const = default;
 };
 
 struct SeedRun {
@@ -42,26 +46,25 @@ struct SeedRun {
   // Failed or diverged trials before the first success; all of them if none succeeded.
   int failures_before_success = 0;
   bool succeeded = false;
-  // exp3: the trial after which the learnt actor alone first balanced from every
-  // exp3.angles, and the failed trials before it; unset when max_trials came first.
-  std::optional<int> trials_to_skill;
-  std::optional<int> failures_to_skill;
   // steps.csv rows after their header line (steps_csv_header), every log.decimation-th tick,
   // when no TaskStorage keeps them.
   std::string steps_csv;
-  // exp1: the learnt actor evaluated from each of evaluation.angles (empty for an arm that
-  // learns nothing).
+  // The learnt actor evaluated from each of evaluation.angles (empty for an arm that learns
+  // nothing, and under a protocol that does not evaluate).
   std::vector<EvaluationRecord> evaluation;
   // The weights learnt by the end of the run (none for an arm that learns nothing, nor when
   // they stopped being finite: then weights_diverged).
   std::optional<LearntWeights> weights;
   bool weights_diverged = false;
-  // The protocol's own figures, in its order; every seed of a run has the same names.
+  // The protocol's own figures (ResultsSchema::figures), by name.
   std::vector<SeedFigure> figures;
+  // The figure named `name`, or none.
+  std::optional<double> figure(const std::string& name) const;
 };
 
 struct ExperimentResults {
   std::string experiment;  // exp1, exp2 or the one arm's name
+  ResultsSchema schema;    // what the results hold, the protocol's declaration
   std::vector<std::string> arms;
   // True when `arms` are the arms the protocol compared (exp1, exp3), which config.yaml's
   // `arms` then records, a user's own arms too; exp2's one arm is not the `arms` key's.

@@ -4,6 +4,7 @@
 
 #include "cbbg/config/config.h"
 #include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/builtin_protocols.h"
 #include "cbbg/experiments/evaluation_conditions.h"
 #include "cbbg/experiments/experiments.h"
 #include "cbbg/experiments/protocol_kit.h"
@@ -99,27 +100,74 @@ ExperimentResults run_transfer(const config::Parameters& p, const std::vector<di
                                const ExperimentOptions& options) {
   const std::vector<TransferCondition> conditions = check_transfer(p, arms);
   const bool until_skill = p.transfer.training == config::TransferTraining::kUntilSkill;
-  const PerSeed train = until_skill ? PerSeed(run_until_skill) : PerSeed(run_until_success);
   SharedEvaluations shared;
   const PerSeed per_seed = [&](const config::Parameters& q, const diagrams::Arm& arm,
                                const TelemetryOptions& telemetry,
                                const LearntWeights* initial_weights, SeedRun& run) {
-    train(q, arm, telemetry, initial_weights, run);
+    std::optional<SkillTest> skill;
+    if (until_skill) {
+      skill = train_until_skill(q, arm, telemetry, initial_weights, run);
+    } else {
+      run_until_success(q, arm, telemetry, initial_weights, run);
+    }
     const std::vector<std::vector<EvaluationRecord>> evaluations =
         evaluate_conditions(conditions, arm, run, shared);
     for (std::size_t c = 0; c < conditions.size(); ++c) {
       run.figures.push_back({"balanced@" + conditions[c].name, double(balanced(evaluations[c]))});
       run.figures.push_back({"evaluated@" + conditions[c].name, double(evaluations[c].size())});
     }
-    if (until_skill) {
-      // exp3's own figures, so that one run answers "how fast" beside "how robust": whether
-      // the actor came to balance alone (never, for an arm without one) and the trials it
-      // took (all it ran, up to max_trials, when it never did).
-      run.figures.push_back({"skilled", run.trials_to_skill ? 1.0 : 0.0});
-      run.figures.push_back({"trials_to_skill", double(run.trials.size())});
+    if (skill) {
+      // exp3's own figure, so that one run answers "how fast" beside "how robust": the trial
+      // after which the actor came to balance alone (none, for an arm without one or when
+      // max_trials came first).
+      run.figures.push_back({"skilled", skill->trials ? 1.0 : 0.0});
+      std::optional<double> trials;
+      if (skill->trials) trials = *skill->trials;
+      run.figures.push_back({"trials_to_skill", trials});
     }
   };
   return run_per_arm("transfer", per_seed, p, arms, options);
+}
+
+ResultsSchema transfer_schema(const config::Parameters& p) {
+  ResultsSchema schema{.plots = {"pitch", "failures", "figures"}};
+  for (const std::string& condition : p.transfer.conditions) {
+    schema.figures.push_back({.name = "balanced@" + condition,
+                              .type = ValueType::kInteger,
+                              .meaning = "evaluation runs that balanced under " + condition,
+                              .paired = true});
+    schema.figures.push_back({.name = "evaluated@" + condition,
+                              .type = ValueType::kInteger,
+                              .meaning = "evaluation runs under " + condition});
+  }
+  if (p.transfer.training == config::TransferTraining::kUntilSkill) {
+    schema.figures.push_back({.name = "skilled",
+                              .type = ValueType::kInteger,
+                              .meaning = "1 when the actor alone came to balance, else 0"});
+    schema.figures.push_back({.name = "trials_to_skill",
+                              .type = ValueType::kInteger,
+                              .meaning = "the trial after which the actor alone first balanced",
+                              .summary = FigureSummary::kList,
+                              .statistics = {"", "skill_median", "skill_min", "skill_max"},
+                              .paired = true,
+                              .missing = Missing::kBeyondMaxTrials,
+                              .console = "trials until the actor alone balances; of the seeds "
+                                         "that got there"});
+  }
+  return schema;
+}
+
+Protocol transfer_protocol() {
+  return {
+      .name = "transfer",
+      .meaning =
+          "per arm and seed: one training (transfer.training), then evaluated under "
+          "each of transfer.conditions",
+      .run = [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+                const ExperimentOptions& options) { return run_transfer(p, arms, options); },
+      .schema = transfer_schema,
+      .check = [](const config::Parameters& p,
+                  const LearntWeights*) { check_transfer(p, diagrams::named_arms(p.run.arms)); }};
 }
 
 }  // namespace cbbg::experiments

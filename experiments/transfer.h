@@ -6,7 +6,9 @@
 // evaluation.angles under each of transfer.conditions: a setting of the evaluation, the
 // robot, its sensors or the pushes, which the training never sees. Per condition C the run
 // records two figures (figures.csv's columns): balanced@C, the evaluation runs that balanced,
-// and evaluated@C, those run (none for a learner whose weights diverged).
+// and evaluated@C, those run (none for a learner whose weights diverged). Trained as exp3, it
+// also records skilled and trials_to_skill (none where the skill never came, which a paired
+// comparison counts as max_trials + 1).
 //
 // Since the training does not depend on the evaluation, a condition's figures are those of
 // the training protocol run with that setting: a sweep over evaluation.* keys, which trains

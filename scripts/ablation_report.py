@@ -12,8 +12,8 @@ the first success and the median trials to skill). ablation.md holds, per varian
   - exp1's failures before the first success per seed: median [min, max], the seeds that
     succeeded (a seed that never did counts all its trials, as cbbg counts it);
   - exp3's trials until the actor alone balances per seed: median [min, max], the seeds that
-    got there (a seed that never did counts the trials it ran, max_trials, as
-    teacher_report.py counts it);
+    got there (a seed that never did counts as max_trials + 1, as summary.json's paired
+    comparison and teacher_report.py count it);
   - for every variant but paper, each paired with the paper's learner seed by seed (same
     seed, same arm): the mean difference (variant - paper) with a 95 % bootstrap interval
     (10000 resamples of the seeds, seeded) and the exact two-sided sign test (ties dropped)
@@ -65,14 +65,15 @@ def read_run(folder, run):
 
 
 def skill_of(path, arm, entry, count, max_trials):
-    """exp3's trials to skill per seed (null: never, counted as the max_trials it ran)."""
+    """exp3's trials to skill per seed (null: never, counted as max_trials + 1, as
+    summary.json's paired comparison counts it)."""
     trials = entry.get("trials_to_skill")
     if not isinstance(trials, list) or len(trials) != count or not all(
             t is None or (isinstance(t, int) and not isinstance(t, bool) and t > 0)
             for t in trials):
         raise InputError(path, f'"arms"."{arm}"."trials_to_skill" must be a list of integers '
                                f'> 0 or null, one per seed')
-    return [max_trials if t is None else t for t in trials], sum(t is not None for t in trials)
+    return [max_trials + 1 if t is None else t for t in trials], sum(t is not None for t in trials)
 
 
 def read_variant(folder):
@@ -170,8 +171,8 @@ def report(study):
               "seed and arm: the mean of variant - paper, its 95 % bootstrap interval, and the "
               "exact two-sided sign test (ties dropped) with the seeds where the variant needed "
               "more / fewer / the same. A seed that never succeeded in exp1 counts all its "
-              "trials; one whose actor never balanced alone in exp3 counts the trials it ran "
-              "(max_trials).", "",
+              "trials; one whose actor never balanced alone in exp3 counts as max_trials + 1 "
+              "(as summary.json's paired comparison counts it).", "",
               "## The cerebellum's advantage, per variant: bg_only minus cbbg, seed by seed", ""]
     lines += advantage_table(study)
     return "\n".join(lines) + "\n"

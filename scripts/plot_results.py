@@ -1040,7 +1040,7 @@ def read_sweep(path):
 
 def read_figures(path):
     """figures.csv (a protocol's own per-seed figures): (the figures' names, the rows as
-    dicts of numbers, with their arm and seed)."""
+    dicts of numbers, None where a seed has none, with their arm and seed)."""
     f, reader, column, width = open_csv(path, ["arm", "seed"], optional_file=False)
     names = [name for name in column if name not in ("arm", "seed")]
     rows = []
@@ -1052,7 +1052,8 @@ def read_figures(path):
                     raise InputError(path, f"line {line}: expected {width} fields, got {len(row)}")
                 parsed = {"arm": row[column["arm"]], "seed": row[column["seed"]]}
                 for name in names:
-                    parsed[name] = parse_number(path, line, name, row[column[name]])
+                    text = row[column[name]]
+                    parsed[name] = parse_number(path, line, name, text) if text else None
                 rows.append(parsed)
         except (csv.Error, UnicodeDecodeError) as error:
             raise InputError(path, f"line {reader.line_num}: unreadable ({error})")
@@ -1070,12 +1071,12 @@ def seed_figure_bars(names, rows):
         rate_of = "evaluated@" + name[len("balanced@"):] if name.startswith("balanced@") else None
         labels.append(name[len("balanced@"):] if rate_of in names else name)
         for arm in arms:
-            picked = [row for row in rows if row["arm"] == arm]
+            picked = [row for row in rows if row["arm"] == arm and row[name] is not None]
             total = sum(row[name] for row in picked)
             if rate_of in names:
                 runs = sum(row[rate_of] for row in picked)
                 values[arm].append(total / runs if runs else float("nan"))
-            else:
+            else:  # the mean of the seeds that have one
                 values[arm].append(total / len(picked) if picked else float("nan"))
     return labels, values
 

@@ -44,11 +44,21 @@ MOONSHOT_SPEED = 0.1         # m/s
 
 
 def read_transfer(directory):
+    """(conditions, {arm: rows}) of DIR/transfer/figures.csv; a seed that never came to the
+    skill (no trials_to_skill) counts as max_trials + 1, as summary.json's paired
+    comparison counts it."""
     path = os.path.join(directory, "transfer", "figures.csv")
     names, rows = plot_results.read_figures(path)
     for needed in ("skilled", "trials_to_skill"):
         if needed not in names:
             raise InputError(path, f"has no {needed} column (transfer trained as exp3 has one)")
+    summary_path = os.path.join(directory, "transfer", "summary.json")
+    max_trials = plot_results.read_summary(summary_path).get("max_trials")
+    if not isinstance(max_trials, int):
+        raise InputError(summary_path, 'has no "max_trials"')
+    for row in rows:
+        if row["trials_to_skill"] is None:
+            row["trials_to_skill"] = max_trials + 1
     conditions = [name[len("balanced@"):] for name in names if name.startswith("balanced@")]
     by_arm = {}
     for row in rows:

@@ -1,11 +1,12 @@
 #include "cbbg/store/results_writer.h"
 
 #include "cbbg/config/parameters.h"
-#include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/experiments/paired_statistics.h"
-#include "cbbg/experiments/protocols.h"
+#include "cbbg/framework/number_text.h"
 #include "cbbg/store/fault_point.h"
 #include "cbbg/store/files.h"
+#include "cbbg/store/json_text.h"
+#include "cbbg/store/seed_figures.h"
 #include "cbbg/store/task_store.h"
 #include "cbbg/store/weights_file.h"
 
@@ -26,201 +27,189 @@ using experiments::TrialRecord;
 using experiments::TrialStatus;
 namespace {
 
-std::string number(double value) {
-  if (!std::isfinite(value)) return "nan";
-  char buffer[32];
-  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+using experiments::Figure;
+using experiments::FigureSummary;
+using experiments::Missing;
+using experiments::ResultsSchema;
+using experiments::ValueType;
+
+std::string number(double value) { return std::isfinite(value) ? format_number(value) : "nan"; }
+
+// A value of `type` as a CSV cell: empty when there is none.
+std::string cell(ValueType type, const std::optional<double>& value) {
+  if (!value) return "";
+  if (type == ValueType::kFlag) return *value != 0.0 ? "1" : "0";
+  if (type == ValueType::kInteger && std::isfinite(*value)) {
+    return std::to_string(static_cast<long long>(*value));
+  }
+  return number(*value);
 }
 
-std::string json_number(double value) { return std::isfinite(value) ? number(value) : "null"; }
+// A value of `type` as JSON: null when there is none.
+Json json_value(ValueType type, const std::optional<double>& value) {
+  if (!value) return nullptr;
+  if (type == ValueType::kFlag) return *value != 0.0;
+  if (type == ValueType::kInteger && std::isfinite(*value)) {
+    return static_cast<long long>(*value);
+  }
+  return *value;
+}
+
+// Listed figures per seed, then their statistics (counts, medians, minima, maxima, in turn).
+void add_listed(Json& arm, const ExperimentResults& results, std::size_t a,
+                const std::vector<Figure>& figures) {
+  for (const Figure& figure : figures) {
+    if (figure.summary != FigureSummary::kList) continue;
+    Json list = Json::array();
+    for (const auto& value : seed_values(results, a, figure)) {
+      list.push_back(json_value(figure.type, value));
+    }
+    arm[figure.name] = list;
+  }
+  using Statistic = std::string experiments::FigureStatistics::*;
+  for (const Statistic statistic :
+       {&experiments::FigureStatistics::count, &experiments::FigureStatistics::median,
+        &experiments::FigureStatistics::min, &experiments::FigureStatistics::max}) {
+    for (const Figure& figure : figures) {
+      const std::string& key = figure.statistics.*statistic;
+      if (figure.summary != FigureSummary::kList || key.empty()) continue;
+      const auto values = seed_values(results, a, figure);
+      if (statistic == &experiments::FigureStatistics::count) {
+        arm[key] = std::count_if(values.begin(), values.end(), [&](const auto& value) {
+          return value && (figure.type != ValueType::kFlag || *value != 0.0);
+        });
+        continue;
+      }
+      const std::vector<double> sorted = ranked(values, figure.missing);
+      const double result = sorted.empty()                                     ? NAN
+                            : statistic == &experiments::FigureStatistics::min ? sorted.front()
+                            : statistic == &experiments::FigureStatistics::max ? sorted.back()
+                                                                               : middle(sorted);
+      const bool whole =
+          figure.type != ValueType::kNumber && statistic != &experiments::FigureStatistics::median;
+      arm[key] =
+          whole && std::isfinite(result) ? Json(static_cast<long long>(result)) : Json(result);
+    }
+  }
+}
 
 // The learnt actor alone: per evaluation angle, the seeds whose policy balanced for a whole
-// trial, of the seeds that have a policy ("" when none has: no key).
-std::string evaluation_json(const ExperimentResults& results, std::size_t arm) {
+// trial, of the seeds that have a policy (none when no seed has).
+void add_evaluation(Json& arm, const ExperimentResults& results, std::size_t a) {
   const std::vector<experiments::EvaluationRecord>* angles = nullptr;
   int evaluated = 0;
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-    const auto& evaluation = results.run(arm, s).evaluation;
+    const auto& evaluation = results.run(a, s).evaluation;
     if (evaluation.empty()) continue;
     ++evaluated;
     if (angles == nullptr) angles = &evaluation;
   }
-  if (angles == nullptr) return "";
-  std::string json = ",\n      \"evaluation\": {\"theta0\": [";
+  if (angles == nullptr) return;
+  Json theta0 = Json::array();
+  Json balanced = Json::array();
   for (std::size_t e = 0; e < angles->size(); ++e) {
-    json += (e ? ", " : "") + number((*angles)[e].theta0);
-  }
-  json += "], \"balanced\": [";
-  for (std::size_t e = 0; e < angles->size(); ++e) {
-    int balanced = 0;
+    theta0.push_back((*angles)[e].theta0);
+    int count = 0;
     for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-      const auto& evaluation = results.run(arm, s).evaluation;
-      balanced += e < evaluation.size() && evaluation[e].outcome.status == TrialStatus::kSuccess;
+      const auto& evaluation = results.run(a, s).evaluation;
+      count += e < evaluation.size() && evaluation[e].outcome.status == TrialStatus::kSuccess;
     }
-    json += (e ? ", " : "") + std::to_string(balanced);
+    balanced.push_back(count);
   }
-  return json + "], \"of\": " + std::to_string(evaluated) + "}";
+  arm["evaluation"] = {{"theta0", theta0}, {"balanced", balanced}, {"of", evaluated}};
 }
 
-// Per seed, whether its weights stopped being finite ("" when none did: no key).
-std::string weights_diverged_json(const ExperimentResults& results, std::size_t arm) {
-  std::string flags;
+// Per seed, whether its weights stopped being finite (none when no seed's did).
+void add_weights_diverged(Json& arm, const ExperimentResults& results, std::size_t a) {
+  Json flags = Json::array();
   bool any = false;
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-    const bool diverged = results.run(arm, s).weights_diverged;
+    const bool diverged = results.run(a, s).weights_diverged;
     any = any || diverged;
-    flags += std::string(s ? ", " : "") + (diverged ? "true" : "false");
+    flags.push_back(diverged);
   }
-  return any ? ",\n      \"weights_diverged\": [" + flags + "]" : "";
+  if (any) arm["weights_diverged"] = flags;
 }
 
-// exp3's skill per seed: trials and failures to it, null where max_trials came first;
-// the median and range count a seed that never got there as beyond every other.
-std::string skill_json(const ExperimentResults& results, std::size_t arm) {
-  std::ostringstream trials;
-  std::ostringstream failures;
-  std::vector<double> sorted;
-  int reached = 0;
-  for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-    const SeedRun& run = results.run(arm, s);
-    const char* comma = s ? ", " : "";
-    trials << comma;
-    failures << comma;
-    if (run.trials_to_skill) {
-      trials << *run.trials_to_skill;
-      failures << run.failures_to_skill.value_or(0);
-      ++reached;
-    } else {
-      trials << "null";
-      failures << "null";
-    }
-    sorted.push_back(run.trials_to_skill ? *run.trials_to_skill : INFINITY);
-  }
-  std::sort(sorted.begin(), sorted.end());
-  const std::size_t n = sorted.size();
-  const double middle = n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-  std::ostringstream json;
-  json << ",\n      \"trials_to_skill\": [" << trials.str() << "],\n      \"failures_to_skill\": ["
-       << failures.str() << "],\n      \"num_skilled\": " << reached
-       << ",\n      \"skill_median\": " << json_number(middle)
-       << ",\n      \"skill_min\": " << json_number(sorted.front())
-       << ",\n      \"skill_max\": " << json_number(sorted.back());
-  return json.str();
-}
-
-// A text as a JSON string.
-std::string json_text(const std::string& text) {
-  std::string json = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') json += '\\';
-    json += c;
-  }
-  json += '"';
-  return json;
-}
-
-// The names of the runs' own figures (SeedRun::figures), the first run's order. Throws
-// std::runtime_error when two runs name different figures (their columns would differ).
-std::vector<std::string> figure_names(const ExperimentResults& results) {
-  std::vector<std::string> names;
-  const SeedRun* first = nullptr;
-  for (const SeedRun& run : results.runs) {
-    std::vector<std::string> own;
-    for (const auto& figure : run.figures) own.push_back(figure.name);
-    if (first == nullptr) {
-      first = &run;
-      names = own;
-    } else if (own != names) {
-      throw std::runtime_error("the runs of " + results.experiment + " record different figures (" +
-                               first->arm + " seed " + std::to_string(first->seed) + " and " +
-                               run.arm + " seed " + std::to_string(run.seed) + ")");
-    }
-  }
-  return names;
-}
-
-double figure_of(const SeedRun& run, const std::string& name) {
-  for (const auto& figure : run.figures) {
-    if (figure.name == name) return figure.value;
-  }
-  return NAN;
-}
-
-// Per arm, each of the runs' own figures summed over the seeds ("" when there are none).
-std::string figures_json(const ExperimentResults& results, std::size_t arm) {
-  const std::vector<std::string> names = figure_names(results);
-  if (names.empty()) return "";
-  std::string json = ",\n      \"figures\": {";
-  for (std::size_t f = 0; f < names.size(); ++f) {
+// The summed figures over the seeds that have them (none when the schema sums none).
+void add_sums(Json& arm, const ExperimentResults& results, std::size_t a) {
+  Json sums = Json::object();
+  for (const Figure& figure : results.schema.figures) {
+    if (figure.summary != FigureSummary::kSum) continue;
     double total = 0.0;
-    for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-      total += figure_of(results.run(arm, s), names[f]);
-    }
-    if (f > 0) json += ", ";
-    json += json_text(names[f]);
-    json += ": ";
-    json += json_number(total);
+    for (const auto& value : seed_values(results, a, figure)) total += value.value_or(0.0);
+    sums[figure.name] = total;
   }
-  return json + "}";
+  if (!sums.empty()) arm["figures"] = sums;
 }
 
-// One figure per seed of arm `arm`: exp1's failures before success, exp3's trials to the
-// skill (max_trials + 1 where it was not reached), or one of the runs' own figures.
-std::vector<double> per_seed(const ExperimentResults& results, std::size_t arm,
-                             const std::string& figure, long long max_trials) {
+Json arm_summary(const ExperimentResults& results, std::size_t a) {
+  Json arm = Json::object();
+  add_listed(arm, results, a, run_figures());
+  add_evaluation(arm, results, a);
+  add_weights_diverged(arm, results, a);
+  add_sums(arm, results, a);
+  add_listed(arm, results, a, results.schema.figures);
+  return arm;
+}
+
+// One figure per seed of arm `arm` for a paired comparison: a missing value beyond every
+// count of trials (max_trials + 1), or NaN.
+std::vector<double> paired_values(const ExperimentResults& results, std::size_t arm,
+                                  const Figure& figure, long long max_trials) {
   std::vector<double> values;
-  for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-    const SeedRun& run = results.run(arm, s);
-    if (figure == "trials_to_skill") {
-      values.push_back(static_cast<double>(run.trials_to_skill.value_or(max_trials + 1)));
-    } else if (figure == "failures_before_success") {
-      values.push_back(run.failures_before_success);
-    } else {
-      values.push_back(figure_of(run, figure));
-    }
+  for (const auto& value : seed_values(results, arm, figure)) {
+    const double beyond = figure.missing == Missing::kBeyondMaxTrials
+                              ? static_cast<double>(max_trials + 1)
+                              : static_cast<double>(NAN);
+    values.push_back(value.value_or(beyond));
   }
   return values;
 }
 
-// The first arm against every other, seed by seed (common random numbers).
-std::string paired_json(const ExperimentResults& results, const config::Config& config) {
-  const experiments::ResultsShape& shape = experiments::results_shape(results.experiment);
-  if (results.arms.size() < 2 || !shape.paired) return "";
-  std::vector<std::string> figures{"failures_before_success"};
-  if (shape.skill) figures.push_back("trials_to_skill");
-  for (const std::string& name : figure_names(results)) {
-    if (shape.pairs_figure && shape.pairs_figure(name)) figures.push_back(name);
+// The first arm against every other, seed by seed (common random numbers), on the figures the
+// schema pairs; none for one arm.
+Json paired_summary(const ExperimentResults& results, long long max_trials) {
+  std::vector<Figure> figures;
+  if (results.schema.pairs_failures) figures.push_back(run_figures().front());
+  for (const Figure& figure : results.schema.figures) {
+    if (figure.paired) figures.push_back(figure);
   }
-  const auto max_trials = config::read_parameters(config).run.max_trials;
-  std::ostringstream json;
-  json << "  \"paired\": [";
-  const char* separator = "\n";
+  Json paired = Json::array();
+  if (results.arms.size() < 2) return paired;
   for (std::size_t b = 1; b < results.arms.size(); ++b) {
-    for (const std::string& figure : figures) {
-      const experiments::PairedComparison c = experiments::compare_paired(
-          per_seed(results, 0, figure, max_trials), per_seed(results, b, figure, max_trials));
-      json << separator << "    {\"a\": \"" << results.arms[0] << "\", \"b\": \"" << results.arms[b]
-           << "\", \"figure\": " << json_text(figure) << ", \"mean_b_minus_a\": " << number(c.mean)
-           << ", \"ci95\": [" << number(c.ci_low) << ", " << number(c.ci_high)
-           << "], \"b_greater\": " << c.positive << ", \"b_less\": " << c.negative
-           << ", \"ties\": " << c.ties << ", \"sign_test_p\": " << number(c.sign_test_p) << "}";
-      separator = ",\n";
+    for (const Figure& figure : figures) {
+      const experiments::PairedComparison c =
+          experiments::compare_paired(paired_values(results, 0, figure, max_trials),
+                                      paired_values(results, b, figure, max_trials));
+      paired.push_back({{"a", results.arms[0]},
+                        {"b", results.arms[b]},
+                        {"figure", figure.name},
+                        {"mean_b_minus_a", c.mean},
+                        {"ci95", {c.ci_low, c.ci_high}},
+                        {"b_greater", c.positive},
+                        {"b_less", c.negative},
+                        {"ties", c.ties},
+                        {"sign_test_p", c.sign_test_p}});
     }
   }
-  json << "\n  ],\n";
-  return json.str();
+  return paired;
 }
 
-// The paper's figures of the arms that ran (ResultsShape::paper), on the paper's robot; ""
-// when there are none.
-std::string paper_json(const ExperimentResults& results, const config::Parameters& parameters) {
-  if (!diagrams::same_robot(parameters.plant.kind, "simbody")) return "";
-  std::string json;
-  for (const auto& [arm, failures] : experiments::results_shape(results.experiment).paper) {
-    if (std::find(results.arms.begin(), results.arms.end(), arm) == results.arms.end()) continue;
-    json += (json.empty() ? "" : ", ") + json_text(arm) + ": " + std::to_string(failures);
+Json schema_figure(const Figure& figure) {
+  Json json = {{"name", figure.name},       {"type", experiments::to_string(figure.type)},
+               {"meaning", figure.meaning}, {"summary", experiments::to_string(figure.summary)},
+               {"paired", figure.paired},   {"missing", experiments::to_string(figure.missing)}};
+  Json statistics = Json::object();
+  for (const auto& [name, key] : {std::pair{"count", figure.statistics.count},
+                                  {"median", figure.statistics.median},
+                                  {"min", figure.statistics.min},
+                                  {"max", figure.statistics.max}}) {
+    if (!key.empty()) statistics[name] = key;
   }
-  return json.empty() ? "" : "  \"paper\": {" + json + "},\n";
+  json["statistics"] = statistics;
+  if (!figure.console.empty()) json["console"] = figure.console;
+  return json;
 }
 
 // A task's steps rows start with their header line; a task stored by the previous release,
@@ -296,12 +285,12 @@ double median(std::vector<int> values) {
 }
 
 std::string trials_csv(const ExperimentResults& results) {
-  const experiments::ResultsShape& shape = experiments::results_shape(results.experiment);
-  const bool skill = shape.skill;
-  const bool oscillation = shape.oscillation;
+  const std::vector<experiments::Column>& columns = results.schema.trial_columns;
   std::string csv = "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,final_theta,status";
-  if (skill) csv += ",actor_alone";
-  if (oscillation) csv += ",pitch_rms,pitch_peak_to_peak,mean_forward_speed";
+  for (const auto& column : columns) {
+    csv += ',';
+    csv += column.name;
+  }
   csv += '\n';
   for (const SeedRun& run : results.runs) {
     for (const TrialRecord& record : run.trials) {
@@ -311,16 +300,9 @@ std::string trials_csv(const ExperimentResults& results) {
              std::to_string(outcome.steps) + "," + number(outcome.mean_temperature) + "," +
              number(outcome.mean_entropy) + "," + number(outcome.final_theta) + "," +
              to_string(outcome.status);
-      if (skill) {
+      for (const auto& column : columns) {
         csv += ',';
-        if (record.actor_alone_passed) csv += *record.actor_alone_passed ? '1' : '0';
-      }
-      if (oscillation) {
-        for (const double figure :
-             {outcome.pitch_rms, outcome.pitch_peak_to_peak, outcome.mean_forward_speed}) {
-          csv += ',';
-          csv += number(figure);
-        }
+        csv += cell(column.type, record.value(column.name));
       }
       csv += '\n';
     }
@@ -343,61 +325,78 @@ std::string evaluation_csv(const ExperimentResults& results) {
 }
 
 std::string figures_csv(const ExperimentResults& results) {
-  const std::vector<std::string> names = figure_names(results);
   std::string csv = "arm,seed";
-  for (const std::string& name : names) {
+  for (const Figure& figure : results.schema.figures) {
     csv += ',';
-    csv += csv_field(name);
+    csv += csv_field(figure.name);
   }
   csv += '\n';
   for (const SeedRun& run : results.runs) {
     csv += run.arm + "," + std::to_string(run.seed);
-    for (const auto& figure : run.figures) {
+    for (const Figure& figure : results.schema.figures) {
       csv += ',';
-      csv += number(figure.value);
+      csv += cell(figure.type, run.figure(figure.name));
     }
     csv += '\n';
   }
   return csv;
 }
 
-std::string summary_json(const ExperimentResults& results, const config::Config& config) {
-  const config::Parameters parameters = config::read_parameters(config);
-  std::ostringstream json;
-  json << "{\n  \"experiment\": \"" << results.experiment << "\",\n";
-  json << "  \"plant\": \"" << parameters.plant.kind << "\",\n";
-  json << "  \"max_trials\": " << parameters.run.max_trials << ",\n";
-  json << "  \"seeds\": [";
-  for (std::size_t s = 0; s < results.seeds.size(); ++s)
-    json << (s ? ", " : "") << results.seeds[s];
-  json << "],\n  \"arms\": {";
+std::string summary_json(const ExperimentResults& results, const RunFacts& facts) {
+  Json summary = {{"experiment", results.experiment},
+                  {"plant", facts.plant},
+                  {"max_trials", facts.max_trials},
+                  {"seeds", results.seeds}};
+  Json arms = Json::object();
   for (std::size_t a = 0; a < results.arms.size(); ++a) {
-    std::vector<int> failures;
-    std::string succeeded;
-    int num_succeeded = 0;
-    for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-      const SeedRun& run = results.run(a, s);
-      failures.push_back(run.failures_before_success);
-      succeeded += std::string(s ? ", " : "") + (run.succeeded ? "true" : "false");
-      num_succeeded += run.succeeded ? 1 : 0;
-    }
-    json << (a ? "," : "") << "\n    \"" << results.arms[a] << "\": {\n";
-    json << "      \"failures_before_success\": [";
-    for (std::size_t s = 0; s < failures.size(); ++s) json << (s ? ", " : "") << failures[s];
-    json << "],\n      \"succeeded\": [" << succeeded << "],\n";
-    json << "      \"num_succeeded\": " << num_succeeded << ",\n";
-    json << "      \"median\": " << json_number(median(failures)) << ",\n";
-    json << "      \"min\": " << *std::min_element(failures.begin(), failures.end()) << ",\n";
-    json << "      \"max\": " << *std::max_element(failures.begin(), failures.end());
-    json << evaluation_json(results, a) << weights_diverged_json(results, a)
-         << figures_json(results, a);
-    if (experiments::results_shape(results.experiment).skill) json << skill_json(results, a);
-    json << "\n    }";
+    arms[results.arms[a]] = arm_summary(results, a);
   }
-  json << "\n  },\n" << paired_json(results, config) << paper_json(results, parameters);
-  json << "  \"note\": \"failures_before_success counts failed or diverged trials before the "
-          "first success; a seed that never succeeded counts all its trials\"\n}\n";
-  return json.str();
+  summary["arms"] = arms;
+  if (Json paired = paired_summary(results, facts.max_trials); !paired.empty()) {
+    summary["paired"] = paired;
+  }
+  Json reference = Json::object();
+  for (const auto& [arm, failures] : results.schema.reference) {
+    if (std::find(results.arms.begin(), results.arms.end(), arm) != results.arms.end()) {
+      reference[arm] = failures;
+    }
+  }
+  if (!reference.empty()) summary["paper"] = reference;
+  summary["note"] =
+      "failures_before_success counts failed or diverged trials before the first success; a "
+      "seed that never succeeded counts all its trials";
+  return json_text(summary);
+}
+
+std::string schema_json(const ExperimentResults& results) {
+  const ResultsSchema& schema = results.schema;
+  Json columns = Json::array();
+  for (const auto& column : schema.trial_columns) {
+    columns.push_back({{"name", column.name},
+                       {"type", experiments::to_string(column.type)},
+                       {"meaning", column.meaning}});
+  }
+  Json figures = Json::array();
+  for (const Figure& figure : run_figures()) figures.push_back(schema_figure(figure));
+  for (const Figure& figure : schema.figures) figures.push_back(schema_figure(figure));
+  Json reference = Json::object();
+  for (const auto& [arm, failures] : schema.reference) reference[arm] = failures;
+  return json_text(
+      {{"format", "cbbg-schema 1"},
+       {"experiment", results.experiment},
+       {"trial_columns", columns},
+       {"evaluates", schema.evaluates},
+       {"figures", figures},
+       {"pairs_failures", schema.pairs_failures},
+       {"headline", schema.headline_name()},
+       {"console", schema.console == experiments::ConsoleTable::kTrials ? "trials" : "headline"},
+       {"plots", schema.plots},
+       {"reference", reference}});
+}
+
+RunFacts run_facts(const config::Config& config) {
+  const config::Parameters parameters = config::read_parameters(config);
+  return {parameters.plant.kind, parameters.run.max_trials, parameters.log.decimation};
 }
 
 config::Config recorded_config(const ExperimentResults& results, config::Config config) {
@@ -410,14 +409,16 @@ config::Config recorded_config(const ExperimentResults& results, config::Config 
 
 void write_result_files(const ExperimentResults& results, const config::Config& config,
                         const std::filesystem::path& directory, const TaskStore* store) {
+  const RunFacts facts = run_facts(config);
   write_atomically(directory / "config.yaml", recorded_config(results, config).to_yaml());
-  write_atomically(directory / "summary.json", summary_json(results, config));
+  write_atomically(directory / "schema.json", schema_json(results));
+  write_atomically(directory / "summary.json", summary_json(results, facts));
   fault_point("commit:results");  // a kill here leaves half the files: resume rewrites them
   write_atomically(directory / "trials.csv", trials_csv(results));
-  if (experiments::results_shape(results.experiment).evaluates) {
+  if (results.schema.evaluates) {
     write_atomically(directory / "evaluation.csv", evaluation_csv(results));
   }
-  if (!figure_names(results).empty()) {
+  if (!results.schema.figures.empty()) {
     write_atomically(directory / "figures.csv", figures_csv(results));
   }
   for (const SeedRun& run : results.runs) {
@@ -426,7 +427,7 @@ void write_result_files(const ExperimentResults& results, const config::Config& 
                    *run.weights);
     }
   }
-  if (config::read_parameters(config).log.decimation <= 0) return;
+  if (facts.log_decimation <= 0) return;
   write_steps_csv(results, directory / "steps.csv", store);
 }
 

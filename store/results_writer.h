@@ -1,8 +1,9 @@
 #pragma once
 // Writes the files of a results directory (README "Results directory"): config.yaml,
-// summary.json, trials.csv, evaluation.csv, figures.csv (a protocol's own per-seed figures),
-// steps.csv, weights/. They go into a run's work directory (run_directory.h), which its commit
-// then publishes.
+// schema.json (what the results hold: the protocol's declaration), summary.json, trials.csv,
+// evaluation.csv, figures.csv (the protocol's own per-seed figures), steps.csv, weights/. They
+// go into a run's work directory (run_directory.h), which its commit then publishes. Every file
+// is written from the results' schema (experiments/results_schema.h) alone.
 
 #include <filesystem>
 #include <string>
@@ -32,7 +33,17 @@ std::string csv_field(const std::string& text);
 // The median of per-seed counts (the mean of the middle two for an even count).
 double median(std::vector<int> values);
 
-std::string summary_json(const ExperimentResults& results, const config::Config& config);
+// What summary.json says of the run beside its results.
+struct RunFacts {
+  std::string plant;  // plant.kind
+  long long max_trials = 0;
+  long long log_decimation = 0;  // log.decimation: steps.csv when positive
+};
+RunFacts run_facts(const config::Config& config);
+
+std::string summary_json(const ExperimentResults& results, const RunFacts& facts);
+// The results' schema, with every run's own figures (failures_before_success, succeeded) first.
+std::string schema_json(const ExperimentResults& results);
 std::string trials_csv(const ExperimentResults& results);
 std::string evaluation_csv(const ExperimentResults& results);
 // Per arm and seed, the runs' own figures (SeedRun::figures), a column each.

@@ -35,8 +35,9 @@ std::string work_marker(const std::string& config_hash, const RunShape& shape) {
 
 // What a finished results directory holds that cbbg wrote: these files, and in weights/ and
 // figures/ files of these endings. Anything else there is the user's.
-constexpr const char* kResultFiles[] = {kResultsMarker, "config.yaml",    "summary.json",
-                                        "trials.csv",   "evaluation.csv", "steps.csv"};
+constexpr const char* kResultFiles[] = {kResultsMarker, "config.yaml", "schema.json",
+                                        "summary.json", "trials.csv",  "evaluation.csv",
+                                        "figures.csv",  "steps.csv"};
 constexpr std::pair<const char*, const char*> kResultFolders[] = {{"weights", ".txt"},
                                                                   {"figures", ".png"},
                                                                   {"figures", ".svg"},

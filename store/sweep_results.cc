@@ -1,11 +1,12 @@
 #include "cbbg/store/sweep_results.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
-#include "cbbg/experiments/protocols.h"
 #include "cbbg/framework/number_text.h"
 #include "cbbg/store/results_writer.h"
+#include "cbbg/store/seed_figures.h"
 #include "cbbg/store/sweep_directory.h"
 
 namespace cbbg::store {
@@ -32,19 +33,20 @@ Evaluated evaluated(const experiments::ExperimentResults& point, std::size_t arm
 // The figures of one arm at one grid point, after the point's name and values.
 void append_arm_figures(const experiments::ExperimentResults& point, std::size_t arm,
                         const std::function<void(const std::string&)>& column) {
-  const experiments::ResultsShape& shape = experiments::results_shape(point.experiment);
-  std::vector<int> figures;
+  const experiments::Figure& headline =
+      *find_figure(point, point.schema.headline_name());  // check_schema: it is one
+  const std::vector<double> sorted = ranked(seed_values(point, arm, headline), headline.missing);
   int succeeded = 0;
   for (std::size_t s = 0; s < point.seeds.size(); ++s) {
-    figures.push_back(experiments::headline(shape, point.run(arm, s)));
     succeeded += point.run(arm, s).succeeded ? 1 : 0;
   }
+  const auto text = [](double value) { return std::isfinite(value) ? format_number(value) : ""; };
   column(point.arms[arm]);
   column(std::to_string(point.seeds.size()));
   column(std::to_string(succeeded));
-  column(format_number(median(figures)));
-  column(std::to_string(*std::min_element(figures.begin(), figures.end())));
-  column(std::to_string(*std::max_element(figures.begin(), figures.end())));
+  column(text(middle(sorted)));
+  column(text(sorted.empty() ? NAN : sorted.front()));
+  column(text(sorted.empty() ? NAN : sorted.back()));
   const Evaluated evaluation = evaluated(point, arm);
   column(std::to_string(evaluation.runs));
   column(std::to_string(evaluation.balanced));
@@ -57,7 +59,7 @@ void append_arm_figures(const experiments::ExperimentResults& point, std::size_t
 
 std::string sweep_csv(const config::Sweep& sweep,
                       const std::vector<experiments::ExperimentResults>& results) {
-  const std::string name = experiments::results_shape(results.front().experiment).headline;
+  const std::string name = results.front().schema.headline_name();
   std::string csv = "point";
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on chains of operator+.
   const std::function<void(const std::string&)> column = [&csv](const std::string& text) {

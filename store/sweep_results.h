@@ -1,7 +1,7 @@
 #pragma once
-// sweep.csv: one row per grid point and arm, with the grid's values and the protocol's
-// headline figure over the seeds (experiments::ResultsShape: exp1's failures before the
-// first success, exp2's balanced trials per seed); and the evaluation's balance rate.
+// sweep.csv: one row per grid point and arm, with the grid's values and the headline figure
+// of the protocol's schema over the seeds (failures_before_success unless it names another);
+// and the evaluation's balance rate.
 
 #include <string>
 #include <vector>

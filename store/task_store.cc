@@ -21,7 +21,8 @@ using experiments::TrialRecord;
 using experiments::TrialStatus;
 namespace {
 
-constexpr const char* kRecordFormat = "cbbg-task 1";
+constexpr const char* kRecordFormat = "cbbg-task 2";
+constexpr const char* kEarlierFormat = "cbbg-task 1";
 
 // Where task `task`'s record is kept in `tasks`.
 std::filesystem::path record_file(const std::filesystem::path& tasks, std::size_t task) {
@@ -46,33 +47,43 @@ TrialStatus parse_status(const std::string& text, const std::string& source) {
 }
 
 void write_outcome(std::ostringstream& out, const TrialOutcome& outcome) {
-  out << ' ' << to_string(outcome.status) << ' ' << outcome.steps << ' '
-      << format_number(outcome.mean_temperature) << ' ' << format_number(outcome.mean_entropy)
-      << ' ' << format_number(outcome.final_theta);
+  out << ' ' << to_string(outcome.status) << ' ' << outcome.steps;
+  for (const double figure :
+       {outcome.mean_temperature, outcome.mean_entropy, outcome.final_theta, outcome.pitch_rms,
+        outcome.pitch_peak_to_peak, outcome.mean_forward_speed}) {
+    out << ' ' << format_number(figure);
+  }
+}
+
+// "-" for none: a value a record may lack.
+std::string value_text(const std::optional<double>& value) {
+  return value ? format_number(*value) : "-";
 }
 
 TrialOutcome read_outcome(std::istringstream& in, const std::string& source) {
   std::string status;
-  std::string temperature;
-  std::string entropy;
-  std::string theta;
   TrialOutcome outcome;
-  in >> status >> outcome.steps >> temperature >> entropy >> theta;
-  if (!in) throw std::runtime_error(source + ": truncated trial line");
+  in >> status >> outcome.steps;
   outcome.status = parse_status(status, source);
-  outcome.mean_temperature = parse_double(temperature, source);
-  outcome.mean_entropy = parse_double(entropy, source);
-  outcome.final_theta = parse_double(theta, source);
+  for (double* figure :
+       {&outcome.mean_temperature, &outcome.mean_entropy, &outcome.final_theta, &outcome.pitch_rms,
+        &outcome.pitch_peak_to_peak, &outcome.mean_forward_speed}) {
+    std::string text;
+    in >> text;
+    if (!in) throw std::runtime_error(source + ": truncated trial line");
+    *figure = parse_double(text, source);
+  }
   return outcome;
 }
 
-// "VALUE NAME": the name is the rest of the line, spaces and all.
-experiments::SeedFigure read_figure(std::istringstream& in, const std::string& source) {
+// "VALUE NAME", VALUE "-" for none: the name is the rest of the line, spaces and all.
+experiments::NamedValue read_value(std::istringstream& in, const std::string& source) {
   std::string value;
   in >> value;
   std::string name;
   std::getline(in >> std::ws, name);
-  if (name.empty()) throw std::runtime_error(source + ": a figure without a name");
+  if (name.empty()) throw std::runtime_error(source + ": a value without a name");
+  if (value == "-") return {name, std::nullopt};
   return {name, parse_double(value, source)};
 }
 
@@ -136,17 +147,13 @@ std::string serialize_run(const SeedRun& run) {
       << (run.succeeded ? 1 : 0) << "\nfailures_before_success " << run.failures_before_success
       << "\n";
   if (run.weights_diverged) out << "weights_diverged 1\n";
-  if (run.trials_to_skill) {
-    out << "skill " << *run.trials_to_skill << ' ' << run.failures_to_skill.value_or(0) << "\n";
-  }
   for (const TrialRecord& record : run.trials) {
     out << "trial " << record.trial << ' ' << format_number(record.k1);
     write_outcome(out, record.outcome);
-    out << "\noscillation " << format_number(record.outcome.pitch_rms) << ' '
-        << format_number(record.outcome.pitch_peak_to_peak) << ' '
-        << format_number(record.outcome.mean_forward_speed) << "\n";
-    if (record.actor_alone_passed)
-      out << "actor_alone " << (*record.actor_alone_passed ? 1 : 0) << "\n";
+    out << "\n";
+    for (const experiments::NamedValue& value : record.values) {
+      out << "value " << value_text(value.value) << ' ' << value.name << "\n";
+    }
   }
   for (const EvaluationRecord& record : run.evaluation) {
     out << "evaluation " << format_number(record.theta0);
@@ -154,7 +161,7 @@ std::string serialize_run(const SeedRun& run) {
     out << "\n";
   }
   for (const experiments::SeedFigure& figure : run.figures) {
-    out << "figure " << format_number(figure.value) << ' ' << figure.name << "\n";
+    out << "figure " << value_text(figure.value) << ' ' << figure.name << "\n";
   }
   out << "end\n";
   return out.str();
@@ -163,7 +170,8 @@ std::string serialize_run(const SeedRun& run) {
 SeedRun parse_run(const std::string& text, const std::string& source) {
   std::istringstream lines(text);
   std::string line;
-  if (!std::getline(lines, line) || line != kRecordFormat) {
+  std::getline(lines, line);
+  if (line != kRecordFormat) {
     throw std::runtime_error(source + ": not a " + std::string(kRecordFormat) + " record");
   }
   SeedRun run;
@@ -176,14 +184,10 @@ SeedRun parse_run(const std::string& text, const std::string& source) {
       in >> run.arm;
     } else if (key == "seed") {
       in >> run.seed;
-    } else if (key == "succeeded") {
-      int succeeded = 0;
-      in >> succeeded;
-      run.succeeded = succeeded != 0;
-    } else if (key == "weights_diverged") {
-      int diverged = 0;
-      in >> diverged;
-      run.weights_diverged = diverged != 0;
+    } else if (key == "succeeded" || key == "weights_diverged") {
+      int flag = 0;
+      in >> flag;
+      (key == "succeeded" ? run.succeeded : run.weights_diverged) = flag != 0;
     } else if (key == "failures_before_success") {
       in >> run.failures_before_success;
     } else if (key == "trial") {
@@ -193,27 +197,9 @@ SeedRun parse_run(const std::string& text, const std::string& source) {
       record.k1 = parse_double(k1, source);
       record.outcome = read_outcome(in, source);
       run.trials.push_back(record);
-    } else if (key == "skill") {
-      int trials = 0;
-      int failures = 0;
-      in >> trials >> failures;
-      run.trials_to_skill = trials;
-      run.failures_to_skill = failures;
-    } else if (key == "oscillation") {
-      std::string rms;
-      std::string peak_to_peak;
-      std::string speed;
-      in >> rms >> peak_to_peak >> speed;
-      if (run.trials.empty()) throw std::runtime_error(source + ": oscillation before any trial");
-      TrialOutcome& outcome = run.trials.back().outcome;
-      outcome.pitch_rms = parse_double(rms, source);
-      outcome.pitch_peak_to_peak = parse_double(peak_to_peak, source);
-      outcome.mean_forward_speed = parse_double(speed, source);
-    } else if (key == "actor_alone") {
-      int passed = 0;
-      in >> passed;
-      if (run.trials.empty()) throw std::runtime_error(source + ": actor_alone before any trial");
-      run.trials.back().actor_alone_passed = passed != 0;
+    } else if (key == "value") {
+      if (run.trials.empty()) throw std::runtime_error(source + ": a value before any trial");
+      run.trials.back().values.push_back(read_value(in, source));
     } else if (key == "evaluation") {
       EvaluationRecord record;
       std::string theta0;
@@ -222,7 +208,7 @@ SeedRun parse_run(const std::string& text, const std::string& source) {
       record.outcome = read_outcome(in, source);
       run.evaluation.push_back(record);
     } else if (key == "figure") {
-      run.figures.push_back(read_figure(in, source));
+      run.figures.push_back(read_value(in, source));
     } else if (key == "end") {
       ended = true;
     } else {
@@ -272,8 +258,15 @@ bool TaskStore::has(std::size_t task) const {
 bool TaskStore::load(std::size_t task, SeedRun& run) const {
   const std::filesystem::path path = record_path(task);
   if (!std::filesystem::exists(path)) return false;
+  const std::string text = read_text(path);
+  if (text.starts_with(std::string(kEarlierFormat) + "\n")) {
+    throw EarlierTaskRecord(quoted_path(path) + " is a task record of an earlier cbbg (" +
+                            kEarlierFormat +
+                            "), which this one cannot continue: finish the run with the cbbg "
+                            "that started it, or start it again in a new directory");
+  }
   try {
-    SeedRun loaded = parse_run(read_text(path), path.string());
+    SeedRun loaded = parse_run(text, path.string());
     if (loaded.arm != run.arm || loaded.seed != run.seed) {
       throw std::runtime_error(path.string() + ": holds " + loaded.arm + " seed " +
                                std::to_string(loaded.seed) + ", expected " + run.arm + " seed " +

@@ -6,6 +6,7 @@
 // complete, and so are its rows.
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 #include "cbbg/experiments/parallel_runs.h"
@@ -15,12 +16,21 @@ namespace cbbg::store {
 
 using experiments::SeedRun;
 
+// A task record of an earlier cbbg (an earlier record format), which this one does not read: its
+// run cannot be continued, only started again.
+class EarlierTaskRecord : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 class TaskStore final : public experiments::TaskStorage {
  public:
   // Keeps tasks in `directory`, created if missing.
   explicit TaskStore(std::filesystem::path directory);
 
-  // Fills `run` from a task finished earlier; false when the task has no record.
+  // Fills `run` from a task finished earlier; false when the task has no record. Throws
+  // EarlierTaskRecord for a record of an earlier format, std::runtime_error naming the record
+  // to remove for one that is not a record.
   bool load(std::size_t task, SeedRun& run) const override;
   // Whether the task has a record (finished).
   bool has(std::size_t task) const;

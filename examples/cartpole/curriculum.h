@@ -24,7 +24,8 @@ struct CurriculumParams {
 
 // One seed of one arm: `run` records every trial; failures_before_success counts the
 // failures on the way to the first success from trial.theta0, and the seed's own figure
-// warm_up_trials the trials from the first angle (figures.csv; paired across arms).
+// warm_up_trials the trials from the first angle, which its schema declares (figures.csv,
+// summed in summary.json, compared between arms, drawn by cbbg plot).
 inline void curriculum_seed(const cbbg::config::Parameters& p, const cbbg::diagrams::Arm& arm,
                             const cbbg::experiments::TelemetryOptions& telemetry,
                             const cbbg::experiments::LearntWeights* initial_weights,
@@ -66,8 +67,17 @@ inline void register_curriculum() {
               const cbbg::experiments::ExperimentOptions& options) {
              return cbbg::experiments::run_per_arm("curriculum", curriculum_seed, p, arms, options);
            },
-       .results = {
-           .pairs_figure = [](const std::string& figure) { return figure == "warm_up_trials"; }}});
+       .schema =
+           [](const cbbg::config::Parameters&) {
+             using namespace cbbg::experiments;
+             return ResultsSchema{
+                 .figures = {{.name = "warm_up_trials",
+                              .type = ValueType::kInteger,
+                              .meaning = "trials from curriculum.first_angle until "
+                                         "one succeeded",
+                              .paired = true}},
+                 .plots = {"pitch", "failures", "figures"}};
+           }});
 }
 
 }  // namespace cartpole

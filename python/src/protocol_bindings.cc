@@ -52,6 +52,71 @@ ExperimentOptions options_of(int jobs, const LearntWeights* initial_weights) {
   return options;
 }
 
+// `text` as one of `names` (to_string's words); ValueError naming `what` and the words.
+template <class Enum>
+Enum enum_of(const std::string& text, std::initializer_list<Enum> values, const char* what) {
+  std::string words;
+  for (const Enum value : values) {
+    if (text == experiments::to_string(value)) return value;
+    words += std::string(words.empty() ? "" : ", ") + experiments::to_string(value);
+  }
+  throw py::value_error(std::string(what) + " must be one of " + words + "; got '" + text + "'");
+}
+
+experiments::ValueType value_type(const std::string& text) {
+  using experiments::ValueType;
+  return enum_of(text, {ValueType::kInteger, ValueType::kNumber, ValueType::kFlag}, "type");
+}
+
+void bind_schema(py::module_& m) {
+  using experiments::Figure;
+  using experiments::FigureSummary;
+  using experiments::Missing;
+  py::class_<experiments::Column>(m, "Column", "One of a protocol's own per-trial columns.")
+      .def(py::init([](std::string name, const std::string& type, std::string meaning) {
+             return experiments::Column{std::move(name), value_type(type), std::move(meaning)};
+           }),
+           py::arg("name"), py::arg("type") = "number", py::arg("meaning") = "")
+      .def_readonly("name", &experiments::Column::name)
+      .def_property_readonly("type", [](const experiments::Column& c) { return to_string(c.type); })
+      .def_readonly("meaning", &experiments::Column::meaning);
+  py::class_<Figure>(m, "Figure",
+                     "A figure a protocol records per seed: its type (integer, number, flag), "
+                     "how summary.json shows it (sum, list, none), whether the arms are compared "
+                     "on it, how a seed without one counts (not_counted, beyond_max_trials).")
+      .def(py::init([](std::string name, const std::string& type, std::string meaning,
+                       const std::string& summary, bool paired, const std::string& missing,
+                       std::string console) {
+             return Figure{
+                 .name = std::move(name),
+                 .type = value_type(type),
+                 .meaning = std::move(meaning),
+                 .summary = enum_of(
+                     summary, {FigureSummary::kSum, FigureSummary::kList, FigureSummary::kNone},
+                     "summary"),
+                 .paired = paired,
+                 .missing =
+                     enum_of(missing, {Missing::kNotCounted, Missing::kBeyondMaxTrials}, "missing"),
+                 .console = std::move(console)};
+           }),
+           py::arg("name"), py::arg("type") = "number", py::arg("meaning") = "",
+           py::arg("summary") = "sum", py::arg("paired") = false,
+           py::arg("missing") = "not_counted", py::arg("console") = "")
+      .def_readonly("name", &Figure::name)
+      .def_property_readonly("type", [](const Figure& f) { return to_string(f.type); })
+      .def_readonly("meaning", &Figure::meaning)
+      .def_property_readonly("summary", [](const Figure& f) { return to_string(f.summary); })
+      .def_readonly("paired", &Figure::paired)
+      .def_property_readonly("missing", [](const Figure& f) { return to_string(f.missing); });
+  py::class_<experiments::ResultsSchema>(m, "ResultsSchema", "What a protocol's results hold.")
+      .def_readonly("trial_columns", &experiments::ResultsSchema::trial_columns)
+      .def_readonly("evaluates", &experiments::ResultsSchema::evaluates)
+      .def_readonly("figures", &experiments::ResultsSchema::figures)
+      .def_readonly("pairs_failures", &experiments::ResultsSchema::pairs_failures)
+      .def_property_readonly("headline", &experiments::ResultsSchema::headline_name)
+      .def_readonly("plots", &experiments::ResultsSchema::plots);
+}
+
 void bind_records(py::module_& m) {
   py::class_<experiments::TrialOutcome>(m, "TrialOutcome")
       .def_property_readonly("status",
@@ -73,17 +138,27 @@ void bind_records(py::module_& m) {
       .def_readwrite("trial", &experiments::TrialRecord::trial)
       .def_readwrite("k1", &experiments::TrialRecord::k1)
       .def_readwrite("outcome", &experiments::TrialRecord::outcome)
-      .def_readwrite("actor_alone_passed", &experiments::TrialRecord::actor_alone_passed);
+      .def_readwrite("values", &experiments::TrialRecord::values,
+                     "The protocol's own columns of this trial (exp3's actor_alone), by name.")
+      .def("value", &experiments::TrialRecord::value, py::arg("name"),
+           "The value named `name`, or None.")
+      .def(
+          "set_value",
+          [](experiments::TrialRecord& record, std::string name, std::optional<double> value) {
+            record.values.push_back({std::move(name), value});
+          },
+          py::arg("name"), py::arg("value"),
+          "Records one of the protocol's own columns (ResultsSchema trial_columns).");
   py::class_<experiments::EvaluationRecord>(m, "EvaluationRecord")
       .def_readonly("theta0", &experiments::EvaluationRecord::theta0)
       .def_readonly("outcome", &experiments::EvaluationRecord::outcome);
-  py::class_<experiments::SeedFigure>(m, "SeedFigure")
-      .def(py::init([](std::string name, double value) {
-             return experiments::SeedFigure{std::move(name), value};
+  py::class_<experiments::NamedValue>(m, "SeedFigure", "A value recorded by name; None: none.")
+      .def(py::init([](std::string name, std::optional<double> value) {
+             return experiments::NamedValue{std::move(name), value};
            }),
            py::arg("name"), py::arg("value"))
-      .def_readonly("name", &experiments::SeedFigure::name)
-      .def_readonly("value", &experiments::SeedFigure::value);
+      .def_readonly("name", &experiments::NamedValue::name)
+      .def_readonly("value", &experiments::NamedValue::value);
   py::class_<LearntWeights>(
       m, "LearntWeights",
       "What a learner learnt: the actor's and the critic's parts (the library's: 'weights' "
@@ -113,8 +188,6 @@ void bind_results(py::module_& m) {
       .def_readwrite("trials", &experiments::SeedRun::trials)
       .def_readwrite("failures_before_success", &experiments::SeedRun::failures_before_success)
       .def_readwrite("succeeded", &experiments::SeedRun::succeeded)
-      .def_readonly("trials_to_skill", &experiments::SeedRun::trials_to_skill)
-      .def_readonly("failures_to_skill", &experiments::SeedRun::failures_to_skill)
       .def_readonly("evaluation", &experiments::SeedRun::evaluation)
       .def_readonly("weights", &experiments::SeedRun::weights)
       .def_readonly("weights_diverged", &experiments::SeedRun::weights_diverged)
@@ -123,11 +196,18 @@ void bind_results(py::module_& m) {
            [](experiments::SeedRun& run, experiments::TrialRecord record) {
              run.trials.push_back(std::move(record));
            })
-      .def("add_figure", [](experiments::SeedRun& run, std::string name, double value) {
-        run.figures.push_back({std::move(name), value});
-      });
+      .def("figure", &experiments::SeedRun::figure, py::arg("name"),
+           "The figure named `name` (exp3's trials_to_skill), or None.")
+      .def(
+          "add_figure",
+          [](experiments::SeedRun& run, std::string name, std::optional<double> value) {
+            run.figures.push_back({std::move(name), value});
+          },
+          py::arg("name"), py::arg("value"),
+          "Records a figure of this seed (None: it has none), declared by the protocol.");
   py::class_<ExperimentResults>(m, "ExperimentResults", "Every (arm, seed) run, arm-major.")
       .def_readonly("experiment", &ExperimentResults::experiment)
+      .def_readonly("schema", &ExperimentResults::schema)
       .def_readonly("arms", &ExperimentResults::arms)
       .def_readonly("seeds", &ExperimentResults::seeds)
       .def_readonly("runs", &ExperimentResults::runs)
@@ -250,15 +330,20 @@ void bind_kit(py::module_& m) {
   m.def(
       "register_protocol",
       [](std::string name, std::string meaning, py::object per_seed, bool evaluates, bool paired,
-         std::vector<std::string> paired_figures) {
+         std::vector<experiments::Figure> figures, std::vector<experiments::Column> trial_columns,
+         std::string headline, const std::vector<std::string>& paired_figures) {
         const experiments::PerSeed body = per_seed_from(std::move(per_seed));
-        experiments::ResultsShape shape;
-        shape.evaluates = evaluates;
-        shape.paired = paired;
-        shape.pairs_figure = [paired_figures](const std::string& figure) {
-          return std::find(paired_figures.begin(), paired_figures.end(), figure) !=
-                 paired_figures.end();
-        };
+        experiments::ResultsSchema schema{.trial_columns = std::move(trial_columns),
+                                          .evaluates = evaluates,
+                                          .figures = std::move(figures),
+                                          .pairs_failures = paired,
+                                          .headline = std::move(headline)};
+        for (const std::string& figure : paired_figures) {
+          if (schema.figure(figure) == nullptr) schema.figures.push_back({.name = figure});
+          for (auto& declared : schema.figures) declared.paired |= declared.name == figure;
+        }
+        if (!schema.figures.empty()) schema.plots.push_back("figures");
+        experiments::check_schema(schema, name);
         experiments::register_protocol(
             {.name = name,
              .meaning = std::move(meaning),
@@ -267,14 +352,19 @@ void bind_kit(py::module_& m) {
                               const ExperimentOptions& options) {
                    return experiments::run_per_arm(name, body, p, arms, options);
                  },
-             .results = shape});
+             .schema = [schema](const config::Parameters&) { return schema; }});
       },
       py::arg("name"), py::arg("meaning"), py::arg("per_seed"), py::arg("evaluates") = true,
-      py::arg("paired") = true, py::arg("paired_figures") = std::vector<std::string>{},
+      py::arg("paired") = true, py::arg("figures") = std::vector<experiments::Figure>{},
+      py::arg("trial_columns") = std::vector<experiments::Column>{}, py::arg("headline") = "",
+      py::arg("paired_figures") = std::vector<std::string>{},
       "Adds a protocol `experiment` may name. per_seed(parameters, arm, run, loop) runs one "
       "seed of one arm: loop.trial(parameters, k) runs trials, run.add_trial(record) and "
       "run.add_figure(name, value) record them; the run is then finished as exp1's (weights "
-      "kept, evaluated when `evaluates`).");
+      "kept, evaluated when `evaluates`). Its results: the figures it records (cbbg.Figure, "
+      "or names in paired_figures: summed and compared between arms), its own per-trial "
+      "columns (cbbg.Column, recorded with record.set_value), `paired`: whether the arms' "
+      "failures before the first success are compared, `headline`: sweep.csv's figure.");
   m.def("protocol_names", [] { return names_of(experiments::protocols()); });
 }
 
@@ -293,6 +383,7 @@ void check_no_nul(const std::vector<std::string>& args) {
 }  // namespace
 
 void bind_protocols(py::module_& m) {
+  bind_schema(m);
   bind_records(m);
   bind_results(m);
   bind_runs(m);

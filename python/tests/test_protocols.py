@@ -75,7 +75,10 @@ def test_what_a_per_seed_body_keeps_past_its_call_is_safe():
 def test_exp3_and_exp2_run_and_return_their_records():
     exp3 = cbbg.run_experiment(cbbg.parameters({**QUICK, "experiment": "exp3"}), jobs=2)
     assert exp3.experiment == "exp3" and exp3.arms == ["cbbg", "bg_only"]
-    assert all(run.trials[0].actor_alone_passed is not None for run in exp3.runs)
+    assert all(run.trials[0].value("actor_alone") is not None for run in exp3.runs)
+    assert all(run.figure("trials_to_skill") == len(run.trials) for run in exp3.runs
+               if run.figure("trials_to_skill") is not None)
+    assert [f.name for f in exp3.schema.figures] == ["trials_to_skill", "failures_to_skill"]
     exp2 = cbbg.run_experiment(
         cbbg.parameters({**QUICK, "experiment": "exp2", "exp2.trials": 3}), jobs=2)
     assert [len(run.trials) for run in exp2.runs] == [3, 3]

@@ -272,7 +272,7 @@ TEST_F(OutputDiscipline, ACorruptTaskRecordNamesTheTaskToRedoAndThatWorks) {
       cbbg::store::kFaultExitCode);
   const std::string record = out + ".partial/tasks/1.run";
   ASSERT_TRUE(fs::exists(record));
-  write(record, "cbbg-task 1\narm cbbg\nseed 2\ntrial x\n");
+  write(record, "cbbg-task 2\narm cbbg\nseed 2\ntrial x\n");
   const Outcome failed = run("--log-level warn run --resume " + out);
   EXPECT_EQ(failed.exit_code, 1);
   EXPECT_THAT(failed.output, HasSubstr("remove '" + record + "' to redo that task (cbbg seed 2)"));
@@ -280,6 +280,25 @@ TEST_F(OutputDiscipline, ACorruptTaskRecordNamesTheTaskToRedoAndThatWorks) {
   const Outcome resumed = run("--log-level warn run --resume " + out);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   EXPECT_EQ(tree_of(out), tree_of(whole));
+}
+
+// A run killed under an earlier cbbg, whose task records this one does not read: refused in one
+// line that says what to do, which is not --resume.
+TEST_F(OutputDiscipline, AnEarlierTaskRecordIsRefusedSayingWhatToDo) {
+  const std::string out = path("r");
+  ASSERT_EQ(
+      run(std::string(kQuick) + " --jobs 1 --out " + out, "CBBG_FAULT_AT=task:record@2").exit_code,
+      cbbg::store::kFaultExitCode);
+  const std::string record = out + ".partial/tasks/0.run";
+  ASSERT_TRUE(fs::exists(record));
+  write(record, "cbbg-task 1\narm cbbg\nseed 1\nsucceeded 1\nend\n");
+  const Outcome refused = run("--log-level warn run --resume " + out);
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_EQ(refused.output, "cbbg: error: '" + record +
+                                "' is a task record of an earlier cbbg (cbbg-task 1), which this "
+                                "one cannot continue: finish the run with the cbbg that started "
+                                "it, or start it again in a new directory\n");
+  EXPECT_TRUE(fs::exists(record));  // nothing of the run is touched
 }
 
 TEST_F(OutputDiscipline, AGridValueWithACommentReadsBackEverywhere) {

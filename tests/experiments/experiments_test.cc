@@ -137,18 +137,18 @@ TEST(Experiments, Exp3RunsUntilTheActorAloneBalancesFromEveryAngle) {
   for (std::size_t arm : {0u, 1u}) {
     for (std::size_t seed = 0; seed < 2; ++seed) {
       const SeedRun& run = results.run(arm, seed);
-      ASSERT_TRUE(run.trials_to_skill.has_value()) << run.arm << " seed " << run.seed;
-      EXPECT_EQ(*run.trials_to_skill, static_cast<int>(run.trials.size()));
-      EXPECT_TRUE(run.trials.back().actor_alone_passed.value());
+      ASSERT_TRUE(run.figure("trials_to_skill").has_value()) << run.arm << " seed " << run.seed;
+      EXPECT_EQ(*run.figure("trials_to_skill"), static_cast<double>(run.trials.size()));
+      EXPECT_EQ(run.trials.back().value("actor_alone"), 1.0);
       int failures = 0;
       for (std::size_t t = 0; t < run.trials.size(); ++t) {
-        ASSERT_TRUE(run.trials[t].actor_alone_passed.has_value());
+        ASSERT_TRUE(run.trials[t].value("actor_alone").has_value());
         if (t + 1 < run.trials.size()) {
-          EXPECT_FALSE(*run.trials[t].actor_alone_passed);
+          EXPECT_EQ(*run.trials[t].value("actor_alone"), 0.0);
         }
         failures += run.trials[t].outcome.status == TrialStatus::kSuccess ? 0 : 1;
       }
-      EXPECT_EQ(*run.failures_to_skill, failures);
+      EXPECT_EQ(*run.figure("failures_to_skill"), failures);
       EXPECT_TRUE(run.succeeded);
       EXPECT_LE(run.failures_before_success, failures);
     }
@@ -156,8 +156,8 @@ TEST(Experiments, Exp3RunsUntilTheActorAloneBalancesFromEveryAngle) {
   // The PD supervisor alone learns nothing: it stops at its first success, with no skill.
   const SeedRun& pd = results.run(2, 0);
   EXPECT_EQ(pd.trials.size(), 1u);
-  EXPECT_FALSE(pd.trials_to_skill.has_value());
-  EXPECT_FALSE(pd.trials.front().actor_alone_passed.has_value());
+  EXPECT_FALSE(pd.figure("trials_to_skill").has_value());
+  EXPECT_FALSE(pd.trials.front().value("actor_alone").has_value());
 }
 
 TEST(Experiments, Exp3ReportsASeedThatNeverGetsThereAsSuch) {
@@ -168,14 +168,15 @@ TEST(Experiments, Exp3ReportsASeedThatNeverGetsThereAsSuch) {
   const ExperimentResults results = run_experiment(config::read_parameters(config));
   for (const SeedRun& run : results.runs) {
     EXPECT_EQ(run.trials.size(), 2u);
-    EXPECT_FALSE(run.trials_to_skill.has_value());
-    EXPECT_FALSE(run.failures_to_skill.has_value());
+    EXPECT_FALSE(run.figure("trials_to_skill").has_value());
+    EXPECT_FALSE(run.figure("failures_to_skill").has_value());
   }
   // Its record keeps every test for a resume, and its skill: none.
   const SeedRun back = parse_run(serialize_run(results.runs[0]), "record");
-  EXPECT_EQ(back.trials[1].actor_alone_passed, results.runs[0].trials[1].actor_alone_passed);
-  EXPECT_FALSE(back.trials_to_skill.has_value());
-  EXPECT_THAT(summary_json(results, config),
+  EXPECT_EQ(back.trials[1].value("actor_alone"), results.runs[0].trials[1].value("actor_alone"));
+  EXPECT_FALSE(back.figure("trials_to_skill").has_value());
+  EXPECT_THAT(figures_csv(results), HasSubstr("bg_only,1,,\n"));
+  EXPECT_THAT(summary_json(results, run_facts(config)),
               HasSubstr("\"trials_to_skill\": [null, null],\n      \"failures_to_skill\": "
                         "[null, null],\n      \"num_skilled\": 0,\n      \"skill_median\": "
                         "null"));
@@ -192,7 +193,7 @@ TEST(Experiments, ASeedThatNeverSucceedsCountsAllItsTrials) {
   EXPECT_FALSE(results.runs[0].succeeded);
   EXPECT_EQ(results.runs[0].failures_before_success, 3);
   EXPECT_EQ(results.runs[0].trials.size(), 3u);
-  EXPECT_THAT(summary_json(results, config), HasSubstr("\"succeeded\": [false]"));
+  EXPECT_THAT(summary_json(results, run_facts(config)), HasSubstr("\"succeeded\": [false]"));
 }
 
 TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
@@ -216,7 +217,7 @@ TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
   EXPECT_TRUE(results.runs[0].weights_diverged);
   EXPECT_FALSE(results.runs[0].weights.has_value());
   EXPECT_TRUE(results.runs[0].evaluation.empty());
-  EXPECT_THAT(summary_json(results, config), HasSubstr("\"weights_diverged\": [true]"));
+  EXPECT_THAT(summary_json(results, run_facts(config)), HasSubstr("\"weights_diverged\": [true]"));
 }
 
 TEST(Experiments, ATemperatureTooLargeToAverageEndsTheTrialAsDiverged) {
@@ -360,7 +361,7 @@ TEST(ResultsWriter, TrialsCsvHasOneRowPerTrial) {
   run.seed = 7;
   TrialOutcome failed{TrialStatus::kFailed, 53, 5.5, 2.75, 0.53, ""};
   TrialOutcome diverged{TrialStatus::kDiverged, 10, 1.0, 0.0, std::nan(""), "boom"};
-  run.trials = {{1, 10.0, failed, std::nullopt}, {2, 10.0, diverged, std::nullopt}};
+  run.trials = {{1, 10.0, failed}, {2, 10.0, diverged}};
   results.runs = {run};
   EXPECT_EQ(trials_csv(results),
             "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,final_theta,status\n"

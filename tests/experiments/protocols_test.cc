@@ -112,14 +112,16 @@ TEST(Protocols, EvaluateTestsTheGivenWeightsAsExp1EvaluatesWhatItLearnt) {
                   "learns and none were given"));
 }
 
-// The results directory, sweeps, the console and the checks read a protocol's ResultsShape;
-// only its own files (and the parameters it declares) spell its name.
+// The results directory, sweeps, the console and the checks read a protocol's schema; only its
+// own files (and the parameters it declares) spell its name, and only they and the library's
+// study scripts its figures' names: store/ and apps/ never.
 TEST(Protocols, NoCodeOutsideAProtocolsFilesNamesIt) {
   const std::filesystem::path source = CBBG_SOURCE_DIR;
+  const std::filesystem::path experiments = source / "experiments";
   const std::vector<std::filesystem::path> own{
-      source / "experiments" / "protocols.cc", source / "experiments" / "experiments.cc",
-      source / "experiments" / "transfer.h", source / "experiments" / "transfer.cc",
-      source / "config" / "parameters.h"};
+      experiments / "exp1.cc",       experiments / "exp2.cc",           experiments / "exp3.cc",
+      experiments / "evaluate.cc",   experiments / "transfer.h",        experiments / "transfer.cc",
+      experiments / "experiments.h", source / "config" / "parameters.h"};
   int files = 0;
   for (const char* folder :
        {"apps", "blocks", "config", "diagrams", "experiments", "plant", "replay", "store"}) {
@@ -134,6 +136,13 @@ TEST(Protocols, NoCodeOutsideAProtocolsFilesNamesIt) {
       for (const char* name :
            {"\"exp1\"", "\"exp2\"", "\"exp3\"", "\"evaluate\"", "\"transfer\""}) {
         EXPECT_EQ(text.str().find(name), std::string::npos) << entry.path() << ": " << name;
+      }
+      if (std::string(folder) != "store" && std::string(folder) != "apps") continue;
+      for (const char* figure :
+           {"trials_to_skill", "failures_to_skill", "actor_alone", "skill_", "\"pitch_rms\"",
+            "\"pitch_peak_to_peak\"", "\"mean_forward_speed\"", "balanced_trials", "balanced@",
+            "evaluated@", "\"skilled\""}) {
+        EXPECT_EQ(text.str().find(figure), std::string::npos) << entry.path() << ": " << figure;
       }
     }
   }

@@ -14,15 +14,18 @@
 #include "cbbg/blocks/measured_signals.h"
 #include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/experiments/experiments.h"
+#include "cbbg/experiments/paired_statistics.h"
 #include "cbbg/experiments/protocols.h"
 #include "cbbg/framework/block_context.h"
 #include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/number_text.h"
 #include "cbbg/store/results_writer.h"
 #include "cbbg/store/task_store.h"
 
 namespace cbbg::experiments {
 namespace {
 
+using ::testing::ContainsRegex;
 using ::testing::HasSubstr;
 using ::testing::Not;
 using ::testing::ThrowsMessage;
@@ -70,9 +73,10 @@ TEST(Transfer, AConditionsFiguresAreThoseOfExp3RunWithItsSetting) {
       // The training is exp3's, whatever the evaluation, and so are its figures.
       EXPECT_EQ(run.trials.size(), exp3.runs[task].trials.size());
       EXPECT_EQ(run.figures[4].name, "skilled");
-      EXPECT_EQ(run.figures[4].value, exp3.runs[task].trials_to_skill ? 1.0 : 0.0);
+      const std::optional<double> skill = exp3.runs[task].figure("trials_to_skill");
+      EXPECT_EQ(run.figures[4].value, skill ? 1.0 : 0.0);
       EXPECT_EQ(run.figures[5].name, "trials_to_skill");
-      EXPECT_EQ(run.figures[5].value, double(exp3.runs[task].trials.size()));
+      EXPECT_EQ(run.figures[5].value, skill);
     }
   }
 }
@@ -87,8 +91,8 @@ TEST(Transfer, ItsRecordAndResultsKeepTheFigures) {
                              "evaluated@evaluation.body_mass_scale=1.3,"
                              "balanced@evaluation.noise_std=0.05; evaluation.push_torque=2,"));
   // The supervisor alone copes; it has no actor to come to balance alone.
-  EXPECT_THAT(csv, HasSubstr("\npd_only,1,2,2,2,2,0,1\n"));
-  const std::string summary = store::summary_json(results, config);
+  EXPECT_THAT(csv, HasSubstr("\npd_only,1,2,2,2,2,0,\n"));
+  const std::string summary = store::summary_json(results, store::run_facts(config));
   EXPECT_THAT(summary, HasSubstr("\"figures\": {\"balanced@evaluation.body_mass_scale=1.3\": 4"));
   // Paired over the balanced figures, not over how many ran.
   EXPECT_THAT(summary, HasSubstr("\"figure\": \"balanced@evaluation.body_mass_scale=1.3\""));
@@ -221,9 +225,47 @@ TEST(Transfer, SeedsShareTheEvaluationsThatDrewNoRandomNumber) {
 TEST(Transfer, IsARegisteredProtocolWhoseResultsPairTheBalancedFigures) {
   const Protocol* transfer = find_protocol("transfer");
   ASSERT_NE(transfer, nullptr);
-  ASSERT_TRUE(transfer->results.pairs_figure);
-  EXPECT_TRUE(transfer->results.pairs_figure("balanced@evaluation.noise_std=0.1"));
-  EXPECT_FALSE(transfer->results.pairs_figure("evaluated@evaluation.noise_std=0.1"));
+  config::Config config = small_transfer();
+  config.set("transfer.conditions=[evaluation.noise_std=0.1]");
+  const ResultsSchema schema = transfer->schema(diagrams::validated_parameters(config));
+  ASSERT_NE(schema.figure("balanced@evaluation.noise_std=0.1"), nullptr);
+  EXPECT_TRUE(schema.figure("balanced@evaluation.noise_std=0.1")->paired);
+  EXPECT_FALSE(schema.figure("evaluated@evaluation.noise_std=0.1")->paired);
+  EXPECT_TRUE(schema.figure("trials_to_skill")->paired);
+}
+
+// A seed that never comes to the skill has no trials_to_skill, wherever it is read: an empty
+// cell in figures.csv, null in summary.json's list, none in its task record; the paired
+// comparison and the median count it as beyond max_trials.
+TEST(Transfer, TrialsToSkillIsOneValueWhereverItAppears) {
+  config::Config config = small_transfer();
+  config.set("arms=[cbbg, bg_only]");
+  config.set("max_trials=3");
+  const ExperimentResults results = run_experiment(diagrams::validated_parameters(config));
+  std::vector<std::vector<double>> paired(2);  // per arm, per seed, as the comparison counts
+  const SeedRun* never = nullptr;
+  for (std::size_t arm = 0; arm < 2; ++arm) {
+    for (std::size_t seed = 0; seed < 2; ++seed) {
+      const SeedRun& run = results.run(arm, seed);
+      const std::optional<double> trials = run.figure("trials_to_skill");
+      EXPECT_EQ(run.figure("skilled"), trials ? 1.0 : 0.0);
+      if (!trials) never = &run;
+      paired[arm].push_back(trials.value_or(3 + 1));
+    }
+  }
+  ASSERT_NE(never, nullptr) << "a seed that never comes to the skill in 3 trials";
+  EXPECT_FALSE(store::parse_run(store::serialize_run(*never), "record")
+                   .figure("trials_to_skill")
+                   .has_value());
+  EXPECT_THAT(store::figures_csv(results),
+              HasSubstr("\n" + never->arm + "," + std::to_string(never->seed) + ","));
+  EXPECT_THAT(store::figures_csv(results), HasSubstr(",0,\n"));  // skilled 0, no trials
+  const std::string summary = store::summary_json(results, store::run_facts(config));
+  EXPECT_THAT(summary, HasSubstr("\"trials_to_skill\": ["));  // per seed, null for none
+  EXPECT_THAT(summary, Not(ContainsRegex("\"trials_to_skill\": [0-9]")));  // never summed
+  const PairedComparison comparison = compare_paired(paired[0], paired[1]);
+  EXPECT_THAT(summary, HasSubstr("\"figure\": \"trials_to_skill\", \"mean_b_minus_a\": " +
+                                 format_number(comparison.mean) + ","));
 }
 
 }  // namespace

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "cbbg/config/config.h"
+#include "cbbg/config/parameters.h"
+#include "cbbg/experiments/protocols.h"
 #include "cbbg/experiments/seed_run.h"
 #include "cbbg/store/results_writer.h"
 
@@ -17,11 +19,16 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::Not;
 
-// One seed of each arm, as a protocol named `experiment` would return it.
+// One seed of each arm, as a protocol named `experiment` would return it on `plant_kind`.
 experiments::ExperimentResults results_of(const std::string& experiment,
-                                          const std::vector<std::string>& arms) {
+                                          const std::vector<std::string>& arms,
+                                          const std::string& plant_kind) {
+  config::Config config;
+  config.set("plant.kind=" + plant_kind);
+  config.set("experiment=" + experiment);
   experiments::ExperimentResults results;
   results.experiment = experiment;
+  results.schema = experiments::results_schema(config::read_parameters(config));
   results.arms = arms;
   results.seeds = {1};
   for (const std::string& arm : arms) {
@@ -33,25 +40,21 @@ experiments::ExperimentResults results_of(const std::string& experiment,
   return results;
 }
 
-config::Config on(const std::string& plant_kind) {
-  config::Config config;
-  config.set("plant.kind=" + plant_kind);
-  return config;
-}
+RunFacts on(const std::string& plant_kind) { return {.plant = plant_kind, .max_trials = 100}; }
 
 TEST(SummaryJson, ThePapersFiguresAreThoseOfTheArmsThatRanUnderExp1OnItsRobot) {
-  const auto both = results_of("exp1", {"cbbg", "bg_only"});
+  const auto both = results_of("exp1", {"cbbg", "bg_only"}, "simbody");
   EXPECT_THAT(summary_json(both, on("simbody")),
               HasSubstr("\n  \"paper\": {\"cbbg\": 0, \"bg_only\": 8},\n  \"note\""));
-  EXPECT_THAT(summary_json(both, on("analytic")),
+  EXPECT_THAT(summary_json(results_of("exp1", {"cbbg", "bg_only"}, "analytic"), on("analytic")),
               HasSubstr("\"paper\": {\"cbbg\": 0, \"bg_only\": 8}"));
   // An arm alone is exp1's protocol: its own figure only.
-  EXPECT_THAT(summary_json(results_of("bg_only", {"bg_only"}), on("analytic")),
+  EXPECT_THAT(summary_json(results_of("bg_only", {"bg_only"}, "analytic"), on("analytic")),
               HasSubstr("\"paper\": {\"bg_only\": 8}"));
   // Arms the paper did not run, protocols it has no such figure for: none.
-  EXPECT_THAT(summary_json(results_of("exp1", {"pd_only"}), on("simbody")),
+  EXPECT_THAT(summary_json(results_of("exp1", {"pd_only"}, "simbody"), on("simbody")),
               Not(HasSubstr("\"paper\"")));
-  EXPECT_THAT(summary_json(results_of("exp3", {"cbbg", "bg_only"}), on("simbody")),
+  EXPECT_THAT(summary_json(results_of("exp3", {"cbbg", "bg_only"}, "simbody"), on("simbody")),
               Not(HasSubstr("\"paper\"")));
 }
 

@@ -1,0 +1,95 @@
+#include "cbbg/experiments/results_schema.h"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+namespace cbbg::experiments {
+namespace {
+
+bool is_word(const std::string& text) {
+  return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+  });
+}
+
+const std::vector<std::string>& plot_names() {
+  static const std::vector<std::string> names{"pitch", "failures", "skill", "annealing", "figures"};
+  return names;
+}
+
+}  // namespace
+
+const char* to_string(ValueType type) {
+  switch (type) {
+    case ValueType::kInteger:
+      return "integer";
+    case ValueType::kNumber:
+      return "number";
+    case ValueType::kFlag:
+      return "flag";
+  }
+  return "number";
+}
+
+const char* to_string(FigureSummary summary) {
+  switch (summary) {
+    case FigureSummary::kSum:
+      return "sum";
+    case FigureSummary::kList:
+      return "list";
+    case FigureSummary::kNone:
+      return "none";
+  }
+  return "sum";
+}
+
+const char* to_string(Missing missing) {
+  return missing == Missing::kBeyondMaxTrials ? "beyond_max_trials" : "not_counted";
+}
+
+const Figure* ResultsSchema::figure(const std::string& name) const {
+  for (const Figure& f : figures) {
+    if (f.name == name) return &f;
+  }
+  return nullptr;
+}
+
+std::string ResultsSchema::headline_name() const {
+  return headline.empty() ? "failures_before_success" : headline;
+}
+
+void check_schema(const ResultsSchema& schema, const std::string& protocol) {
+  const std::string where = "protocol '" + protocol + "': ";
+  std::set<std::string> columns;
+  for (const Column& column : schema.trial_columns) {
+    if (!is_word(column.name)) {
+      throw std::invalid_argument(where + "trial column '" + column.name +
+                                  "' is not a word of letters, digits and '_'");
+    }
+    if (!columns.insert(column.name).second) {
+      throw std::invalid_argument(where + "two trial columns named '" + column.name + "'");
+    }
+  }
+  std::set<std::string> figures;
+  for (const Figure& figure : schema.figures) {
+    if (figure.name.empty() || figure.name.find_first_of("\r\n") != std::string::npos) {
+      throw std::invalid_argument(where + "a figure's name must be a line of text");
+    }
+    if (!figures.insert(figure.name).second) {
+      throw std::invalid_argument(where + "two figures named '" + figure.name + "'");
+    }
+  }
+  if (!schema.headline.empty() && schema.figure(schema.headline) == nullptr) {
+    throw std::invalid_argument(where + "the headline '" + schema.headline +
+                                "' is none of its figures");
+  }
+  for (const std::string& plot : schema.plots) {
+    if (std::find(plot_names().begin(), plot_names().end(), plot) == plot_names().end()) {
+      throw std::invalid_argument(where + "no drawing is named '" + plot +
+                                  "' (pitch, failures, skill, annealing, figures)");
+    }
+  }
+}
+
+}  // namespace cbbg::experiments

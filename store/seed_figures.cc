@@ -1,0 +1,71 @@
+#include "cbbg/store/seed_figures.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cbbg::store {
+
+using experiments::Figure;
+using experiments::FigureSummary;
+using experiments::ValueType;
+
+const std::vector<Figure>& run_figures() {
+  static const std::vector<Figure> figures{
+      {.name = "failures_before_success",
+       .type = ValueType::kInteger,
+       .meaning = "failed or diverged trials before the first success; all of them if none "
+                  "succeeded",
+       .summary = FigureSummary::kList,
+       .statistics = {"", "median", "min", "max"}},
+      {.name = "succeeded",
+       .type = ValueType::kFlag,
+       .meaning = "whether a trial succeeded",
+       .summary = FigureSummary::kList,
+       .statistics = {"num_succeeded", "", "", ""}}};
+  return figures;
+}
+
+const Figure* find_figure(const experiments::ExperimentResults& results, const std::string& name) {
+  for (const Figure& figure : run_figures()) {
+    if (figure.name == name) return &figure;
+  }
+  return results.schema.figure(name);
+}
+
+std::vector<std::optional<double>> seed_values(const experiments::ExperimentResults& results,
+                                               std::size_t arm, const Figure& figure) {
+  std::vector<std::optional<double>> values;
+  for (std::size_t s = 0; s < results.seeds.size(); ++s) {
+    const experiments::SeedRun& run = results.run(arm, s);
+    if (figure.name == "failures_before_success") {
+      values.emplace_back(run.failures_before_success);
+    } else if (figure.name == "succeeded") {
+      values.emplace_back(run.succeeded ? 1.0 : 0.0);
+    } else {
+      values.push_back(run.figure(figure.name));
+    }
+  }
+  return values;
+}
+
+std::vector<double> ranked(const std::vector<std::optional<double>>& values,
+                           experiments::Missing missing) {
+  std::vector<double> sorted;
+  for (const auto& value : values) {
+    if (value) {
+      sorted.push_back(*value);
+    } else if (missing == experiments::Missing::kBeyondMaxTrials) {
+      sorted.push_back(INFINITY);
+    }
+  }
+  std::sort(sorted.begin(), sorted.end());
+  return sorted;
+}
+
+double middle(const std::vector<double>& sorted) {
+  const std::size_t n = sorted.size();
+  if (n == 0) return NAN;
+  return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+}
+
+}  // namespace cbbg::store
