@@ -69,6 +69,10 @@ bool write_run_replays(const std::filesystem::path& directory, const config::Par
     return true;
   }
   try {
+    if (replay::read_trial_entries(directory / "trials.csv").empty()) {
+      spdlog::info("no replays: the run ran no trials (its evaluation runs are not logged)");
+      return true;
+    }
     const std::string page = page_template();
     store::Manifest manifest(directory / "figures");
     for (const std::string& arm : run_arms(directory, parameters.run)) {

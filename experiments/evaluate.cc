@@ -54,7 +54,8 @@ Protocol evaluate_protocol() {
                                                   .meaning = "the evaluation runs that balanced",
                                                   .summary = FigureSummary::kNone}},
                                      .pairs_failures = false,
-                                     .headline = "balanced"};
+                                     .headline = "balanced",
+                                     .plots = {"evaluation"}};
               },
           .check =
               [](const config::Parameters& p, const LearntWeights* initial_weights) {

@@ -14,7 +14,8 @@ bool is_word(const std::string& text) {
 }
 
 const std::vector<std::string>& plot_names() {
-  static const std::vector<std::string> names{"pitch", "failures", "skill", "annealing", "figures"};
+  static const std::vector<std::string> names{"pitch",     "failures",   "skill",
+                                              "annealing", "evaluation", "figures"};
   return names;
 }
 
@@ -87,7 +88,7 @@ void check_schema(const ResultsSchema& schema, const std::string& protocol) {
   for (const std::string& plot : schema.plots) {
     if (std::find(plot_names().begin(), plot_names().end(), plot) == plot_names().end()) {
       throw std::invalid_argument(where + "no drawing is named '" + plot +
-                                  "' (pitch, failures, skill, annealing, figures)");
+                                  "' (pitch, failures, skill, annealing, evaluation, figures)");
     }
   }
 }

@@ -82,8 +82,8 @@ struct ResultsSchema {
   // failures_before_success.
   std::string headline{};
   ConsoleTable console = ConsoleTable::kHeadline;
-  // The drawings `cbbg plot` makes of the results (plot_results.py's names: "failures",
-  // "pitch", "skill", "annealing", "figures").
+  // The drawings `cbbg plot` makes of the results (plot_results.py's names: "pitch",
+  // "failures", "skill", "annealing", "evaluation", "figures"); none: nothing to draw.
   std::vector<std::string> plots{"pitch", "failures"};
   // Reference figures per arm (the paper's failures before the first success), which
   // summary.json shows under "paper" for the arms that ran.

@@ -3,22 +3,23 @@
 
 Usage: /usr/bin/python3 scripts/plot_results.py DIR      (what `cbbg plot DIR` runs)
 
-Reads DIR/summary.json, DIR/trials.csv, DIR/config.yaml and, when the run logged ticks,
-DIR/steps.csv. What it draws follows what the results hold, whatever the protocol's name.
-Writes, for exp1 and single-diagram runs:
-  pitch_<arm>.png      theta_b(t) of the first seed's first trial and first successful trial
-  failures.png         failures before the first success, one point per seed, per arm
-and for exp2 (trials.csv with the oscillation columns):
-  temperature_entropy.png   mean temperature and entropy per trial
-  pitch_early_late.png      theta_b(t) of early against late trials of the first seed
-  oscillation.png           the pitch's RMS and peak-to-peak after the transient, and the
-                            mean forward speed, per trial (trials.csv's exp2 columns)
-and for exp3 (summary.json with trials_to_skill), as for exp1 and also:
-  skill.png            per arm, failures and trials to the first success and to the skill
-                       (the actor alone balances from every exp3.angles), one point per seed
-and for a protocol that records figures of its own per seed (figures.csv; transfer):
-  figures.png          each figure per arm: balanced@C / evaluated@C as a rate per
-                       condition C, any other figure as its mean over the seeds
+Reads DIR/schema.json, DIR/summary.json, DIR/trials.csv, DIR/config.yaml and, when the run
+logged ticks, DIR/steps.csv. It draws what the results' schema names in "plots" (a
+protocol's declaration, whatever its name; for results written before schema.json, what
+their files call for):
+  pitch       pitch_<arm>.png: theta_b(t) of the first seed's first trial and first
+              successful trial
+  failures    failures.png: failures before the first success, one point per seed, per arm
+  skill       skill.png: per arm, failures and trials to the first success and to the skill
+              (summary.json's trials_to_skill and failures_to_skill), one point per seed
+  annealing   temperature_entropy.png: mean temperature and entropy per trial;
+              pitch_early_late.png: theta_b(t) of early against late trials of the first
+              seed; oscillation.png: trials.csv's pitch_rms, pitch_peak_to_peak and
+              mean_forward_speed per trial, when it has them
+  evaluation  evaluation.png: per arm and initial angle, the evaluation runs that balanced
+  figures     figures.png: each of figures.csv's figures per arm: balanced@C / evaluated@C
+              as a rate per condition C, any other figure as its mean over the seeds that
+              have one
 and for a sweep (a directory with sweep.csv, written by cbbg merge):
   sweep_<key>.png      the headline figure (median and range over seeds) against each
                        swept key, one line per arm and per value of the other keys, and
@@ -695,10 +696,10 @@ def plot_pitch_early_late(arm, seed, early, late, by_number, pitch, failure_angl
 
 # -------------------------------------------------------------------------- main
 
-def draw_exp1(save, summary, trials, pitch_path, failure_angle, experiment, plant):
-    arms = arms_in_order(summary, trials)
+def draw_pitch(save, summary, trials, pitch_path, failure_angle, plant):
+    """Per arm, the pitch of its first seed's first, failed and last trials."""
     selections = {}
-    for arm in arms:
+    for arm in arms_in_order(summary, trials):
         seed = first_seed(summary, trials, arm)
         if seed is not None:
             selections[arm] = (seed, exp1_pitch_selection(trials_of(trials, arm, seed)))
@@ -708,37 +709,100 @@ def draw_exp1(save, summary, trials, pitch_path, failure_angle, experiment, plan
     pitch = read_pitch(pitch_path, wanted)
     if pitch is None:
         note(f"{pitch_path} absent (tick logging off): pitch figures skipped")
-    else:
-        for arm, (seed, sel) in selections.items():
-            ends = {sel.first.trial, sel.last.trial}
-            missing = sorted(n for n in ends if (arm, seed, n) not in pitch)
-            if len(missing) == len(ends):
-                note(f"{pitch_path} has no rows for arm {arm} seed {seed}: "
-                     f"pitch_{file_name_part(arm)}.png skipped")
-                continue
-            if missing:
-                note(f"{pitch_path} has no rows for arm {arm} seed {seed} trial(s) "
-                     f"{', '.join(map(str, missing))}")
-            save(plot_exp1_pitch(arm, seed, sel, pitch, failure_angle, plant),
-                 f"pitch_{file_name_part(arm)}.png")
+        return
+    for arm, (seed, sel) in selections.items():
+        ends = {sel.first.trial, sel.last.trial}
+        missing = sorted(n for n in ends if (arm, seed, n) not in pitch)
+        if len(missing) == len(ends):
+            note(f"{pitch_path} has no rows for arm {arm} seed {seed}: "
+                 f"pitch_{file_name_part(arm)}.png skipped")
+            continue
+        if missing:
+            note(f"{pitch_path} has no rows for arm {arm} seed {seed} trial(s) "
+                 f"{', '.join(map(str, missing))}")
+        save(plot_exp1_pitch(arm, seed, sel, pitch, failure_angle, plant),
+             f"pitch_{file_name_part(arm)}.png")
+
+
+def draw_failures(save, summary, trials, experiment, plant):
+    """Per arm, the failures before the first success of each seed."""
+    arms = arms_in_order(summary, trials)
     per_arm = {arm: failures_per_seed(summary, trials, arm) for arm in arms}
     medians = {arm: median_failures(summary, arm, per_arm[arm]) for arm in arms}
     save(plot_failures(arms, per_arm, medians, summary.get("paper", {}),
                        summary.get("max_trials"), experiment, plant), "failures.png")
-    if has_skill(summary):
-        save(plot_skill(arms, summary, experiment, plant), "skill.png")
+
+
+DRAWINGS = ("pitch", "failures", "skill", "annealing", "evaluation", "figures")
+
+
+def read_schema(path):
+    """DIR/schema.json (what the protocol's results hold), or None for results written
+    before cbbg wrote one."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            schema = json.load(f)
+    except FileNotFoundError:
+        return None
+    except (OSError, ValueError) as error:
+        raise InputError(path, f"unreadable ({error})")
+    plots = schema.get("plots") if isinstance(schema, dict) else None
+    if not isinstance(plots, list) or not all(isinstance(p, str) for p in plots):
+        raise InputError(path, '"plots" must be a list of drawing names')
+    unknown = [p for p in plots if p not in DRAWINGS]
+    if unknown:
+        raise InputError(path, f"names no drawing '{unknown[0]}' ({', '.join(DRAWINGS)})")
+    return schema
+
+
+def drawings_of(results_dir, summary, trials_path, figures_path):
+    """The drawings the results' schema names; for results without schema.json, those their
+    files call for."""
+    schema = read_schema(os.path.join(results_dir, "schema.json"))
+    if schema is not None:
+        return schema["plots"]
+    if has_oscillation(trials_path):
+        drawings = ["annealing"]
+    else:
+        drawings = ["pitch", "failures"] + (["skill"] if has_skill(summary) else [])
+    return drawings + (["figures"] if os.path.isfile(figures_path) else [])
+
+
+def plot_evaluation(summary, experiment, plant):
+    """Per arm and initial angle, the evaluation runs that balanced (summary.json's
+    "evaluation": the learnt actor alone, or an arm's closed loop as it is)."""
+    fig, ax = new_figure()
+    arms = [arm for arm, entry in summary.get("arms", {}).items()
+            if isinstance(entry, dict) and isinstance(entry.get("evaluation"), dict)]
+    width = 0.8 / max(len(arms), 1)
+    for a, arm in enumerate(arms):
+        evaluation = summary["arms"][arm]["evaluation"]
+        angles, balanced, runs = evaluation["theta0"], evaluation["balanced"], evaluation["of"]
+        rates = [b / runs if runs else float("nan") for b in balanced]
+        ax.bar([i + (a - (len(arms) - 1) / 2) * width for i in range(len(angles))], rates,
+               width, label=f"{arm} (of {runs} seeds)")
+        ax.set_xticks(range(len(angles)), [f"{theta:g}" for theta in angles])
+    ax.set_xlabel("initial pitch theta0 (rad)")
+    ax.set_ylabel("runs that balanced (share of seeds)")
+    ax.set_ylim(0, 1.05)
+    ax.set_title(f"Evaluation per initial angle ({experiment}, {plant} plant)")
+    ax.grid(True, axis="y", alpha=0.3)
+    if arms:
+        ax.legend(loc="best", fontsize="small")
+    fig.tight_layout()
+    return fig
 
 
 def has_skill(summary):
-    """Whether the protocol measured trials to the skill (summary.json's trials_to_skill)."""
+    """Whether summary.json lists trials_to_skill (results without schema.json)."""
     arms = summary.get("arms")
     return isinstance(arms, dict) and any(
         isinstance(arm, dict) and "trials_to_skill" in arm for arm in arms.values())
 
 
 def has_oscillation(trials_path):
-    """Whether trials.csv has the oscillation columns (a protocol with per-trial k1 and the
-    pitch's oscillation, as exp2)."""
+    """Whether trials.csv has the oscillation columns (results without schema.json whose
+    protocol annealed k1 trial by trial)."""
     with open(trials_path, encoding="utf-8") as f:
         return "pitch_rms" in [name.strip() for name in f.readline().split(",")]
 
@@ -1193,7 +1257,12 @@ def run(results_dir):
         raise InputError(results_dir, "not a results directory (missing or not a folder)")
 
     summary = read_summary(summary_path)
-    trials = read_trials(trials_path)
+    figures_path = os.path.join(results_dir, "figures.csv")
+    drawings = drawings_of(results_dir, summary, trials_path, figures_path)
+    if not drawings:
+        note("the results' schema names no drawing: nothing to draw")
+        return None
+    trials = read_trials(trials_path) if set(drawings) - {"evaluation", "figures"} else []
     config = read_config(config_path)
     experiment = summary.get("experiment") or (config or {}).get("experiment")
     if not experiment:
@@ -1202,17 +1271,23 @@ def run(results_dir):
     failure_angle = config_number(config, "trial.failure_angle", config_path)
     stages = annealing_stages(config, config_path)
 
-    figures_path = os.path.join(results_dir, "figures.csv")
-
     def draw(save):
-        if has_oscillation(trials_path):
+        if "annealing" in drawings:
             draw_exp2(save, summary, trials, steps_path, failure_angle, stages, experiment,
                       plant, trials_path)
-        else:
-            draw_exp1(save, summary, trials, steps_path, failure_angle, experiment, plant)
-        if os.path.isfile(figures_path):
+        if "pitch" in drawings:
+            draw_pitch(save, summary, trials, steps_path, failure_angle, plant)
+        if "failures" in drawings:
+            draw_failures(save, summary, trials, experiment, plant)
+        if "skill" in drawings:
+            save(plot_skill(arms_in_order(summary, trials), summary, experiment, plant),
+                 "skill.png")
+        if "evaluation" in drawings:
+            save(plot_evaluation(summary, experiment, plant), "evaluation.png")
+        if "figures" in drawings and os.path.isfile(figures_path):
             names, rows = read_figures(figures_path)
-            save(plot_seed_figures(names, rows, experiment, plant), "figures.png")
+            if names:
+                save(plot_seed_figures(names, rows, experiment, plant), "figures.png")
 
     draw_into(results_dir, draw)
 

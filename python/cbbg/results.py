@@ -2,8 +2,16 @@
 
     results = cbbg.load_results("results/exp1")
     results.summary["arms"]["cbbg"]["median"]
-    results.trials["failed"]                    # a NumPy array per column
+    results.trials["failed"]                    # a NumPy array per column, typed
     results.table("trials", arm="bg_only")      # the rows of one arm
+    results.schema["figures"]                   # what the protocol's results hold
+    results.config["plant.kind"]                # the config the run recorded
+    results.steps(arm="cbbg", seed=1, trial=1)  # steps.csv's rows, read when asked
+
+Columns are typed by the results' schema (schema.json): integers as int64, numbers as float64
+(NaN where a cell is "nan"), flags as bool, text as str; a flag or integer column with empty
+cells (a seed or trial without a value) is float64 with NaN there. Results written before
+schema.json are typed by what their cells hold.
 """
 
 import csv
@@ -12,27 +20,56 @@ import os
 
 import numpy as np
 
+from . import _cbbg
 
-def _column(values):
-    """A CSV column as a NumPy array: numbers where every value is one, else text."""
+# The columns every results file has, beyond the protocol's own (schema.json).
+_TRIAL_COLUMNS = {"arm": "text", "seed": "integer", "trial": "integer", "failed": "flag",
+                  "steps": "integer", "mean_temperature": "number", "mean_entropy": "number",
+                  "final_theta": "number", "status": "text"}
+_EVALUATION_COLUMNS = {"arm": "text", "seed": "integer", "theta0": "number",
+                       "balanced": "flag", "steps": "integer", "final_theta": "number",
+                       "status": "text"}
+_SEED_COLUMNS = {"arm": "text", "seed": "integer"}
+
+
+def _inferred(values):
+    """A column without a declared type: numbers where every value is one, else text."""
     try:
         return np.array([float(v) for v in values])
     except ValueError:
         return np.array(values, dtype=object)
 
 
-def _read_csv(path):
+def _typed(values, kind):
+    """A CSV column of the declared kind (integer, number, flag, text) as a NumPy array."""
+    if kind == "text":
+        return np.array(values, dtype=object)
+    if kind == "number" or any(v == "" for v in values):
+        return np.array([float(v) if v != "" else np.nan for v in values])
+    if kind == "flag":
+        return np.array([v == "1" for v in values], dtype=bool)
+    return np.array([int(v) for v in values], dtype=np.int64)
+
+
+def _read_csv(path, kinds):
+    """{column: array}; `kinds` maps column names to their declared kind."""
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     if not rows:
         return {}
     header, body = rows[0], rows[1:]
-    return {name: _column([row[i] for row in body]) for i, name in enumerate(header)}
+    table = {}
+    for i, name in enumerate(header):
+        values = [row[i] for row in body]
+        kind = kinds.get(name)
+        table[name] = _typed(values, kind) if kind else _inferred(values)
+    return table
 
 
 class Results:
-    """What a finished results directory holds: summary.json as a dict, and each CSV table
-    (trials, evaluation, figures, when there) as {column: NumPy array}."""
+    """What a finished results directory holds: summary.json and schema.json as dicts, the
+    recorded config, and each CSV table (trials, evaluation, figures, when there) as {column:
+    NumPy array}; steps.csv is read when asked (steps())."""
 
     TABLES = ("trials", "evaluation", "figures")
 
@@ -42,19 +79,53 @@ class Results:
             raise ValueError(
                 f"'{self.directory}' is not a finished cbbg results directory (no .cbbg-results)"
             )
-        with open(os.path.join(self.directory, "summary.json")) as f:
-            self.summary = json.load(f)
+        self.summary = self._json("summary.json")
+        self.schema = self._json("schema.json") if self._has("schema.json") else None
+        kinds = self._column_kinds()
         self.tables = {}
         for name in self.TABLES:
-            path = os.path.join(self.directory, f"{name}.csv")
-            if os.path.isfile(path):
-                self.tables[name] = _read_csv(path)
+            if self._has(f"{name}.csv"):
+                self.tables[name] = _read_csv(self._path(f"{name}.csv"), kinds[name])
+
+    @property
+    def config(self):
+        """The config the run recorded (config.yaml) as a cbbg.Config: config["plant.kind"].
+        Read when asked: a key of a section the run registered needs that section registered
+        here too."""
+        config = _cbbg.Config()
+        config.merge_file(self._path("config.yaml"))
+        return config
+
+    def _path(self, name):
+        return os.path.join(self.directory, name)
+
+    def _has(self, name):
+        return os.path.isfile(self._path(name))
+
+    def _json(self, name):
+        with open(self._path(name)) as f:
+            return json.load(f)
+
+    def _column_kinds(self):
+        """Per table, {column: kind} from the schema (nothing declared without one)."""
+        if self.schema is None:
+            return {name: {} for name in self.TABLES}
+        trials = dict(_TRIAL_COLUMNS)
+        trials.update({c["name"]: c["type"] for c in self.schema.get("trial_columns", [])})
+        figures = dict(_SEED_COLUMNS)
+        figures.update({f["name"]: f["type"] for f in self.schema.get("figures", [])})
+        return {"trials": trials, "evaluation": dict(_EVALUATION_COLUMNS), "figures": figures}
 
     def __getattr__(self, name):
         tables = self.__dict__.get("tables", {})
         if name in tables:
             return tables[name]
         raise AttributeError(name)
+
+    def __repr__(self):
+        arms = list(self.summary.get("arms", {}))
+        return (f"Results('{self.directory}': {self.summary.get('experiment')}, arms {arms}, "
+                f"{len(self.summary.get('seeds', []))} seed(s))")
 
     def table(self, name, arm=None):
         """The table `name`, or the rows of one arm."""
@@ -63,6 +134,26 @@ class Results:
             return table
         keep = table["arm"] == arm
         return {column: values[keep] for column, values in table.items()}
+
+    def steps(self, arm=None, seed=None, trial=None):
+        """steps.csv's rows (those of `arm`, `seed` and `trial` where given) as {column:
+        array}: arm as str, seed and trial as int64, every signal as float64. ValueError when
+        the run logged no ticks (log.decimation 0)."""
+        path = self._path("steps.csv")
+        if not os.path.isfile(path):
+            raise ValueError(f"'{self.directory}' has no steps.csv (the run logged no ticks)")
+        wanted = (arm, None if seed is None else str(seed), None if trial is None else str(trial))
+        with open(path, newline="") as f:
+            reader = csv.reader(f)
+            header = next(reader)
+            rows = [row for row in reader
+                    if all(w is None or row[i] == w for i, w in enumerate(wanted))]
+        columns = {}
+        for i, name in enumerate(header):
+            values = [row[i] for row in rows]
+            kind = {"arm": "text", "seed": "integer", "trial": "integer"}.get(name, "number")
+            columns[name] = _typed(values, kind)
+        return columns
 
 
 def load_results(directory):

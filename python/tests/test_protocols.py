@@ -123,6 +123,16 @@ def test_the_command_line_writes_a_results_directory_that_loads_as_arrays(tmp_pa
     assert results.summary["arms"]["bg_only"]["failures_before_success"] == failures[2:]
     bg_only = results.table("trials", arm="bg_only")
     assert bg_only["failed"].sum() == sum(failures[2:])
+    # Typed by the results' schema; the config and the ticks are there too.
+    assert results.trials["seed"].dtype == np.int64 and results.trials["failed"].dtype == bool
+    assert results.trials["final_theta"].dtype == np.float64
+    assert results.evaluation["balanced"].dtype == bool
+    assert results.schema["headline"] == "failures_before_success"
+    assert results.config["plant.kind"] == "analytic"
+    ticks = results.steps(arm="bg_only", seed=2, trial=1)
+    assert set(ticks["arm"]) == {"bg_only"} and set(ticks["trial"]) == {1}
+    assert ticks["t"].dtype == np.float64 and len(ticks["t"]) > 1
+    assert "exp1" in repr(results)
     with pytest.raises(ValueError, match="is not a finished cbbg results directory"):
         cbbg.load_results(tmp_path)
 
@@ -144,13 +154,15 @@ def two_angles(parameters, arm, run, loop):
     """A protocol of the user's: one trial from 0.05 rad, then one from trial.theta0."""
     for number, theta0 in ((1, 0.05), (2, None)):
         record = loop.trial(parameters, number, theta0)
+        record.set_value("from_small_angle", 1.0 if theta0 else 0.0)
         run.add_trial(record)
     run.succeeded = all(t.outcome.balanced for t in run.trials)
     run.add_figure("balanced_trials", sum(t.outcome.balanced for t in run.trials))
 
 
 cbbg.register_protocol("two_angles", "a trial from 0.05 rad, then from trial.theta0", two_angles,
-                       paired_figures=["balanced_trials"])
+                       figures=[cbbg.Figure("balanced_trials", type="integer", paired=True)],
+                       trial_columns=[cbbg.Column("from_small_angle", "flag")])
 
 
 def test_a_protocol_written_in_python_runs_in_memory_and_through_the_command_line(tmp_path):
@@ -167,3 +179,30 @@ def test_a_protocol_written_in_python_runs_in_memory_and_through_the_command_lin
     figures = cbbg.load_results(out).figures
     np.testing.assert_array_equal(figures["balanced_trials"],
                                   [run.figures[0].value for run in results.runs])
+    assert figures["balanced_trials"].dtype == np.int64  # as its schema declares it
+    loaded = cbbg.load_results(out)
+    assert list(loaded.trials["from_small_angle"][:2]) == [True, False]
+    assert [p["figure"] for p in loaded.summary["paired"]] == ["failures_before_success",
+                                                               "balanced_trials"]
+
+
+def test_a_protocol_declares_what_it_records_or_is_told_in_one_line():
+    with pytest.raises(ValueError, match="type must be one of integer, number, flag; got 'int'"):
+        cbbg.Figure("x", type="int")
+    # A figure its schema does not declare would be lost: refused, naming it.
+    cbbg.register_protocol("undeclared", "records a figure it does not declare",
+                           lambda p, arm, run, loop: run.add_figure("surprise", 1.0))
+    with pytest.raises(RuntimeError, match="records the figure 'surprise', which the "
+                                           "protocol's schema does not declare"):
+        cbbg.run_experiment(cbbg.parameters({**QUICK, "experiment": "undeclared", "seeds": 1}))
+
+
+def test_an_exp3_seed_without_the_skill_loads_as_nan_where_it_has_none(tmp_path):
+    out = tmp_path / "exp3"
+    assert cbbg.main(["run", "--experiment", "exp3", "--set", "plant.kind=analytic",
+                      "--set", "arms=[bg_only]", "--seeds", "2", "--set", "max_trials=2",
+                      "--no-figures", "--out", out]) == 0
+    results = cbbg.load_results(out)
+    assert np.isnan(results.figures["trials_to_skill"]).all()  # never in 2 trials
+    assert results.summary["arms"]["bg_only"]["trials_to_skill"] == [None, None]
+    assert results.trials["actor_alone"].dtype == bool  # tested after every trial

@@ -6,6 +6,7 @@ Run them all:  /usr/bin/python3 tests/plot/plot_results_test.py
 """
 
 import importlib.util
+import json
 import os
 import struct
 import subprocess
@@ -131,6 +132,27 @@ class PlotResults(unittest.TestCase):
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assert_figures(results, ["temperature_entropy.png", "pitch_early_late.png",
                                       "oscillation.png"], result.stdout)
+
+    def test_the_schema_names_the_drawings_whatever_the_protocols_name(self):
+        results = os.path.join(self.root, "mine")
+        make_fixtures.make_exp1(results)
+        with open(os.path.join(results, "schema.json"), "w") as f:
+            json.dump({"format": "cbbg-schema 1", "plots": ["failures"]}, f)
+        result = run_script(results)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assert_figures(results, ["failures.png"], result.stdout)
+        self.assertFalse(os.path.exists(os.path.join(results, "figures", "pitch_cbbg.png")))
+
+    def test_a_schema_naming_an_unknown_drawing_exits_2_naming_it(self):
+        results = os.path.join(self.root, "mine")
+        make_fixtures.make_exp1(results)
+        with open(os.path.join(results, "schema.json"), "w") as f:
+            json.dump({"format": "cbbg-schema 1", "plots": ["failures", "radar"]}, f)
+        result = run_script(results)
+        self.assertEqual(result.returncode, 2)
+        self.assertEqual(result.stderr, "plot_results.py: error: "
+                         f"{os.path.join(results, 'schema.json')}: names no drawing 'radar' "
+                         "(pitch, failures, skill, annealing, evaluation, figures)\n")
 
     def test_single_seed_exp2_draws_without_spread(self):
         results = os.path.join(self.root, "exp2")
