@@ -246,7 +246,8 @@ int eval_command(const EvalOptions& options) {
     weights = store::load_weights(options.weights_file);
     parameters = resolve(options, weights);
     policy = policy_of(weights.provenance.arm, loop);
-    store::check_weights(weights, parameters.plant.kind, policy(parameters), options.weights_file);
+    experiments::check_weights(weights, parameters.plant.kind, policy(parameters),
+                               options.weights_file);
     settings.angles = parameters.evaluation.angles;
     settings.repeats = options.repeats;
     if (options.linearise) linear = linearised(parameters, policy, weights);

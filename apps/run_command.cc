@@ -179,7 +179,7 @@ void check_initial_weights(const experiments::LearntWeights& weights,
   for (const std::string& name : experiments::experiment_arms(parameters.run)) {
     const diagrams::ClosedLoop loop = diagrams::named_arm(name).learner(parameters);
     if (loop.learner.learns()) {
-      store::check_weights(weights, parameters.plant.kind, loop, file);
+      experiments::check_weights(weights, parameters.plant.kind, loop, file);
     }
   }
 }

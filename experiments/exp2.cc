@@ -99,6 +99,7 @@ ExperimentResults run_exp2(const config::Parameters& parameters, const diagrams:
   };
   ExperimentResults results = run_tasks(parameters, {coordinated.name}, body, options);
   results.experiment = "exp2";
+  results.steps_header = steps_csv_header(coordinated.learner(parameters).signals);
   return results;
 }
 

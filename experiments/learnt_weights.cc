@@ -11,10 +11,6 @@ namespace cbbg::experiments {
 
 namespace {
 
-bool same_values(const Vector& a, const Vector& b) {
-  return a.size() == b.size() && (a.size() == 0 || (a.array() == b.array()).all());
-}
-
 // "weights (49), trace (49)": a learner's parts in messages.
 template <typename Parts, typename Size>
 std::string parts_text(const Parts& parts, Size size) {
@@ -53,59 +49,6 @@ std::string parts_difference(const LearntState& state, const blocks::Learner& le
 }
 
 }  // namespace
-
-const Vector* LearntState::find(std::string_view name) const {
-  for (const LearntPart& part : parts) {
-    if (part.name == name) return &part.values;
-  }
-  return nullptr;
-}
-
-LearntState LearntState::of_weights(Vector weights) {
-  return LearntState{{{"weights", std::move(weights)}}};
-}
-
-Vector& LearntState::weights(const char* role) {
-  return const_cast<Vector&>(std::as_const(*this).weights(role));
-}
-
-const Vector& LearntState::weights(const char* role) const {
-  if (const Vector* found = find("weights")) return *found;
-  throw std::invalid_argument(
-      std::string("the ") + role + " learnt no part 'weights'; it learnt " +
-      parts_text(parts, [](const LearntPart& p) { return p.values.size(); }));
-}
-
-bool LearntState::is_weights_only(int features) const {
-  return parts.size() == 1 && parts[0].name == "weights" && parts[0].values.size() == features;
-}
-
-bool LearntState::all_finite() const {
-  for (const LearntPart& part : parts) {
-    if (!part.values.allFinite()) return false;
-  }
-  return true;
-}
-
-bool LearntState::operator==(const LearntState& other) const {
-  if (parts.size() != other.parts.size()) return false;
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    if (parts[k].name != other.parts[k].name ||
-        !same_values(parts[k].values, other.parts[k].values)) {
-      return false;
-    }
-  }
-  return true;
-}
-
-const LearntState& LearntWeights::of(blocks::Learner::Role role) const {
-  return role == blocks::Learner::Role::kCritic ? critic : actor;
-}
-
-bool LearntWeights::operator==(const LearntWeights& other) const {
-  return layout == other.layout && features == other.features && actor == other.actor &&
-         critic == other.critic && provenance == other.provenance;
-}
 
 LearntWeights learnt_weights(const diagrams::ClosedLoop& loop, const Context& context,
                              const WeightsProvenance& provenance) {
@@ -173,6 +116,24 @@ void load_learnt_weights(const diagrams::ClosedLoop& loop, Context& context,
       learner->mutable_learnt(context, parts[k]) = state.parts[k].values;
     }
   }
+}
+
+namespace {
+
+std::string file_name(const std::filesystem::path& path) {
+  return "weights file '" + path.string() + "'";
+}
+
+}  // namespace
+
+void check_weights(const LearntWeights& weights, const std::string& plant_kind,
+                   const diagrams::ClosedLoop& loop, const std::filesystem::path& source) {
+  check_weights_fit(weights, plant_kind, loop, file_name(source));
+}
+
+void check_layout(const LearntWeights& weights, const blocks::FeatureLayout& layout,
+                  const std::filesystem::path& source) {
+  check_layout_fit(weights, layout, file_name(source));
 }
 
 }  // namespace cbbg::experiments

@@ -10,20 +10,11 @@
 
 #include "cbbg/config/parameters.h"
 #include "cbbg/experiments/seed_run.h"
+#include "cbbg/results/task_storage.h"
 
 namespace cbbg::experiments {
 
-// Where finished tasks are kept between runs (store::TaskStore keeps them on disk).
-class TaskStorage {
- public:
-  virtual ~TaskStorage() = default;
-  // Fills `run` from a task finished earlier; false when the task has no record.
-  virtual bool load(std::size_t task, SeedRun& run) const = 0;
-  // Where the task's steps.csv rows go while it runs.
-  virtual std::filesystem::path pending_steps_path(std::size_t task) const = 0;
-  // Keeps the finished task (its record and its rows).
-  virtual void save(std::size_t task, const SeedRun& run) const = 0;
-};
+using results::TaskStorage;
 
 // Called after each finished (arm, seed), from the worker thread that ran it.
 using ProgressCallback = std::function<void(const SeedRun&)>;

@@ -133,6 +133,7 @@ ExperimentResults run_per_arm(const std::string& experiment, const PerSeed& prot
   ExperimentResults results = run_tasks(p, names_of(arms), body, options);
   results.experiment = experiment;
   results.compares_arms = true;
+  if (!arms.empty()) results.steps_header = steps_csv_header(arms.front().learner(p).signals);
   return results;
 }
 

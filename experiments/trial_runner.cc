@@ -46,18 +46,6 @@ void write_number(std::ostream& out, double value) {
 
 }  // namespace
 
-const char* to_string(TrialStatus status) {
-  switch (status) {
-    case TrialStatus::kSuccess:
-      return "success";
-    case TrialStatus::kFailed:
-      return "failed";
-    case TrialStatus::kDiverged:
-      return "diverged";
-  }
-  return "unknown";
-}
-
 std::string steps_csv_header(const plant::SignalIndex& signals) {
   std::string header = "arm,seed,trial,t";
   for (const StepsColumn& column : steps_columns(signals)) header += std::string(",") + column.name;

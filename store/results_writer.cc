@@ -1,8 +1,8 @@
 #include "cbbg/store/results_writer.h"
 
 #include "cbbg/config/parameters.h"
-#include "cbbg/experiments/paired_statistics.h"
 #include "cbbg/framework/number_text.h"
+#include "cbbg/results/paired_statistics.h"
 #include "cbbg/store/fault_point.h"
 #include "cbbg/store/files.h"
 #include "cbbg/store/json_text.h"
@@ -18,20 +18,19 @@
 
 namespace cbbg::store {
 
-using experiments::EvaluationRecord;
-using experiments::SeedRun;
-using experiments::steps_csv_header;
-using experiments::to_string;
-using experiments::TrialOutcome;
-using experiments::TrialRecord;
-using experiments::TrialStatus;
+using results::EvaluationRecord;
+using results::SeedRun;
+using results::to_string;
+using results::TrialOutcome;
+using results::TrialRecord;
+using results::TrialStatus;
 namespace {
 
-using experiments::Figure;
-using experiments::FigureSummary;
-using experiments::Missing;
-using experiments::ResultsSchema;
-using experiments::ValueType;
+using results::Figure;
+using results::FigureSummary;
+using results::Missing;
+using results::ResultsSchema;
+using results::ValueType;
 
 std::string number(double value) { return std::isfinite(value) ? format_number(value) : "nan"; }
 
@@ -66,27 +65,27 @@ void add_listed(Json& arm, const ExperimentResults& results, std::size_t a,
     }
     arm[figure.name] = list;
   }
-  using Statistic = std::string experiments::FigureStatistics::*;
+  using Statistic = std::string results::FigureStatistics::*;
   for (const Statistic statistic :
-       {&experiments::FigureStatistics::count, &experiments::FigureStatistics::median,
-        &experiments::FigureStatistics::min, &experiments::FigureStatistics::max}) {
+       {&results::FigureStatistics::count, &results::FigureStatistics::median,
+        &results::FigureStatistics::min, &results::FigureStatistics::max}) {
     for (const Figure& figure : figures) {
       const std::string& key = figure.statistics.*statistic;
       if (figure.summary != FigureSummary::kList || key.empty()) continue;
       const auto values = seed_values(results, a, figure);
-      if (statistic == &experiments::FigureStatistics::count) {
+      if (statistic == &results::FigureStatistics::count) {
         arm[key] = std::count_if(values.begin(), values.end(), [&](const auto& value) {
           return value && (figure.type != ValueType::kFlag || *value != 0.0);
         });
         continue;
       }
       const std::vector<double> sorted = ranked(values, figure.missing);
-      const double result = sorted.empty()                                     ? NAN
-                            : statistic == &experiments::FigureStatistics::min ? sorted.front()
-                            : statistic == &experiments::FigureStatistics::max ? sorted.back()
-                                                                               : middle(sorted);
+      const double result = sorted.empty()                                 ? NAN
+                            : statistic == &results::FigureStatistics::min ? sorted.front()
+                            : statistic == &results::FigureStatistics::max ? sorted.back()
+                                                                           : middle(sorted);
       const bool whole =
-          figure.type != ValueType::kNumber && statistic != &experiments::FigureStatistics::median;
+          figure.type != ValueType::kNumber && statistic != &results::FigureStatistics::median;
       arm[key] =
           whole && std::isfinite(result) ? Json(static_cast<long long>(result)) : Json(result);
     }
@@ -96,7 +95,7 @@ void add_listed(Json& arm, const ExperimentResults& results, std::size_t a,
 // The learnt actor alone: per evaluation angle, the seeds whose policy balanced for a whole
 // trial, of the seeds that have a policy (none when no seed has).
 void add_evaluation(Json& arm, const ExperimentResults& results, std::size_t a) {
-  const std::vector<experiments::EvaluationRecord>* angles = nullptr;
+  const std::vector<results::EvaluationRecord>* angles = nullptr;
   int evaluated = 0;
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
     const auto& evaluation = results.run(a, s).evaluation;
@@ -179,9 +178,9 @@ Json paired_summary(const ExperimentResults& results, long long max_trials) {
   if (results.arms.size() < 2) return paired;
   for (std::size_t b = 1; b < results.arms.size(); ++b) {
     for (const Figure& figure : figures) {
-      const experiments::PairedComparison c =
-          experiments::compare_paired(paired_values(results, 0, figure, max_trials),
-                                      paired_values(results, b, figure, max_trials));
+      const results::PairedComparison c =
+          results::compare_paired(paired_values(results, 0, figure, max_trials),
+                                  paired_values(results, b, figure, max_trials));
       paired.push_back({{"a", results.arms[0]},
                         {"b", results.arms[b]},
                         {"figure", figure.name},
@@ -197,9 +196,9 @@ Json paired_summary(const ExperimentResults& results, long long max_trials) {
 }
 
 Json schema_figure(const Figure& figure) {
-  Json json = {{"name", figure.name},       {"type", experiments::to_string(figure.type)},
-               {"meaning", figure.meaning}, {"summary", experiments::to_string(figure.summary)},
-               {"paired", figure.paired},   {"missing", experiments::to_string(figure.missing)}};
+  Json json = {{"name", figure.name},       {"type", results::to_string(figure.type)},
+               {"meaning", figure.meaning}, {"summary", results::to_string(figure.summary)},
+               {"paired", figure.paired},   {"missing", results::to_string(figure.missing)}};
   Json statistics = Json::object();
   for (const auto& [name, key] : {std::pair{"count", figure.statistics.count},
                                   {"median", figure.statistics.median},
@@ -212,8 +211,8 @@ Json schema_figure(const Figure& figure) {
   return json;
 }
 
-// A task's steps rows start with their header line; a task stored by the previous release,
-// without one, has the two-wheeler's. The first line of task `task`'s rows, "" without rows.
+// A task's steps rows start with their header line. The first line of task `task`'s rows, ""
+// without rows.
 std::string first_steps_line(const SeedRun& run, const TaskStore* store, std::size_t task) {
   if (store == nullptr) return run.steps_csv.substr(0, run.steps_csv.find('\n'));
   std::ifstream rows(store->steps_path(task), std::ios::binary);
@@ -223,43 +222,35 @@ std::string first_steps_line(const SeedRun& run, const TaskStore* store, std::si
   return line;
 }
 
-bool is_steps_header(const std::string& line) { return line.starts_with("arm,seed,trial,t,"); }
-
-// The header line the rows after `first_line` have, "" for no rows.
-std::string steps_header_of(const std::string& first_line) {
-  if (first_line.empty()) return "";
-  return is_steps_header(first_line) ? first_line + "\n" : steps_csv_header();
-}
-
-// steps.csv: one header, then every task's rows in task order. Throws std::runtime_error
-// when two tasks' plants give different signals (their rows would not share columns).
+// steps.csv: one header, then every task's rows in task order (the header alone when no task
+// logged a row). Throws std::runtime_error when two tasks' plants give different signals
+// (their rows would not share columns).
 void write_steps_csv(const ExperimentResults& results, const std::filesystem::path& path,
                      const TaskStore* store) {
-  std::vector<bool> has_header(results.runs.size());
   std::string header;
   for (std::size_t task = 0; task < results.runs.size(); ++task) {
     const std::string first = first_steps_line(results.runs[task], store, task);
-    has_header[task] = is_steps_header(first);
-    const std::string own = steps_header_of(first);
-    if (header.empty()) header = own;
-    if (!own.empty() && own != header) {
-      throw std::runtime_error(
-          "cannot write '" + path.string() + "': the arms' plants give different signals (" +
-          header.substr(0, header.size() - 1) + " against " + own.substr(0, own.size() - 1) + ")");
+    if (first.empty()) continue;
+    if (header.empty()) header = first;
+    if (first != header) {
+      throw std::runtime_error("cannot write '" + path.string() +
+                               "': the arms' plants give different signals (" + header +
+                               " against " + first + ")");
     }
   }
+  if (header.empty()) header = results.steps_header.substr(0, results.steps_header.find('\n'));
   write_atomically(path, [&](std::ostream& steps) {
-    steps << (header.empty() ? steps_csv_header() : header);
+    steps << header << '\n';
     for (std::size_t task = 0; task < results.runs.size(); ++task) {
       if (store == nullptr) {
         const std::string& text = results.runs[task].steps_csv;
-        const std::size_t skip = has_header[task] ? text.find('\n') + 1 : 0;
+        const std::size_t skip = text.empty() ? 0 : text.find('\n') + 1;
         steps.write(text.data() + skip, static_cast<std::streamsize>(text.size() - skip));
         continue;
       }
       std::ifstream rows(store->steps_path(task), std::ios::binary);
       std::string skipped;
-      if (has_header[task]) std::getline(rows, skipped);
+      std::getline(rows, skipped);  // its header
       if (rows.peek() != std::ifstream::traits_type::eof()) steps << rows.rdbuf();
     }
   });
@@ -285,7 +276,7 @@ double median(std::vector<int> values) {
 }
 
 std::string trials_csv(const ExperimentResults& results) {
-  const std::vector<experiments::Column>& columns = results.schema.trial_columns;
+  const std::vector<results::Column>& columns = results.schema.trial_columns;
   std::string csv = "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,final_theta,status";
   for (const auto& column : columns) {
     csv += ',';
@@ -373,7 +364,7 @@ std::string schema_json(const ExperimentResults& results) {
   Json columns = Json::array();
   for (const auto& column : schema.trial_columns) {
     columns.push_back({{"name", column.name},
-                       {"type", experiments::to_string(column.type)},
+                       {"type", results::to_string(column.type)},
                        {"meaning", column.meaning}});
   }
   Json figures = Json::array();
@@ -389,7 +380,7 @@ std::string schema_json(const ExperimentResults& results) {
        {"figures", figures},
        {"pairs_failures", schema.pairs_failures},
        {"headline", schema.headline_name()},
-       {"console", schema.console == experiments::ConsoleTable::kTrials ? "trials" : "headline"},
+       {"console", schema.console == results::ConsoleTable::kTrials ? "trials" : "headline"},
        {"plots", schema.plots},
        {"reference", reference}});
 }

@@ -3,17 +3,17 @@
 // schema.json (what the results hold: the protocol's declaration), summary.json, trials.csv,
 // evaluation.csv, figures.csv (the protocol's own per-seed figures), steps.csv, weights/. They
 // go into a run's work directory (run_directory.h), which its commit then publishes. Every file
-// is written from the results' schema (experiments/results_schema.h) alone.
+// is written from the results' schema (results/schema.h) alone.
 
 #include <filesystem>
 #include <string>
 
 #include "cbbg/config/config.h"
-#include "cbbg/experiments/seed_run.h"
+#include "cbbg/results/records.h"
 
 namespace cbbg::store {
 
-using experiments::ExperimentResults;
+using results::ExperimentResults;
 
 class TaskStore;
 

@@ -5,9 +5,9 @@
 
 namespace cbbg::store {
 
-using experiments::Figure;
-using experiments::FigureSummary;
-using experiments::ValueType;
+using results::Figure;
+using results::FigureSummary;
+using results::ValueType;
 
 const std::vector<Figure>& run_figures() {
   static const std::vector<Figure> figures{
@@ -25,18 +25,18 @@ const std::vector<Figure>& run_figures() {
   return figures;
 }
 
-const Figure* find_figure(const experiments::ExperimentResults& results, const std::string& name) {
+const Figure* find_figure(const results::ExperimentResults& results, const std::string& name) {
   for (const Figure& figure : run_figures()) {
     if (figure.name == name) return &figure;
   }
   return results.schema.figure(name);
 }
 
-std::vector<std::optional<double>> seed_values(const experiments::ExperimentResults& results,
+std::vector<std::optional<double>> seed_values(const results::ExperimentResults& results,
                                                std::size_t arm, const Figure& figure) {
   std::vector<std::optional<double>> values;
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-    const experiments::SeedRun& run = results.run(arm, s);
+    const results::SeedRun& run = results.run(arm, s);
     if (figure.name == "failures_before_success") {
       values.emplace_back(run.failures_before_success);
     } else if (figure.name == "succeeded") {
@@ -49,12 +49,12 @@ std::vector<std::optional<double>> seed_values(const experiments::ExperimentResu
 }
 
 std::vector<double> ranked(const std::vector<std::optional<double>>& values,
-                           experiments::Missing missing) {
+                           results::Missing missing) {
   std::vector<double> sorted;
   for (const auto& value : values) {
     if (value) {
       sorted.push_back(*value);
-    } else if (missing == experiments::Missing::kBeyondMaxTrials) {
+    } else if (missing == results::Missing::kBeyondMaxTrials) {
       sorted.push_back(INFINITY);
     }
   }

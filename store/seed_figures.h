@@ -7,26 +7,26 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/experiments/seed_run.h"
+#include "cbbg/results/records.h"
 
 namespace cbbg::store {
 
 // Every run's own figures, which every schema has before its protocol's: the failed trials
 // before the first success, and whether one came.
-const std::vector<experiments::Figure>& run_figures();
+const std::vector<results::Figure>& run_figures();
 
 // The figure `name` of the results' schema, or of every run; nullptr for neither.
-const experiments::Figure* find_figure(const experiments::ExperimentResults& results,
-                                       const std::string& name);
+const results::Figure* find_figure(const results::ExperimentResults& results,
+                                   const std::string& name);
 
 // Per seed of arm `arm`, the figure's value (none where the seed has none).
-std::vector<std::optional<double>> seed_values(const experiments::ExperimentResults& results,
-                                               std::size_t arm, const experiments::Figure& figure);
+std::vector<std::optional<double>> seed_values(const results::ExperimentResults& results,
+                                               std::size_t arm, const results::Figure& figure);
 
 // The values a median, min or max ranks, sorted: a missing one as beyond every other
 // (infinity) under Missing::kBeyondMaxTrials, else left out.
 std::vector<double> ranked(const std::vector<std::optional<double>>& values,
-                           experiments::Missing missing);
+                           results::Missing missing);
 // The median of sorted values (the mean of the middle two for an even count); NaN for none.
 double middle(const std::vector<double>& sorted);
 

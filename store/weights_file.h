@@ -1,5 +1,5 @@
 #pragma once
-// Learnt-weight checkpoints (experiments/learnt_weights.h) saved to and loaded from a text file
+// Learnt-weight checkpoints (results/learnt_state.h) saved to and loaded from a text file
 // (docs/weights-format.md). A checkpoint lets a run start from weights learnt earlier and
 // `cbbg eval` measure a learnt policy without learning again.
 
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cbbg/config/config.h"
-#include "cbbg/experiments/learnt_weights.h"
+#include "cbbg/results/learnt_state.h"
 
 namespace cbbg::store {
 
@@ -17,7 +17,7 @@ namespace cbbg::store {
 inline constexpr const char* kWeightsFormat = "cbbg-weights";
 inline constexpr int kWeightsFormatVersion = 2;
 
-using experiments::LearntWeights;
+using results::LearntWeights;
 
 // Writes `weights` to `path` in the text format, every number in the shortest text that
 // reads back to the same double: version 1 when both learners learnt "weights" alone, one
@@ -33,18 +33,5 @@ void save_weights(const std::filesystem::path& path, const LearntWeights& weight
 // line, a wrong count, a non-finite number) throws config::ConfigError: one line naming the
 // file, the line where it applies, and what is wrong.
 LearntWeights load_weights(const std::filesystem::path& path);
-
-// Before weights read from the file `source` are loaded into `loop` on plant kind
-// `plant_kind` (a run's plant.kind): experiments::check_weights_fit, its messages naming the
-// file ("weights file 'w.txt' was made on plant kind 'cartpole' and cannot be loaded onto
-// plant kind 'simbody' (plant.kind): another robot"). cbbg eval and cbbg run --load-weights
-// check so.
-void check_weights(const LearntWeights& weights, const std::string& plant_kind,
-                   const diagrams::ClosedLoop& loop, const std::filesystem::path& source);
-// Its layout half alone: throws config::ConfigError, naming `source` and where the layouts
-// first differ, unless the weights were made for `layout`, the same keys and numbers, bit for
-// bit.
-void check_layout(const LearntWeights& weights, const blocks::FeatureLayout& layout,
-                  const std::filesystem::path& source);
 
 }  // namespace cbbg::store

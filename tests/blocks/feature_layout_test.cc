@@ -1,5 +1,6 @@
 // blocks::first_difference and layout_text: where two feature layouts first differ, in the
-// words a weights file's refusal shows (store::check_layout), whichever of the two is shorter.
+// words a weights file's refusal shows (experiments::check_layout), whichever of the two is
+// shorter.
 
 #include "cbbg/blocks/feature_layout.h"
 

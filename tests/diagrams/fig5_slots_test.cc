@@ -394,7 +394,7 @@ TEST(Fig5Slots, ALearnerWithTwoPartsIsSavedLoadedAndCarriedOverBitForBit) {
 
   // The paper's critic learns one part: the file refuses to load onto it.
   const ClosedLoop paper = preset_arm("cbbg").learner(p);
-  EXPECT_THAT([&] { store::check_weights(learnt, "analytic", paper, file); },
+  EXPECT_THAT([&] { experiments::check_weights(learnt, "analytic", paper, file); },
               ThrowsMessage<config::ConfigError>(
                   "weights file '" + file.string() +
                   "' holds critic parts weights (49), visits (49); the critic "

@@ -129,13 +129,16 @@ TEST(Slots, AUsersFeaturesKeepTheirWeightsWithTheirOwnLayout) {
   const experiments::LearntWeights loaded = store::load_weights(scratch.path() / "w.txt");
   EXPECT_TRUE(loaded == *run.weights);
   const config::Parameters parameters = config::read_parameters(quick_config());
-  EXPECT_NO_THROW(store::check_layout(loaded, tiles_arm(6).policy(parameters).layout, "w.txt"));
+  EXPECT_NO_THROW(
+      experiments::check_layout(loaded, tiles_arm(6).policy(parameters).layout, "w.txt"));
   EXPECT_THAT(
-      [&] { store::check_layout(loaded, tiles_arm(4).policy(parameters).layout, "w.txt"); },
+      [&] { experiments::check_layout(loaded, tiles_arm(4).policy(parameters).layout, "w.txt"); },
       ThrowsMessage<config::ConfigError>(
           "weights file 'w.txt' was made for tiles.per_axis 6; this diagram has tiles.per_axis 4"));
   EXPECT_THAT(
-      [&] { store::check_layout(loaded, preset_arm("cbbg").policy(parameters).layout, "w.txt"); },
+      [&] {
+        experiments::check_layout(loaded, preset_arm("cbbg").policy(parameters).layout, "w.txt");
+      },
       ThrowsMessage<config::ConfigError>(
           "weights file 'w.txt' was made for tiles.per_axis 6; this diagram has rbf.centres "
           "[-3, -2, -1, 0, 1, 2, 3]"));

@@ -81,7 +81,7 @@ TEST(VariantConfigs, WeightsLearntSeeingTheWheelsAreRefusedOnThePapersView) {
   paper.set("plant.kind=analytic");
   const diagrams::ClosedLoop policy =
       diagrams::build_preset(diagrams::kLearntActor, config::read_parameters(paper));
-  EXPECT_THAT([&] { store::check_layout(weights, policy.layout, "w.txt"); },
+  EXPECT_THAT([&] { experiments::check_layout(weights, policy.layout, "w.txt"); },
               ::testing::ThrowsMessage<config::ConfigError>(
                   ::testing::HasSubstr("weights file 'w.txt' was made for")));
 }

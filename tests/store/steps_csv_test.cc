@@ -1,5 +1,5 @@
-// steps.csv from the tasks' rows: one header, the columns of the plant's signals, and the
-// rows of a task stored by the previous release (which have no header line) still taken.
+// steps.csv from the tasks' rows: one header, the columns of the plant's signals; the header
+// alone when no task logged a row.
 
 #include <filesystem>
 #include <fstream>
@@ -55,7 +55,7 @@ class OneWheel final : public plant::RobotPlant {
   void reset(Context&, double) const override {}
 };
 
-TEST(StepsCsv, OneHeaderThenEveryTasksRowsAndTheRowsOfAnOlderTask) {
+TEST(StepsCsv, OneHeaderThenEveryTasksRowsOrTheHeaderAlone) {
   const config::Config config = quick_config();
   experiments::ExperimentResults results =
       experiments::run_exp1(diagrams::validated_parameters(config),
@@ -68,10 +68,11 @@ TEST(StepsCsv, OneHeaderThenEveryTasksRowsAndTheRowsOfAnOlderTask) {
   EXPECT_EQ(written, header + results.runs[0].steps_csv.substr(header.size()) +
                          results.runs[1].steps_csv.substr(header.size()));
 
-  // The previous release stored a task's rows without their header: the same file.
-  results.runs[1].steps_csv.erase(0, header.size());
+  // A protocol that runs no trial (evaluate) logs no row: the header alone.
+  EXPECT_EQ(results.steps_header, header);
+  for (auto& run : results.runs) run.steps_csv.clear();
   write_result_files(results, config, scratch.path());
-  EXPECT_EQ(read(scratch.path() / "steps.csv"), written);
+  EXPECT_EQ(read(scratch.path() / "steps.csv"), header);
 }
 
 TEST(StepsCsv, ArmsWhosePlantsGiveOtherSignalsAreRefused) {

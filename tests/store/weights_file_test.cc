@@ -17,6 +17,7 @@
 
 #include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/learnt_weights.h"
 
 namespace cbbg::store {
 namespace {

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace cbbg::experiments {
+namespace cbbg::results {
 
 enum class ValueType { kInteger, kNumber, kFlag };
 const char* to_string(ValueType type);
@@ -100,4 +100,4 @@ struct ResultsSchema {
 // a headline or plot that is not one).
 void check_schema(const ResultsSchema& schema, const std::string& protocol);
 
-}  // namespace cbbg::experiments
+}  // namespace cbbg::results

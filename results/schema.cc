@@ -1,10 +1,10 @@
-#include "cbbg/experiments/results_schema.h"
+#include "cbbg/results/schema.h"
 
 #include <algorithm>
 #include <set>
 #include <stdexcept>
 
-namespace cbbg::experiments {
+namespace cbbg::results {
 namespace {
 
 bool is_word(const std::string& text) {
@@ -93,4 +93,4 @@ void check_schema(const ResultsSchema& schema, const std::string& protocol) {
   }
 }
 
-}  // namespace cbbg::experiments
+}  // namespace cbbg::results

@@ -1,6 +1,6 @@
-#include "cbbg/experiments/seed_run.h"
+#include "cbbg/results/records.h"
 
-namespace cbbg::experiments {
+namespace cbbg::results {
 namespace {
 
 std::optional<double> find_value(const std::vector<NamedValue>& values, const std::string& name) {
@@ -12,6 +12,18 @@ std::optional<double> find_value(const std::vector<NamedValue>& values, const st
 
 }  // namespace
 
+const char* to_string(TrialStatus status) {
+  switch (status) {
+    case TrialStatus::kSuccess:
+      return "success";
+    case TrialStatus::kFailed:
+      return "failed";
+    case TrialStatus::kDiverged:
+      return "diverged";
+  }
+  return "unknown";
+}
+
 std::optional<double> TrialRecord::value(const std::string& name) const {
   return find_value(values, name);
 }
@@ -20,4 +32,4 @@ std::optional<double> SeedRun::figure(const std::string& name) const {
   return find_value(figures, name);
 }
 
-}  // namespace cbbg::experiments
+}  // namespace cbbg::results
