@@ -37,8 +37,9 @@ int run_command(const RunOptions& options);
 // config::ConfigError.
 config::Parameters checked_parameters(const config::Config& config);
 // Before any work: every arm of the run built once (experiments/arm_checks.h), and `jobs`
-// of its tasks at once within the machine's memory. Throws config::ConfigError.
-void check_arms_and_memory(const config::Parameters& parameters, int jobs);
+// of its tasks (`arms` x seeds) at once within the machine's memory. Throws
+// config::ConfigError.
+void check_arms_and_memory(const config::Parameters& parameters, std::size_t arms, int jobs);
 // cbbg run as a sweep (apps/sweep_command.cc): `base` and `sweep` resolved from `options`.
 int sweep_command(const RunOptions& options, const config::Config& base,
                   const config::Sweep& sweep);

@@ -161,10 +161,9 @@ void print_summary(const experiments::ExperimentResults& results) {
 
 // Learning runs of the experiment: every (arm, seed) of an arm with basal ganglia, under a
 // protocol that learns.
-long long learning_runs(const config::RunParams& run) {
+long long learning_runs(const config::RunParams& run, const std::vector<std::string>& arms) {
   const experiments::Protocol* protocol = experiments::find_protocol(run.experiment);
   if (protocol != nullptr && !protocol->learns) return 0;
-  const std::vector<std::string> arms = experiments::experiment_arms(run);
   const auto learning = std::count_if(arms.begin(), arms.end(), [](const std::string& arm) {
     return static_cast<bool>(diagrams::named_arm(arm).policy);
   });
@@ -175,8 +174,9 @@ long long learning_runs(const config::RunParams& run) {
 // layout they were made for.
 void check_initial_weights(const experiments::LearntWeights& weights,
                            const config::Parameters& parameters,
+                           const std::vector<std::string>& arms,
                            const std::filesystem::path& file) {
-  for (const std::string& name : experiments::experiment_arms(parameters.run)) {
+  for (const std::string& name : arms) {
     const diagrams::ClosedLoop loop = diagrams::named_arm(name).learner(parameters);
     if (loop.learner.learns()) {
       experiments::check_weights(weights, parameters.plant.kind, loop, file);
@@ -188,6 +188,7 @@ void check_initial_weights(const experiments::LearntWeights& weights,
 struct PreparedRun {
   config::Config config;  // what the results directory records
   config::Parameters parameters;
+  std::vector<std::string> arms;  // the arms the experiment runs
   std::optional<store::RunDirectory> directory;
   std::optional<experiments::LearntWeights> initial_weights;
 };
@@ -216,9 +217,10 @@ PreparedRun prepare(const RunOptions& options) {
     run.config = resolve(options);
   }
   run.parameters = checked_parameters(run.config);
-  check_arms_and_memory(run.parameters, options.jobs);
+  run.arms = experiments::experiment_arms(run.parameters.run);
+  check_arms_and_memory(run.parameters, run.arms.size(), options.jobs);
   if (!options.save_weights.empty()) {
-    const long long learning = learning_runs(run.parameters.run);
+    const long long learning = learning_runs(run.parameters.run, run.arms);
     if (learning == 0) {
       throw config::ConfigError("--save-weights keeps the weights a run learns; --experiment " +
                                 run.parameters.run.experiment +
@@ -235,7 +237,7 @@ PreparedRun prepare(const RunOptions& options) {
   }
   if (!options.load_weights.empty()) {
     run.initial_weights = store::load_weights(options.load_weights);
-    check_initial_weights(*run.initial_weights, run.parameters, options.load_weights);
+    check_initial_weights(*run.initial_weights, run.parameters, run.arms, options.load_weights);
   }
   if (!options.resume) {  // a resumed run passed it when it started
     experiments::check_protocol(run.parameters,
@@ -275,7 +277,7 @@ void execute(const RunOptions& options, PreparedRun& run) {
   const config::Config& config = run.config;
   const config::RunParams& what = run.parameters.run;
   store::RunDirectory& directory = *run.directory;
-  const std::size_t arms = experiments::experiment_arms(what).size();
+  const std::size_t arms = run.arms.size();
   const std::size_t tasks = arms * static_cast<std::size_t>(what.seeds);
   spdlog::info("{}: {} seed(s) x {} arm(s) on the {} plant, {} thread(s){}", what.experiment,
                what.seeds, arms, run.parameters.plant.kind, options.jobs,
@@ -290,7 +292,8 @@ void execute(const RunOptions& options, PreparedRun& run) {
   const experiments::ExperimentResults results =
       experiments::run_experiment(run.parameters, experiment);
   progress.close();
-  store::write_result_files(results, config, directory.work(), &store);
+  store::write_result_files(results, config, store::run_facts(run.parameters), directory.work(),
+                            &store);
   if (directory.shape().figures) {
     draw_figures(directory.work(), run.parameters,
                  {.quiet = true,
@@ -320,9 +323,8 @@ std::string way_forward(const store::RunDirectory& directory, const std::excepti
 
 }  // namespace
 
-void check_arms_and_memory(const config::Parameters& parameters, int jobs) {
-  const std::size_t tasks = experiments::experiment_arms(parameters.run).size() *
-                            static_cast<std::size_t>(parameters.run.seeds);
+void check_arms_and_memory(const config::Parameters& parameters, std::size_t arms, int jobs) {
+  const std::size_t tasks = arms * static_cast<std::size_t>(parameters.run.seeds);
   experiments::check_run_memory(experiments::check_arms_build(parameters),
                                 std::min(tasks, static_cast<std::size_t>(jobs)));
 }

@@ -49,7 +49,10 @@ SweepPlan plan(config::Config base, config::Sweep sweep, std::optional<int> jobs
     try {
       result.parameters.push_back(checked_parameters(result.points.back()));
       experiments::check_protocol(result.parameters.back(), nullptr);  // sweeps start from zero
-      if (jobs) check_arms_and_memory(result.parameters.back(), *jobs);
+      if (jobs) {
+        const config::Parameters& point = result.parameters.back();
+        check_arms_and_memory(point, experiments::experiment_arms(point.run).size(), *jobs);
+      }
     } catch (const config::ConfigError& error) {
       throw config::ConfigError("grid point " + store::point_name(p, result.sweep.points()) + ": " +
                                 error.what());
@@ -156,7 +159,8 @@ void merge(const SweepPlan& plan, store::SweepDirectory& directory) {
       results.push_back(experiments::run_experiment(plan.parameters[p], options));
       const std::filesystem::path out = directory.point_results(p, plan.points.size());
       std::filesystem::create_directories(out);
-      store::write_result_files(results.back(), plan.points[p], out, &store);
+      store::write_result_files(results.back(), plan.points[p],
+                                store::run_facts(plan.parameters[p]), out, &store);
     }
     store::write_atomically(directory.work() / "sweep.csv", store::sweep_csv(plan.sweep, results));
     if (directory.figures() && run_plot_script(directory.work(), /*quiet=*/true) != 0) {

@@ -133,7 +133,8 @@ void run_point(const Point& point, const std::filesystem::path& out) {
   const experiments::ExperimentResults results =
       experiments::run_exp1(point.parameters, arms, {.jobs = 2, .store = &tasks});
   // config.yaml records the arms that ran and saturated_pd.*, with every other key.
-  store::write_result_files(results, point.config, directory.work(), &tasks);
+  store::write_result_files(results, point.config, store::run_facts(point.parameters),
+                            directory.work(), &tasks);
   render(arms[1], point.parameters, directory.work() / "figures");
   directory.commit();
 

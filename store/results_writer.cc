@@ -385,32 +385,41 @@ std::string schema_json(const ExperimentResults& results) {
        {"reference", reference}});
 }
 
-RunFacts run_facts(const config::Config& config) {
-  const config::Parameters parameters = config::read_parameters(config);
+RunFacts run_facts(const config::Parameters& parameters) {
   return {parameters.plant.kind, parameters.run.max_trials, parameters.log.decimation};
 }
 
 config::Config recorded_config(const ExperimentResults& results, config::Config config) {
   if (!results.compares_arms) return config;
-  config::Parameters parameters = config::read_parameters(config);
-  parameters.run.arms = results.arms;
-  config::write_parameters(parameters, config);
+  config.set("arms=[" + config::join(results.arms) + "]", "the arms the protocol compared");
   return config;
 }
 
+namespace {
+
+// The text files of a results directory, in the order they are written.
+std::vector<std::pair<std::string, std::string>> result_texts(const ExperimentResults& results,
+                                                              const config::Config& config,
+                                                              const RunFacts& facts) {
+  std::vector<std::pair<std::string, std::string>> texts{
+      {"config.yaml", recorded_config(results, config).to_yaml()},
+      {"schema.json", schema_json(results)},
+      {"summary.json", summary_json(results, facts)},
+      {"trials.csv", trials_csv(results)}};
+  if (results.schema.evaluates) texts.emplace_back("evaluation.csv", evaluation_csv(results));
+  if (!results.schema.figures.empty()) texts.emplace_back("figures.csv", figures_csv(results));
+  return texts;
+}
+
+}  // namespace
+
 void write_result_files(const ExperimentResults& results, const config::Config& config,
-                        const std::filesystem::path& directory, const TaskStore* store) {
-  const RunFacts facts = run_facts(config);
-  write_atomically(directory / "config.yaml", recorded_config(results, config).to_yaml());
-  write_atomically(directory / "schema.json", schema_json(results));
-  write_atomically(directory / "summary.json", summary_json(results, facts));
-  fault_point("commit:results");  // a kill here leaves half the files: resume rewrites them
-  write_atomically(directory / "trials.csv", trials_csv(results));
-  if (results.schema.evaluates) {
-    write_atomically(directory / "evaluation.csv", evaluation_csv(results));
-  }
-  if (!results.schema.figures.empty()) {
-    write_atomically(directory / "figures.csv", figures_csv(results));
+                        const RunFacts& facts, const std::filesystem::path& directory,
+                        const TaskStore* store) {
+  for (const auto& [name, text] : result_texts(results, config, facts)) {
+    write_atomically(directory / name, text);
+    // A kill after the summary leaves half the files: resume rewrites them.
+    if (name == "summary.json") fault_point("commit:results");
   }
   for (const SeedRun& run : results.runs) {
     if (run.weights) {

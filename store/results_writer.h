@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cbbg/config/config.h"
+#include "cbbg/config/parameters.h"
 #include "cbbg/results/records.h"
 
 namespace cbbg::store {
@@ -21,25 +22,26 @@ class TaskStore;
 // library run's own arms too), whatever the config said.
 config::Config recorded_config(const ExperimentResults& results, config::Config config);
 
+// What summary.json says of the run beside its results, from the run's typed parameters.
+struct RunFacts {
+  std::string plant;  // plant.kind
+  long long max_trials = 0;
+  long long log_decimation = 0;  // log.decimation: steps.csv when positive
+};
+RunFacts run_facts(const config::Parameters& parameters);
+
 // Writes every data file of `results` into `directory` (which must exist), config.yaml as
 // recorded_config, and each learning run's weights into weights/<arm>_seed<k>.txt. steps.csv comes
 // from the store's files when one is given, else from each run's steps_csv.
 void write_result_files(const ExperimentResults& results, const config::Config& config,
-                        const std::filesystem::path& directory, const TaskStore* store = nullptr);
+                        const RunFacts& facts, const std::filesystem::path& directory,
+                        const TaskStore* store = nullptr);
 
 // A text as a CSV field: quoted when it holds a comma or a quote (a list value, say).
 std::string csv_field(const std::string& text);
 
 // The median of per-seed counts (the mean of the middle two for an even count).
 double median(std::vector<int> values);
-
-// What summary.json says of the run beside its results.
-struct RunFacts {
-  std::string plant;  // plant.kind
-  long long max_trials = 0;
-  long long log_decimation = 0;  // log.decimation: steps.csv when positive
-};
-RunFacts run_facts(const config::Config& config);
 
 std::string summary_json(const ExperimentResults& results, const RunFacts& facts);
 // The results' schema, with every run's own figures (failures_before_success, succeeded) first.

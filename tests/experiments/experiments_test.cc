@@ -176,7 +176,7 @@ TEST(Experiments, Exp3ReportsASeedThatNeverGetsThereAsSuch) {
   EXPECT_EQ(back.trials[1].value("actor_alone"), results.runs[0].trials[1].value("actor_alone"));
   EXPECT_FALSE(back.figure("trials_to_skill").has_value());
   EXPECT_THAT(figures_csv(results), HasSubstr("bg_only,1,,\n"));
-  EXPECT_THAT(summary_json(results, run_facts(config)),
+  EXPECT_THAT(summary_json(results, run_facts(config::read_parameters(config))),
               HasSubstr("\"trials_to_skill\": [null, null],\n      \"failures_to_skill\": "
                         "[null, null],\n      \"num_skilled\": 0,\n      \"skill_median\": "
                         "null"));
@@ -193,7 +193,8 @@ TEST(Experiments, ASeedThatNeverSucceedsCountsAllItsTrials) {
   EXPECT_FALSE(results.runs[0].succeeded);
   EXPECT_EQ(results.runs[0].failures_before_success, 3);
   EXPECT_EQ(results.runs[0].trials.size(), 3u);
-  EXPECT_THAT(summary_json(results, run_facts(config)), HasSubstr("\"succeeded\": [false]"));
+  EXPECT_THAT(summary_json(results, run_facts(config::read_parameters(config))),
+              HasSubstr("\"succeeded\": [false]"));
 }
 
 TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
@@ -217,7 +218,8 @@ TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
   EXPECT_TRUE(results.runs[0].weights_diverged);
   EXPECT_FALSE(results.runs[0].weights.has_value());
   EXPECT_TRUE(results.runs[0].evaluation.empty());
-  EXPECT_THAT(summary_json(results, run_facts(config)), HasSubstr("\"weights_diverged\": [true]"));
+  EXPECT_THAT(summary_json(results, run_facts(config::read_parameters(config))),
+              HasSubstr("\"weights_diverged\": [true]"));
 }
 
 TEST(Experiments, ATemperatureTooLargeToAverageEndsTheTrialAsDiverged) {

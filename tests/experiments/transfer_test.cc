@@ -92,7 +92,8 @@ TEST(Transfer, ItsRecordAndResultsKeepTheFigures) {
                              "balanced@evaluation.noise_std=0.05; evaluation.push_torque=2,"));
   // The supervisor alone copes; it has no actor to come to balance alone.
   EXPECT_THAT(csv, HasSubstr("\npd_only,1,2,2,2,2,0,\n"));
-  const std::string summary = store::summary_json(results, store::run_facts(config));
+  const std::string summary =
+      store::summary_json(results, store::run_facts(config::read_parameters(config)));
   EXPECT_THAT(summary, HasSubstr("\"figures\": {\"balanced@evaluation.body_mass_scale=1.3\": 4"));
   // Paired over the balanced figures, not over how many ran.
   EXPECT_THAT(summary, HasSubstr("\"figure\": \"balanced@evaluation.body_mass_scale=1.3\""));
@@ -260,7 +261,8 @@ TEST(Transfer, TrialsToSkillIsOneValueWhereverItAppears) {
   EXPECT_THAT(store::figures_csv(results),
               HasSubstr("\n" + never->arm + "," + std::to_string(never->seed) + ","));
   EXPECT_THAT(store::figures_csv(results), HasSubstr(",0,\n"));  // skilled 0, no trials
-  const std::string summary = store::summary_json(results, store::run_facts(config));
+  const std::string summary =
+      store::summary_json(results, store::run_facts(config::read_parameters(config)));
   EXPECT_THAT(summary, HasSubstr("\"trials_to_skill\": ["));  // per seed, null for none
   EXPECT_THAT(summary, Not(ContainsRegex("\"trials_to_skill\": [0-9]")));  // never summed
   const results::PairedComparison comparison = results::compare_paired(paired[0], paired[1]);
