@@ -49,6 +49,22 @@ const char* to_string(Missing missing) {
   return missing == Missing::kBeyondMaxTrials ? "beyond_max_trials" : "not_counted";
 }
 
+const std::vector<Figure>& run_figures() {
+  static const std::vector<Figure> figures{
+      {.name = "failures_before_success",
+       .type = ValueType::kInteger,
+       .meaning = "failed or diverged trials before the first success; all of them if none "
+                  "succeeded",
+       .summary = FigureSummary::kList,
+       .statistics = {"", "median", "min", "max"}},
+      {.name = "succeeded",
+       .type = ValueType::kFlag,
+       .meaning = "whether a trial succeeded",
+       .summary = FigureSummary::kList,
+       .statistics = {"num_succeeded", "", "", ""}}};
+  return figures;
+}
+
 const Figure* ResultsSchema::figure(const std::string& name) const {
   for (const Figure& f : figures) {
     if (f.name == name) return &f;
@@ -76,6 +92,11 @@ void check_schema(const ResultsSchema& schema, const std::string& protocol) {
   for (const Figure& figure : schema.figures) {
     if (figure.name.empty() || figure.name.find_first_of("\r\n") != std::string::npos) {
       throw std::invalid_argument(where + "a figure's name must be a line of text");
+    }
+    if (std::any_of(run_figures().begin(), run_figures().end(),
+                    [&](const Figure& own) { return own.name == figure.name; })) {
+      throw std::invalid_argument(where + "'" + figure.name +
+                                  "' is every run's own figure; give the protocol's another name");
     }
     if (!figures.insert(figure.name).second) {
       throw std::invalid_argument(where + "two figures named '" + figure.name + "'");

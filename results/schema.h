@@ -95,9 +95,15 @@ struct ResultsSchema {
   std::string headline_name() const;
 };
 
+// Every run's own figures, which every schema has before its protocol's: the failed trials
+// before the first success (listed, with median, min and max), and whether one came (counted
+// as num_succeeded).
+const std::vector<Figure>& run_figures();
+
 // Throws std::invalid_argument naming `protocol` when the schema cannot be written (a column
-// name that is not a word, a figure name that is empty or holds a line break, two of one name,
-// a headline or plot that is not one).
+// name that is not a word, a figure name that is empty or holds a line break or is one of every
+// run's own (failures_before_success, succeeded), two of one name, a headline or plot that is
+// not one).
 void check_schema(const ResultsSchema& schema, const std::string& protocol);
 
 }  // namespace cbbg::results

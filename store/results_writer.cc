@@ -144,7 +144,7 @@ void add_sums(Json& arm, const ExperimentResults& results, std::size_t a) {
 
 Json arm_summary(const ExperimentResults& results, std::size_t a) {
   Json arm = Json::object();
-  add_listed(arm, results, a, run_figures());
+  add_listed(arm, results, a, results::run_figures());
   add_evaluation(arm, results, a);
   add_weights_diverged(arm, results, a);
   add_sums(arm, results, a);
@@ -170,7 +170,7 @@ std::vector<double> paired_values(const ExperimentResults& results, std::size_t 
 // schema pairs; none for one arm.
 Json paired_summary(const ExperimentResults& results, long long max_trials) {
   std::vector<Figure> figures;
-  if (results.schema.pairs_failures) figures.push_back(run_figures().front());
+  if (results.schema.pairs_failures) figures.push_back(results::run_figures().front());
   for (const Figure& figure : results.schema.figures) {
     if (figure.paired) figures.push_back(figure);
   }
@@ -368,7 +368,10 @@ std::string schema_json(const ExperimentResults& results) {
                        {"meaning", column.meaning}});
   }
   Json figures = Json::array();
-  for (const Figure& figure : run_figures()) figures.push_back(schema_figure(figure));
+  for (Figure figure : results::run_figures()) {
+    figure.paired = figure.name == "failures_before_success" && schema.pairs_failures;
+    figures.push_back(schema_figure(figure));
+  }
   for (const Figure& figure : schema.figures) figures.push_back(schema_figure(figure));
   Json reference = Json::object();
   for (const auto& [arm, failures] : schema.reference) reference[arm] = failures;

@@ -9,24 +9,8 @@ using results::Figure;
 using results::FigureSummary;
 using results::ValueType;
 
-const std::vector<Figure>& run_figures() {
-  static const std::vector<Figure> figures{
-      {.name = "failures_before_success",
-       .type = ValueType::kInteger,
-       .meaning = "failed or diverged trials before the first success; all of them if none "
-                  "succeeded",
-       .summary = FigureSummary::kList,
-       .statistics = {"", "median", "min", "max"}},
-      {.name = "succeeded",
-       .type = ValueType::kFlag,
-       .meaning = "whether a trial succeeded",
-       .summary = FigureSummary::kList,
-       .statistics = {"num_succeeded", "", "", ""}}};
-  return figures;
-}
-
 const Figure* find_figure(const results::ExperimentResults& results, const std::string& name) {
-  for (const Figure& figure : run_figures()) {
+  for (const Figure& figure : results::run_figures()) {
     if (figure.name == name) return &figure;
   }
   return results.schema.figure(name);

@@ -11,10 +11,6 @@
 
 namespace cbbg::store {
 
-// Every run's own figures, which every schema has before its protocol's: the failed trials
-// before the first success, and whether one came.
-const std::vector<results::Figure>& run_figures();
-
 // The figure `name` of the results' schema, or of every run; nullptr for neither.
 const results::Figure* find_figure(const results::ExperimentResults& results,
                                    const std::string& name);

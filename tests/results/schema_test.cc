@@ -39,6 +39,10 @@ TEST(ResultsSchema, RefusesWhatCannotBeWrittenNamingTheProtocol) {
         check_schema({.figures = {{.name = "x"}, {.name = "x"}}}, "mine");
       },
       ThrowsMessage<std::invalid_argument>("protocol 'mine': two figures named 'x'"));
+  EXPECT_THAT([] { check_schema({.figures = {{.name = "succeeded"}}}, "mine"); },
+              ThrowsMessage<std::invalid_argument>(
+                  "protocol 'mine': 'succeeded' is every run's own figure; give the protocol's "
+                  "another name"));
   EXPECT_THAT([] { check_schema({.headline = "x"}, "mine"); },
               ThrowsMessage<std::invalid_argument>(
                   "protocol 'mine': the headline 'x' is none of its figures"));
