@@ -1,5 +1,5 @@
 #pragma once
-// What a learning arm has learnt (results/learnt_state.h), read from and written into a
+// What a learning arm has learnt (records/learnt_state.h), read from and written into a
 // closed loop's context, and checked before it is loaded into one. store/weights_file.h keeps
 // it in files.
 
@@ -13,14 +13,14 @@
 #include "cbbg/diagrams/closed_loop.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/types.h"
-#include "cbbg/results/learnt_state.h"
+#include "cbbg/records/learnt_state.h"
 
 namespace cbbg::experiments {
 
-using results::LearntPart;
-using results::LearntState;
-using results::LearntWeights;
-using results::WeightsProvenance;
+using records::LearntPart;
+using records::LearntState;
+using records::LearntWeights;
+using records::WeightsProvenance;
 
 // What `loop`'s learners have learnt in `context` (every part they declare; none for a critic
 // that is no blocks::Learner), with the loop's layout. Throws std::invalid_argument when the

@@ -10,11 +10,11 @@
 
 #include "cbbg/config/parameters.h"
 #include "cbbg/experiments/seed_run.h"
-#include "cbbg/results/task_storage.h"
+#include "cbbg/records/task_storage.h"
 
 namespace cbbg::experiments {
 
-using results::TaskStorage;
+using records::TaskStorage;
 
 // Called after each finished (arm, seed), from the worker thread that ran it.
 using ProgressCallback = std::function<void(const SeedRun&)>;

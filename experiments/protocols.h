@@ -1,7 +1,7 @@
 #pragma once
 // The protocols `experiment` may name: exp1, exp2, exp3, evaluate, transfer, and any a user
 // registers, each a name, what it measures, the arms it runs, how it runs them and what its
-// results hold (results/schema.h). `cbbg run` (and a user's program through apps/cli.h) runs
+// results hold (records/schema.h). `cbbg run` (and a user's program through apps/cli.h) runs
 // whichever the config names; a protocol of the user's is written with protocol_kit.h and gets
 // the results directory, resume, sweeps, merge, the plots and Python, as the built-in ones
 // (builtin_protocols.h) do.
@@ -29,7 +29,7 @@
 #include "cbbg/diagrams/arms.h"
 #include "cbbg/experiments/parallel_runs.h"
 #include "cbbg/experiments/seed_run.h"
-#include "cbbg/results/schema.h"
+#include "cbbg/records/schema.h"
 
 namespace cbbg::experiments {
 
@@ -42,7 +42,7 @@ struct Protocol {
   std::function<ExperimentResults(const config::Parameters&, const std::vector<diagrams::Arm>&,
                                   const ExperimentOptions&)>
       run{};
-  // What its results hold (results/schema.h), from the run's parameters (transfer names its
+  // What its results hold (records/schema.h), from the run's parameters (transfer names its
   // figures after its conditions); none: exp1's, without the paper's figures.
   std::function<ResultsSchema(const config::Parameters&)> schema{};
   // Before any work, given the weights learning starts from (none: nullptr): a user's mistake

@@ -1,29 +1,29 @@
 #pragma once
-// What an experiment produces (results/records.h) and the schema a protocol declares of it
-// (results/schema.h), by the names the protocols use.
+// What an experiment produces (records/experiment_results.h) and the schema a protocol declares of
+// it (records/schema.h), by the names the protocols use.
 
 #include "cbbg/experiments/learnt_weights.h"
 #include "cbbg/experiments/trial_runner.h"
-#include "cbbg/results/records.h"
+#include "cbbg/records/experiment_results.h"
 
 namespace cbbg::experiments {
 
-using results::EvaluationRecord;
-using results::ExperimentResults;
-using results::NamedValue;
-using results::SeedFigure;
-using results::SeedRun;
-using results::TrialRecord;
+using records::EvaluationRecord;
+using records::ExperimentResults;
+using records::NamedValue;
+using records::SeedFigure;
+using records::SeedRun;
+using records::TrialRecord;
 
-using results::check_schema;
-using results::Column;
-using results::ConsoleTable;
-using results::Figure;
-using results::FigureStatistics;
-using results::FigureSummary;
-using results::Missing;
-using results::ResultsSchema;
-using results::to_string;
-using results::ValueType;
+using records::check_schema;
+using records::Column;
+using records::ConsoleTable;
+using records::Figure;
+using records::FigureStatistics;
+using records::FigureSummary;
+using records::Missing;
+using records::ResultsSchema;
+using records::to_string;
+using records::ValueType;
 
 }  // namespace cbbg::experiments

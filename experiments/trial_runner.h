@@ -13,13 +13,13 @@
 #include "cbbg/diagrams/closed_loop.h"
 #include "cbbg/framework/simulator.h"
 #include "cbbg/plant/plant_signals.h"
-#include "cbbg/results/trial_outcome.h"
+#include "cbbg/records/trial_outcome.h"
 
 namespace cbbg::experiments {
 
-using results::to_string;
-using results::TrialOutcome;
-using results::TrialStatus;
+using records::to_string;
+using records::TrialOutcome;
+using records::TrialStatus;
 
 struct TelemetryOptions {
   // Keep every tick in telemetry() (tests, analysis); memory then grows with the trial.

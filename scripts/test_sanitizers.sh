@@ -13,7 +13,7 @@
 # compiled code); scripts/test.sh runs all three.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-areas=(framework config blocks diagrams results experiments environment store replay)
+areas=(framework config blocks diagrams records experiments environment store replay)
 case "${1:-}" in
   "") all=false ;;
   --all) all=true ;;

@@ -2,7 +2,7 @@
 
 #include "cbbg/config/parameters.h"
 #include "cbbg/framework/number_text.h"
-#include "cbbg/results/paired_statistics.h"
+#include "cbbg/records/paired_statistics.h"
 #include "cbbg/store/fault_point.h"
 #include "cbbg/store/files.h"
 #include "cbbg/store/json_text.h"
@@ -18,19 +18,19 @@
 
 namespace cbbg::store {
 
-using results::EvaluationRecord;
-using results::SeedRun;
-using results::to_string;
-using results::TrialOutcome;
-using results::TrialRecord;
-using results::TrialStatus;
+using records::EvaluationRecord;
+using records::SeedRun;
+using records::to_string;
+using records::TrialOutcome;
+using records::TrialRecord;
+using records::TrialStatus;
 namespace {
 
-using results::Figure;
-using results::FigureSummary;
-using results::Missing;
-using results::ResultsSchema;
-using results::ValueType;
+using records::Figure;
+using records::FigureSummary;
+using records::Missing;
+using records::ResultsSchema;
+using records::ValueType;
 
 std::string number(double value) { return std::isfinite(value) ? format_number(value) : "nan"; }
 
@@ -65,15 +65,15 @@ void add_listed(Json& arm, const ExperimentResults& results, std::size_t a,
     }
     arm[figure.name] = list;
   }
-  using Statistic = std::string results::FigureStatistics::*;
+  using Statistic = std::string records::FigureStatistics::*;
   for (const Statistic statistic :
-       {&results::FigureStatistics::count, &results::FigureStatistics::median,
-        &results::FigureStatistics::min, &results::FigureStatistics::max}) {
+       {&records::FigureStatistics::count, &records::FigureStatistics::median,
+        &records::FigureStatistics::min, &records::FigureStatistics::max}) {
     for (const Figure& figure : figures) {
       const std::string& key = figure.statistics.*statistic;
       if (figure.summary != FigureSummary::kList || key.empty()) continue;
       const auto values = seed_values(results, a, figure);
-      if (statistic == &results::FigureStatistics::count) {
+      if (statistic == &records::FigureStatistics::count) {
         arm[key] = std::count_if(values.begin(), values.end(), [&](const auto& value) {
           return value && (figure.type != ValueType::kFlag || *value != 0.0);
         });
@@ -81,11 +81,11 @@ void add_listed(Json& arm, const ExperimentResults& results, std::size_t a,
       }
       const std::vector<double> sorted = ranked(values, figure.missing);
       const double result = sorted.empty()                                 ? NAN
-                            : statistic == &results::FigureStatistics::min ? sorted.front()
-                            : statistic == &results::FigureStatistics::max ? sorted.back()
+                            : statistic == &records::FigureStatistics::min ? sorted.front()
+                            : statistic == &records::FigureStatistics::max ? sorted.back()
                                                                            : middle(sorted);
       const bool whole =
-          figure.type != ValueType::kNumber && statistic != &results::FigureStatistics::median;
+          figure.type != ValueType::kNumber && statistic != &records::FigureStatistics::median;
       arm[key] =
           whole && std::isfinite(result) ? Json(static_cast<long long>(result)) : Json(result);
     }
@@ -95,7 +95,7 @@ void add_listed(Json& arm, const ExperimentResults& results, std::size_t a,
 // The learnt actor alone: per evaluation angle, the seeds whose policy balanced for a whole
 // trial, of the seeds that have a policy (none when no seed has).
 void add_evaluation(Json& arm, const ExperimentResults& results, std::size_t a) {
-  const std::vector<results::EvaluationRecord>* angles = nullptr;
+  const std::vector<records::EvaluationRecord>* angles = nullptr;
   int evaluated = 0;
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
     const auto& evaluation = results.run(a, s).evaluation;
@@ -144,7 +144,7 @@ void add_sums(Json& arm, const ExperimentResults& results, std::size_t a) {
 
 Json arm_summary(const ExperimentResults& results, std::size_t a) {
   Json arm = Json::object();
-  add_listed(arm, results, a, results::run_figures());
+  add_listed(arm, results, a, records::run_figures());
   add_evaluation(arm, results, a);
   add_weights_diverged(arm, results, a);
   add_sums(arm, results, a);
@@ -170,7 +170,7 @@ std::vector<double> paired_values(const ExperimentResults& results, std::size_t 
 // schema pairs; none for one arm.
 Json paired_summary(const ExperimentResults& results, long long max_trials) {
   std::vector<Figure> figures;
-  if (results.schema.pairs_failures) figures.push_back(results::run_figures().front());
+  if (results.schema.pairs_failures) figures.push_back(records::run_figures().front());
   for (const Figure& figure : results.schema.figures) {
     if (figure.paired) figures.push_back(figure);
   }
@@ -178,8 +178,8 @@ Json paired_summary(const ExperimentResults& results, long long max_trials) {
   if (results.arms.size() < 2) return paired;
   for (std::size_t b = 1; b < results.arms.size(); ++b) {
     for (const Figure& figure : figures) {
-      const results::PairedComparison c =
-          results::compare_paired(paired_values(results, 0, figure, max_trials),
+      const records::PairedComparison c =
+          records::compare_paired(paired_values(results, 0, figure, max_trials),
                                   paired_values(results, b, figure, max_trials));
       paired.push_back({{"a", results.arms[0]},
                         {"b", results.arms[b]},
@@ -196,9 +196,9 @@ Json paired_summary(const ExperimentResults& results, long long max_trials) {
 }
 
 Json schema_figure(const Figure& figure) {
-  Json json = {{"name", figure.name},       {"type", results::to_string(figure.type)},
-               {"meaning", figure.meaning}, {"summary", results::to_string(figure.summary)},
-               {"paired", figure.paired},   {"missing", results::to_string(figure.missing)}};
+  Json json = {{"name", figure.name},       {"type", records::to_string(figure.type)},
+               {"meaning", figure.meaning}, {"summary", records::to_string(figure.summary)},
+               {"paired", figure.paired},   {"missing", records::to_string(figure.missing)}};
   Json statistics = Json::object();
   for (const auto& [name, key] : {std::pair{"count", figure.statistics.count},
                                   {"median", figure.statistics.median},
@@ -276,7 +276,7 @@ double median(std::vector<int> values) {
 }
 
 std::string trials_csv(const ExperimentResults& results) {
-  const std::vector<results::Column>& columns = results.schema.trial_columns;
+  const std::vector<records::Column>& columns = results.schema.trial_columns;
   std::string csv = "arm,seed,trial,failed,steps,mean_temperature,mean_entropy,final_theta,status";
   for (const auto& column : columns) {
     csv += ',';
@@ -364,11 +364,11 @@ std::string schema_json(const ExperimentResults& results) {
   Json columns = Json::array();
   for (const auto& column : schema.trial_columns) {
     columns.push_back({{"name", column.name},
-                       {"type", results::to_string(column.type)},
+                       {"type", records::to_string(column.type)},
                        {"meaning", column.meaning}});
   }
   Json figures = Json::array();
-  for (Figure figure : results::run_figures()) {
+  for (Figure figure : records::run_figures()) {
     figure.paired = figure.name == "failures_before_success" && schema.pairs_failures;
     figures.push_back(schema_figure(figure));
   }
@@ -383,7 +383,7 @@ std::string schema_json(const ExperimentResults& results) {
        {"figures", figures},
        {"pairs_failures", schema.pairs_failures},
        {"headline", schema.headline_name()},
-       {"console", schema.console == results::ConsoleTable::kTrials ? "trials" : "headline"},
+       {"console", schema.console == records::ConsoleTable::kTrials ? "trials" : "headline"},
        {"plots", schema.plots},
        {"reference", reference}});
 }

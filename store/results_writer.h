@@ -3,18 +3,18 @@
 // schema.json (what the results hold: the protocol's declaration), summary.json, trials.csv,
 // evaluation.csv, figures.csv (the protocol's own per-seed figures), steps.csv, weights/. They
 // go into a run's work directory (run_directory.h), which its commit then publishes. Every file
-// is written from the results' schema (results/schema.h) alone.
+// is written from the results' schema (records/schema.h) alone.
 
 #include <filesystem>
 #include <string>
 
 #include "cbbg/config/config.h"
 #include "cbbg/config/parameters.h"
-#include "cbbg/results/records.h"
+#include "cbbg/records/experiment_results.h"
 
 namespace cbbg::store {
 
-using results::ExperimentResults;
+using records::ExperimentResults;
 
 class TaskStore;
 

@@ -5,22 +5,22 @@
 
 namespace cbbg::store {
 
-using results::Figure;
-using results::FigureSummary;
-using results::ValueType;
+using records::Figure;
+using records::FigureSummary;
+using records::ValueType;
 
-const Figure* find_figure(const results::ExperimentResults& results, const std::string& name) {
-  for (const Figure& figure : results::run_figures()) {
+const Figure* find_figure(const records::ExperimentResults& results, const std::string& name) {
+  for (const Figure& figure : records::run_figures()) {
     if (figure.name == name) return &figure;
   }
   return results.schema.figure(name);
 }
 
-std::vector<std::optional<double>> seed_values(const results::ExperimentResults& results,
+std::vector<std::optional<double>> seed_values(const records::ExperimentResults& results,
                                                std::size_t arm, const Figure& figure) {
   std::vector<std::optional<double>> values;
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-    const results::SeedRun& run = results.run(arm, s);
+    const records::SeedRun& run = results.run(arm, s);
     if (figure.name == "failures_before_success") {
       values.emplace_back(run.failures_before_success);
     } else if (figure.name == "succeeded") {
@@ -33,12 +33,12 @@ std::vector<std::optional<double>> seed_values(const results::ExperimentResults&
 }
 
 std::vector<double> ranked(const std::vector<std::optional<double>>& values,
-                           results::Missing missing) {
+                           records::Missing missing) {
   std::vector<double> sorted;
   for (const auto& value : values) {
     if (value) {
       sorted.push_back(*value);
-    } else if (missing == results::Missing::kBeyondMaxTrials) {
+    } else if (missing == records::Missing::kBeyondMaxTrials) {
       sorted.push_back(INFINITY);
     }
   }

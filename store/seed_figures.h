@@ -7,22 +7,22 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/results/records.h"
+#include "cbbg/records/experiment_results.h"
 
 namespace cbbg::store {
 
 // The figure `name` of the results' schema, or of every run; nullptr for neither.
-const results::Figure* find_figure(const results::ExperimentResults& results,
+const records::Figure* find_figure(const records::ExperimentResults& results,
                                    const std::string& name);
 
 // Per seed of arm `arm`, the figure's value (none where the seed has none).
-std::vector<std::optional<double>> seed_values(const results::ExperimentResults& results,
-                                               std::size_t arm, const results::Figure& figure);
+std::vector<std::optional<double>> seed_values(const records::ExperimentResults& results,
+                                               std::size_t arm, const records::Figure& figure);
 
 // The values a median, min or max ranks, sorted: a missing one as beyond every other
 // (infinity) under Missing::kBeyondMaxTrials, else left out.
 std::vector<double> ranked(const std::vector<std::optional<double>>& values,
-                           results::Missing missing);
+                           records::Missing missing);
 // The median of sorted values (the mean of the middle two for an even count); NaN for none.
 double middle(const std::vector<double>& sorted);
 

@@ -19,21 +19,21 @@ struct Evaluated {
   int balanced = 0;
 };
 
-Evaluated evaluated(const results::ExperimentResults& point, std::size_t arm) {
+Evaluated evaluated(const records::ExperimentResults& point, std::size_t arm) {
   Evaluated count;
   for (std::size_t s = 0; s < point.seeds.size(); ++s) {
-    for (const results::EvaluationRecord& record : point.run(arm, s).evaluation) {
+    for (const records::EvaluationRecord& record : point.run(arm, s).evaluation) {
       ++count.runs;
-      count.balanced += record.outcome.status == results::TrialStatus::kSuccess ? 1 : 0;
+      count.balanced += record.outcome.status == records::TrialStatus::kSuccess ? 1 : 0;
     }
   }
   return count;
 }
 
 // The figures of one arm at one grid point, after the point's name and values.
-void append_arm_figures(const results::ExperimentResults& point, std::size_t arm,
+void append_arm_figures(const records::ExperimentResults& point, std::size_t arm,
                         const std::function<void(const std::string&)>& column) {
-  const results::Figure& headline =
+  const records::Figure& headline =
       *find_figure(point, point.schema.headline_name());  // check_schema: it is one
   const std::vector<double> sorted = ranked(seed_values(point, arm, headline), headline.missing);
   int succeeded = 0;
@@ -58,7 +58,7 @@ void append_arm_figures(const results::ExperimentResults& point, std::size_t arm
 }  // namespace
 
 std::string sweep_csv(const config::Sweep& sweep,
-                      const std::vector<results::ExperimentResults>& results) {
+                      const std::vector<records::ExperimentResults>& results) {
   const std::string name = results.front().schema.headline_name();
   std::string csv = "point";
   // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on chains of operator+.
@@ -72,7 +72,7 @@ std::string sweep_csv(const config::Sweep& sweep,
   for (const char* evaluation : {"evaluated", "balanced", "balance_rate"}) column(evaluation);
   csv += '\n';
   for (std::size_t p = 0; p < results.size(); ++p) {
-    const results::ExperimentResults& point = results[p];
+    const records::ExperimentResults& point = results[p];
     for (std::size_t a = 0; a < point.arms.size(); ++a) {
       csv += point_name(p, results.size());
       for (const std::string& value : sweep.values(p)) column(csv_field(value));

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cbbg/config/sweep.h"
-#include "cbbg/results/records.h"
+#include "cbbg/records/experiment_results.h"
 
 namespace cbbg::store {
 
@@ -16,6 +16,6 @@ namespace cbbg::store {
 // and angles (exp1, exp3), those that balanced, and their ratio, the balance rate (empty
 // without runs). `results[p]` is grid point p's.
 std::string sweep_csv(const config::Sweep& sweep,
-                      const std::vector<results::ExperimentResults>& results);
+                      const std::vector<records::ExperimentResults>& results);
 
 }  // namespace cbbg::store

@@ -14,11 +14,11 @@
 
 namespace cbbg::store {
 
-using results::EvaluationRecord;
-using results::to_string;
-using results::TrialOutcome;
-using results::TrialRecord;
-using results::TrialStatus;
+using records::EvaluationRecord;
+using records::to_string;
+using records::TrialOutcome;
+using records::TrialRecord;
+using records::TrialStatus;
 namespace {
 
 constexpr const char* kRecordFormat = "cbbg-task 2";
@@ -77,7 +77,7 @@ TrialOutcome read_outcome(std::istringstream& in, const std::string& source) {
 }
 
 // "VALUE NAME", VALUE "-" for none: the name is the rest of the line, spaces and all.
-results::NamedValue read_value(std::istringstream& in, const std::string& source) {
+records::NamedValue read_value(std::istringstream& in, const std::string& source) {
   std::string value;
   in >> value;
   std::string name;
@@ -151,7 +151,7 @@ std::string serialize_run(const SeedRun& run) {
     out << "trial " << record.trial << ' ' << format_number(record.k1);
     write_outcome(out, record.outcome);
     out << "\n";
-    for (const results::NamedValue& value : record.values) {
+    for (const records::NamedValue& value : record.values) {
       out << "value " << value_text(value.value) << ' ' << value.name << "\n";
     }
   }
@@ -160,7 +160,7 @@ std::string serialize_run(const SeedRun& run) {
     write_outcome(out, record.outcome);
     out << "\n";
   }
-  for (const results::SeedFigure& figure : run.figures) {
+  for (const records::SeedFigure& figure : run.figures) {
     out << "figure " << value_text(figure.value) << ' ' << figure.name << "\n";
   }
   out << "end\n";

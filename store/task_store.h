@@ -9,12 +9,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "cbbg/results/records.h"
-#include "cbbg/results/task_storage.h"
+#include "cbbg/records/experiment_results.h"
+#include "cbbg/records/task_storage.h"
 
 namespace cbbg::store {
 
-using results::SeedRun;
+using records::SeedRun;
 
 // A task record of an earlier cbbg (an earlier record format), which this one does not read: its
 // run cannot be continued, only started again.
@@ -23,7 +23,7 @@ class EarlierTaskRecord : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-class TaskStore final : public results::TaskStorage {
+class TaskStore final : public records::TaskStorage {
  public:
   // Keeps tasks in `directory`, created if missing.
   explicit TaskStore(std::filesystem::path directory);

@@ -16,9 +16,9 @@
 
 namespace cbbg::store {
 
-using results::LearntState;
-using results::LearntWeights;
-using results::WeightsProvenance;
+using records::LearntState;
+using records::LearntWeights;
+using records::WeightsProvenance;
 namespace {
 
 // "weights file 'w.txt'": how every message names the file.
@@ -382,7 +382,7 @@ void check_savable(const LearntWeights& weights) {
        {std::pair<std::string, const LearntState*>{"actor", &weights.actor},
         {"critic", &weights.critic}}) {
     if (role == "actor" && state->parts.empty()) fail("the actor learnt nothing");
-    for (const results::LearntPart& part : state->parts) {
+    for (const records::LearntPart& part : state->parts) {
       if (!blocks::is_part_name(part.name) || part.values.size() == 0) {
         fail(role + " part '" + part.name + "' must be a name of letters, digits and '_' with " +
              "at least one number");
@@ -425,7 +425,7 @@ std::string format_weights(const LearntWeights& weights) {
   for (const auto& [role, state] :
        {std::pair<std::string, const LearntState*>{"actor", &weights.actor},
         {"critic", &weights.critic}}) {
-    for (const results::LearntPart& part : state->parts) {
+    for (const records::LearntPart& part : state->parts) {
       const std::string count = std::to_string(part.values.size());
       line(role, version == 1 ? count : part.name + " " + count);
       for (const double value : part.values) text.append(format_number(value)).append("\n");

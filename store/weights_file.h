@@ -1,5 +1,5 @@
 #pragma once
-// Learnt-weight checkpoints (results/learnt_state.h) saved to and loaded from a text file
+// Learnt-weight checkpoints (records/learnt_state.h) saved to and loaded from a text file
 // (docs/weights-format.md). A checkpoint lets a run start from weights learnt earlier and
 // `cbbg eval` measure a learnt policy without learning again.
 
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cbbg/config/config.h"
-#include "cbbg/results/learnt_state.h"
+#include "cbbg/records/learnt_state.h"
 
 namespace cbbg::store {
 
@@ -17,7 +17,7 @@ namespace cbbg::store {
 inline constexpr const char* kWeightsFormat = "cbbg-weights";
 inline constexpr int kWeightsFormatVersion = 2;
 
-using results::LearntWeights;
+using records::LearntWeights;
 
 // Writes `weights` to `path` in the text format, every number in the shortest text that
 // reads back to the same double: version 1 when both learners learnt "weights" alone, one

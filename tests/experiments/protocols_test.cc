@@ -124,7 +124,7 @@ TEST(Protocols, NoCodeOutsideAProtocolsFilesNamesIt) {
       experiments / "experiments.h", source / "config" / "parameters.h"};
   int files = 0;
   for (const char* folder : {"apps", "blocks", "config", "diagrams", "experiments", "plant",
-                             "replay", "results", "store"}) {
+                             "records", "replay", "store"}) {
     for (const auto& entry : std::filesystem::recursive_directory_iterator(source / folder)) {
       const std::string ending = entry.path().extension().string();
       if (ending != ".cc" && ending != ".h") continue;

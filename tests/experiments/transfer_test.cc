@@ -18,7 +18,7 @@
 #include "cbbg/framework/block_context.h"
 #include "cbbg/framework/diagram_builder.h"
 #include "cbbg/framework/number_text.h"
-#include "cbbg/results/paired_statistics.h"
+#include "cbbg/records/paired_statistics.h"
 #include "cbbg/store/results_writer.h"
 #include "cbbg/store/task_store.h"
 
@@ -265,7 +265,7 @@ TEST(Transfer, TrialsToSkillIsOneValueWhereverItAppears) {
       store::summary_json(results, store::run_facts(config::read_parameters(config)));
   EXPECT_THAT(summary, HasSubstr("\"trials_to_skill\": ["));  // per seed, null for none
   EXPECT_THAT(summary, Not(ContainsRegex("\"trials_to_skill\": [0-9]")));  // never summed
-  const results::PairedComparison comparison = results::compare_paired(paired[0], paired[1]);
+  const records::PairedComparison comparison = records::compare_paired(paired[0], paired[1]);
   EXPECT_THAT(summary, HasSubstr("\"figure\": \"trials_to_skill\", \"mean_b_minus_a\": " +
                                  format_number(comparison.mean) + ","));
 }

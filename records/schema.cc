@@ -1,10 +1,10 @@
-#include "cbbg/results/schema.h"
+#include "cbbg/records/schema.h"
 
 #include <algorithm>
 #include <set>
 #include <stdexcept>
 
-namespace cbbg::results {
+namespace cbbg::records {
 namespace {
 
 bool is_word(const std::string& text) {
@@ -114,4 +114,4 @@ void check_schema(const ResultsSchema& schema, const std::string& protocol) {
   }
 }
 
-}  // namespace cbbg::results
+}  // namespace cbbg::records

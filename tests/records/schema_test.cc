@@ -1,13 +1,13 @@
 // A protocol's results schema: what check_schema refuses, in one line naming the protocol.
 
-#include "cbbg/results/schema.h"
+#include "cbbg/records/schema.h"
 
 #include <stdexcept>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace cbbg::results {
+namespace cbbg::records {
 namespace {
 
 using ::testing::ThrowsMessage;
@@ -60,4 +60,4 @@ TEST(ResultsSchema, AFigureIsFoundByName) {
 }
 
 }  // namespace
-}  // namespace cbbg::results
+}  // namespace cbbg::records

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace cbbg::results {
+namespace cbbg::records {
 
 struct PairedComparison {
   std::vector<double> differences;  // b[k] - a[k], per seed
@@ -31,4 +31,4 @@ PairedComparison compare_paired(const std::vector<double>& a, const std::vector<
                                 std::uint64_t bootstrap_seed = 1, int resamples = 10000,
                                 double level = 0.95);
 
-}  // namespace cbbg::results
+}  // namespace cbbg::records

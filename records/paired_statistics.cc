@@ -1,4 +1,4 @@
-#include "cbbg/results/paired_statistics.h"
+#include "cbbg/records/paired_statistics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <boost/math/distributions/binomial.hpp>
 
-namespace cbbg::results {
+namespace cbbg::records {
 
 double sign_test_p(int positive, int negative) {
   const int n = positive + negative;
@@ -55,4 +55,4 @@ PairedComparison compare_paired(const std::vector<double>& a, const std::vector<
   return result;
 }
 
-}  // namespace cbbg::results
+}  // namespace cbbg::records

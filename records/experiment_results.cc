@@ -1,6 +1,6 @@
-#include "cbbg/results/records.h"
+#include "cbbg/records/experiment_results.h"
 
-namespace cbbg::results {
+namespace cbbg::records {
 namespace {
 
 std::optional<double> find_value(const std::vector<NamedValue>& values, const std::string& name) {
@@ -32,4 +32,4 @@ std::optional<double> SeedRun::figure(const std::string& name) const {
   return find_value(figures, name);
 }
 
-}  // namespace cbbg::results
+}  // namespace cbbg::records

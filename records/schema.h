@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace cbbg::results {
+namespace cbbg::records {
 
 enum class ValueType { kInteger, kNumber, kFlag };
 const char* to_string(ValueType type);
@@ -106,4 +106,4 @@ const std::vector<Figure>& run_figures();
 // not one).
 void check_schema(const ResultsSchema& schema, const std::string& protocol);
 
-}  // namespace cbbg::results
+}  // namespace cbbg::records

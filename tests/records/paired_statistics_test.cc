@@ -1,13 +1,13 @@
 // Paired statistics against values worked by hand.
 
-#include "cbbg/results/paired_statistics.h"
+#include "cbbg/records/paired_statistics.h"
 
 #include <cmath>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace cbbg::results {
+namespace cbbg::records {
 namespace {
 
 TEST(PairedStatistics, TheSignTestIsTheExactBinomialTail) {
@@ -70,4 +70,4 @@ TEST(PairedStatistics, RefusesListsOfDifferentSeeds) {
 }
 
 }  // namespace
-}  // namespace cbbg::results
+}  // namespace cbbg::records
