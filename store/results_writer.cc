@@ -11,9 +11,8 @@
 #include "cbbg/store/weights_file.h"
 
 #include <algorithm>
-#include <charconv>
+#include <cmath>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace cbbg::store {
@@ -54,6 +53,30 @@ Json json_value(ValueType type, const std::optional<double>& value) {
   return *value;
 }
 
+using Statistic = std::string records::FigureStatistics::*;
+constexpr Statistic kStatistics[] = {
+    &records::FigureStatistics::count, &records::FigureStatistics::median,
+    &records::FigureStatistics::min, &records::FigureStatistics::max};
+
+// A listed figure's statistic over the seeds' values: the seeds with one (a flag: where it
+// holds), or the median, min or max, a missing value ranked as the figure says.
+Json statistic_of(const Figure& figure, const std::vector<std::optional<double>>& values,
+                  Statistic statistic) {
+  if (statistic == &records::FigureStatistics::count) {
+    return std::count_if(values.begin(), values.end(), [&](const auto& value) {
+      return value && (figure.type != ValueType::kFlag || *value != 0.0);
+    });
+  }
+  const std::vector<double> sorted = ranked(values, figure.missing);
+  const double result = sorted.empty()                                 ? NAN
+                        : statistic == &records::FigureStatistics::min ? sorted.front()
+                        : statistic == &records::FigureStatistics::max ? sorted.back()
+                                                                       : middle(sorted);
+  const bool whole =
+      figure.type != ValueType::kNumber && statistic != &records::FigureStatistics::median;
+  return whole && std::isfinite(result) ? Json(static_cast<long long>(result)) : Json(result);
+}
+
 // Listed figures per seed, then their statistics (counts, medians, minima, maxima, in turn).
 void add_listed(Json& arm, const ExperimentResults& results, std::size_t a,
                 const std::vector<Figure>& figures) {
@@ -65,29 +88,11 @@ void add_listed(Json& arm, const ExperimentResults& results, std::size_t a,
     }
     arm[figure.name] = list;
   }
-  using Statistic = std::string records::FigureStatistics::*;
-  for (const Statistic statistic :
-       {&records::FigureStatistics::count, &records::FigureStatistics::median,
-        &records::FigureStatistics::min, &records::FigureStatistics::max}) {
+  for (const Statistic statistic : kStatistics) {
     for (const Figure& figure : figures) {
       const std::string& key = figure.statistics.*statistic;
       if (figure.summary != FigureSummary::kList || key.empty()) continue;
-      const auto values = seed_values(results, a, figure);
-      if (statistic == &records::FigureStatistics::count) {
-        arm[key] = std::count_if(values.begin(), values.end(), [&](const auto& value) {
-          return value && (figure.type != ValueType::kFlag || *value != 0.0);
-        });
-        continue;
-      }
-      const std::vector<double> sorted = ranked(values, figure.missing);
-      const double result = sorted.empty()                                 ? NAN
-                            : statistic == &records::FigureStatistics::min ? sorted.front()
-                            : statistic == &records::FigureStatistics::max ? sorted.back()
-                                                                           : middle(sorted);
-      const bool whole =
-          figure.type != ValueType::kNumber && statistic != &records::FigureStatistics::median;
-      arm[key] =
-          whole && std::isfinite(result) ? Json(static_cast<long long>(result)) : Json(result);
+      arm[key] = statistic_of(figure, seed_values(results, a, figure), statistic);
     }
   }
 }
