@@ -11,12 +11,12 @@ namespace cbbg::experiments {
 
 namespace {
 
-// "weights (49), trace (49)": a learner's parts in messages.
-template <typename Parts, typename Size>
-std::string parts_text(const Parts& parts, Size size) {
+// "weights (49), trace (49)": the parts a learner declares, as records::parts_text shows
+// learnt ones.
+std::string parts_text(const std::vector<StatePart>& parts) {
   std::string text;
-  for (const auto& part : parts) {
-    text += (text.empty() ? "" : ", ") + part.name + " (" + std::to_string(size(part)) + ")";
+  for (const StatePart& part : parts) {
+    text += (text.empty() ? "" : ", ") + part.name + " (" + std::to_string(part.size) + ")";
   }
   return text.empty() ? "nothing" : text;
 }
@@ -42,10 +42,8 @@ std::string parts_difference(const LearntState& state, const blocks::Learner& le
   }
   if (same) return {};
   const char* role = blocks::role_name(learner.learner_role());
-  return what + " holds " + role + " parts " +
-         parts_text(state.parts, [](const LearntPart& p) { return p.values.size(); }) + "; the " +
-         role + " '" + learner.learner_block().path() + "' learns " +
-         parts_text(parts, [](const StatePart& p) { return p.size; });
+  return what + " holds " + role + " parts " + records::parts_text(state) + "; the " + role + " '" +
+         learner.learner_block().path() + "' learns " + parts_text(parts);
 }
 
 }  // namespace

@@ -29,6 +29,8 @@ std::optional<double> TrialRecord::value(const std::string& name) const {
 }
 
 std::optional<double> SeedRun::figure(const std::string& name) const {
+  if (name == "failures_before_success") return failures_before_success;
+  if (name == "succeeded") return succeeded ? 1.0 : 0.0;
   return find_value(figures, name);
 }
 

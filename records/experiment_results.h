@@ -59,7 +59,8 @@ struct SeedRun {
   bool weights_diverged = false;
   // The protocol's own figures (ResultsSchema::figures), by name.
   std::vector<SeedFigure> figures;
-  // The figure named `name`, or none.
+  // The figure named `name`: every run's own (failures_before_success, succeeded, as
+  // records::run_figures declares them) or one of `figures`; none when the run has none.
   std::optional<double> figure(const std::string& name) const;
 };
 

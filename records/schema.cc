@@ -1,17 +1,13 @@
 #include "cbbg/records/schema.h"
 
+#include "cbbg/blocks/learner.h"
+
 #include <algorithm>
 #include <set>
 #include <stdexcept>
 
 namespace cbbg::records {
 namespace {
-
-bool is_word(const std::string& text) {
-  return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-  });
-}
 
 const std::vector<std::string>& plot_names() {
   static const std::vector<std::string> names{"pitch",     "failures",   "skill",
@@ -80,7 +76,7 @@ void check_schema(const ResultsSchema& schema, const std::string& protocol) {
   const std::string where = "protocol '" + protocol + "': ";
   std::set<std::string> columns;
   for (const Column& column : schema.trial_columns) {
-    if (!is_word(column.name)) {
+    if (!blocks::is_part_name(column.name)) {  // the same words as a learnt part's
       throw std::invalid_argument(where + "trial column '" + column.name +
                                   "' is not a word of letters, digits and '_'");
     }

@@ -20,14 +20,7 @@ std::vector<std::optional<double>> seed_values(const records::ExperimentResults&
                                                std::size_t arm, const Figure& figure) {
   std::vector<std::optional<double>> values;
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
-    const records::SeedRun& run = results.run(arm, s);
-    if (figure.name == "failures_before_success") {
-      values.emplace_back(run.failures_before_success);
-    } else if (figure.name == "succeeded") {
-      values.emplace_back(run.succeeded ? 1.0 : 0.0);
-    } else {
-      values.push_back(run.figure(figure.name));
-    }
+    values.push_back(results.run(arm, s).figure(figure.name));
   }
   return values;
 }
