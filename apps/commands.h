@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "cbbg/config/config.h"
-#include "cbbg/config/parameters.h"
 #include "cbbg/config/sweep.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::app {
 
@@ -35,11 +35,11 @@ int run_command(const RunOptions& options);
 // The typed parameters of a run's (or a grid point's) config, with everything a run checks
 // before any work: the edge below which nothing reads the config again. Throws
 // config::ConfigError.
-config::Parameters checked_parameters(const config::Config& config);
+parameters::Parameters checked_parameters(const config::Config& config);
 // Before any work: every arm of the run built once (experiments/arm_checks.h), and `jobs`
 // of its tasks (`arms` x seeds) at once within the machine's memory. Throws
 // config::ConfigError.
-void check_arms_and_memory(const config::Parameters& parameters, std::size_t arms, int jobs);
+void check_arms_and_memory(const parameters::Parameters& parameters, std::size_t arms, int jobs);
 // cbbg run as a sweep (apps/sweep_command.cc): `base` and `sweep` resolved from `options`.
 int sweep_command(const RunOptions& options, const config::Config& base,
                   const config::Sweep& sweep);

@@ -110,7 +110,8 @@ void set_plant_of(const experiments::LearntWeights& weights, config::Config& con
 
 // The evaluation's parameters: the weights' plant, the file, the overrides and --angles,
 // validated, with the evaluation.* conditions applied.
-config::Parameters resolve(const EvalOptions& options, const experiments::LearntWeights& weights) {
+parameters::Parameters resolve(const EvalOptions& options,
+                               const experiments::LearntWeights& weights) {
   config::Config config;
   set_plant_of(weights, config);
   if (!options.config_file.empty()) config.merge_file(options.config_file);
@@ -122,7 +123,7 @@ config::Parameters resolve(const EvalOptions& options, const experiments::Learnt
     }
     config.set("evaluation.angles=" + list + "]", "--angles");
   }
-  const config::Parameters training = diagrams::validated_parameters(config);
+  const parameters::Parameters training = diagrams::validated_parameters(config);
   if (training.evaluation.angles.empty()) {
     throw config::ConfigError("evaluation.angles is empty: give --angles or set some");
   }
@@ -146,7 +147,7 @@ std::string evaluation_csv(const experiments::PolicyEvaluation& evaluation) {
 }
 
 // `push`: the flags' push (push_from), already checked.
-void print_table(const experiments::PolicyEvaluation& evaluation, const config::Parameters& p,
+void print_table(const experiments::PolicyEvaluation& evaluation, const parameters::Parameters& p,
                  const experiments::LearntWeights& weights, const EvalOptions& options,
                  const std::optional<blocks::PushParams>& push) {
   const experiments::WeightsProvenance& from = weights.provenance;
@@ -180,7 +181,7 @@ void print_table(const experiments::PolicyEvaluation& evaluation, const config::
 }
 
 // --linearise's analysis; a plant kind without a linearisation is the user's choice.
-experiments::ActorLinearisation linearised(const config::Parameters& parameters,
+experiments::ActorLinearisation linearised(const parameters::Parameters& parameters,
                                            const diagrams::ClosedLoopFactory& policy,
                                            const experiments::LearntWeights& weights) {
   try {
@@ -226,7 +227,7 @@ diagrams::ClosedLoopFactory policy_of(const std::string& arm,
 }  // namespace
 
 int eval_command(const EvalOptions& options) {
-  config::Parameters parameters;
+  parameters::Parameters parameters;
   experiments::LearntWeights weights;
   experiments::EvaluationSettings settings;
   diagrams::ClosedLoopOptions loop;

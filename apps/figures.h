@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/framework/graphviz.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::app {
 
@@ -25,20 +25,20 @@ inline std::string replay_figure(const std::string& arm) { return "replay_" + ar
 // file of the user's. A missing Python/matplotlib, Graphviz or replay page is reported as a
 // warning: the data files stand on their own. Returns 0 when every figure was made, 1 when
 // one could not be, 2 when the plotting script refused a name a user's file holds.
-int draw_figures(const std::filesystem::path& directory, const config::Parameters& parameters,
+int draw_figures(const std::filesystem::path& directory, const parameters::Parameters& parameters,
                  const FigureOptions& options);
 
 // The arms whose trials DIR holds (its trials.csv; else the parameters' run's).
 std::vector<std::string> run_arms(const std::filesystem::path& directory,
-                                  const config::RunParams& run);
+                                  const parameters::RunParams& run);
 // What draw_figures writes itself for those arms.
 std::vector<std::string> own_figure_names(const std::vector<std::string>& arms,
                                           const FigureOptions& options);
 
 // DIR/figures/replay_<arm>.html per arm of the run: its first seed's first trial, first
 // successful trial and last trial. Warns and returns false when they cannot be written.
-bool write_run_replays(const std::filesystem::path& directory, const config::Parameters& parameters,
-                       const std::string& run_name);
+bool write_run_replays(const std::filesystem::path& directory,
+                       const parameters::Parameters& parameters, const std::string& run_name);
 
 // A file cbbg installs in share/cbbg/: the path in the environment variable `override`, else
 // share/cbbg/ beside the directory of this executable (bin/ when installed, apps/ in the build
@@ -50,7 +50,7 @@ void set_share_directory(const std::filesystem::path& share);
 int run_plot_script(const std::filesystem::path& directory, bool quiet);
 
 // Renders the closed loop of preset `name` for `parameters` to `output` (.dot, .svg or .png).
-void draw_diagram(const std::string& name, const config::Parameters& parameters,
+void draw_diagram(const std::string& name, const parameters::Parameters& parameters,
                   const std::filesystem::path& output, const GraphvizOptions& options);
 
 // The telemetry multiplexer of the closed loop named `name`, and the pose it records: left

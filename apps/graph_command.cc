@@ -15,7 +15,7 @@ namespace cbbg::app {
 
 int graph_command(const GraphOptions& options) {
   config::Config config;
-  config::Parameters parameters;
+  parameters::Parameters parameters;
   std::string diagram = options.diagram;
   try {
     if (!options.config_file.empty()) config.merge_file(options.config_file);

@@ -69,7 +69,7 @@ int run_plot_script(const std::filesystem::path& directory, bool quiet) {
 }
 
 std::vector<std::string> run_arms(const std::filesystem::path& directory,
-                                  const config::RunParams& run) {
+                                  const parameters::RunParams& run) {
   // trials.csv names the arms that ran, a user's own too; config.yaml may not know them.
   std::vector<std::string> arms;
   try {
@@ -91,7 +91,7 @@ std::vector<std::string> own_figure_names(const std::vector<std::string>& arms,
   return names;
 }
 
-int draw_figures(const std::filesystem::path& directory, const config::Parameters& parameters,
+int draw_figures(const std::filesystem::path& directory, const parameters::Parameters& parameters,
                  const FigureOptions& options) {
   const int plotted = run_plot_script(directory, options.quiet);
   if (plotted == kUserError) return kUserError;  // a figure's name is taken by a user's file
@@ -124,7 +124,7 @@ int draw_figures(const std::filesystem::path& directory, const config::Parameter
   return complete ? 0 : kMachineError;
 }
 
-void draw_diagram(const std::string& name, const config::Parameters& parameters,
+void draw_diagram(const std::string& name, const parameters::Parameters& parameters,
                   const std::filesystem::path& output, const GraphvizOptions& options) {
   const diagrams::ClosedLoop loop = name == diagrams::kLearntActor
                                         ? diagrams::build_preset(name, parameters)
@@ -139,7 +139,7 @@ std::vector<std::string> telemetry_blocks(const std::string& name) {
 
 int plot_command(const std::filesystem::path& directory) {
   config::Config config;
-  config::Parameters parameters;
+  parameters::Parameters parameters;
   try {
     std::error_code error;
     if (!std::filesystem::is_regular_file(directory / "config.yaml", error)) {
@@ -147,7 +147,7 @@ int plot_command(const std::filesystem::path& directory) {
                                 "' is not a results directory (it has no config.yaml)");
     }
     config.merge_file(directory / "config.yaml");
-    parameters = config::read_parameters(config);
+    parameters = parameters::read_parameters(config);
     check_output_directory(directory / "figures", "cbbg plot");
     if (!is_sweep(directory)) {
       store::Manifest(directory / "figures")

@@ -62,8 +62,8 @@ int replay_command(const ReplayOptions& options) {
   return 0;
 }
 
-bool write_run_replays(const std::filesystem::path& directory, const config::Parameters& parameters,
-                       const std::string& run_name) {
+bool write_run_replays(const std::filesystem::path& directory,
+                       const parameters::Parameters& parameters, const std::string& run_name) {
   if (parameters.log.decimation == 0) {
     spdlog::info("no replays: the run logged no ticks (log.decimation: 0)");
     return true;

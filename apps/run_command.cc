@@ -161,7 +161,7 @@ void print_summary(const experiments::ExperimentResults& results) {
 
 // Learning runs of the experiment: every (arm, seed) of an arm with basal ganglia, under a
 // protocol that learns.
-long long learning_runs(const config::RunParams& run, const std::vector<std::string>& arms) {
+long long learning_runs(const parameters::RunParams& run, const std::vector<std::string>& arms) {
   const experiments::Protocol* protocol = experiments::find_protocol(run.experiment);
   if (protocol != nullptr && !protocol->learns) return 0;
   const auto learning = std::count_if(arms.begin(), arms.end(), [](const std::string& arm) {
@@ -173,7 +173,7 @@ long long learning_runs(const config::RunParams& run, const std::vector<std::str
 // Learning starts from the file's weights in every arm that learns: each must have the
 // layout they were made for.
 void check_initial_weights(const experiments::LearntWeights& weights,
-                           const config::Parameters& parameters,
+                           const parameters::Parameters& parameters,
                            const std::vector<std::string>& arms,
                            const std::filesystem::path& file) {
   for (const std::string& name : arms) {
@@ -187,7 +187,7 @@ void check_initial_weights(const experiments::LearntWeights& weights,
 // What a run needs before it starts: everything checked, the work directory made.
 struct PreparedRun {
   config::Config config;  // what the results directory records
-  config::Parameters parameters;
+  parameters::Parameters parameters;
   std::vector<std::string> arms;  // the arms the experiment runs
   std::optional<store::RunDirectory> directory;
   std::optional<experiments::LearntWeights> initial_weights;
@@ -275,7 +275,7 @@ void save_learnt_weights(const experiments::ExperimentResults& results,
 
 void execute(const RunOptions& options, PreparedRun& run) {
   const config::Config& config = run.config;
-  const config::RunParams& what = run.parameters.run;
+  const parameters::RunParams& what = run.parameters.run;
   store::RunDirectory& directory = *run.directory;
   const std::size_t arms = run.arms.size();
   const std::size_t tasks = arms * static_cast<std::size_t>(what.seeds);
@@ -323,14 +323,14 @@ std::string way_forward(const store::RunDirectory& directory, const std::excepti
 
 }  // namespace
 
-void check_arms_and_memory(const config::Parameters& parameters, std::size_t arms, int jobs) {
+void check_arms_and_memory(const parameters::Parameters& parameters, std::size_t arms, int jobs) {
   const std::size_t tasks = arms * static_cast<std::size_t>(parameters.run.seeds);
   experiments::check_run_memory(experiments::check_arms_build(parameters),
                                 std::min(tasks, static_cast<std::size_t>(jobs)));
 }
 
-config::Parameters checked_parameters(const config::Config& config) {
-  config::Parameters parameters = diagrams::validated_parameters(config);
+parameters::Parameters checked_parameters(const config::Config& config) {
+  parameters::Parameters parameters = diagrams::validated_parameters(config);
   experiments::check_run_names(parameters.run);
   experiments::check_evaluation_conditions(parameters);
   return parameters;

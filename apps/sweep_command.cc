@@ -30,12 +30,12 @@ struct SweepPlan {
   config::Config base;
   config::Sweep sweep;
   std::vector<config::Config> points;
-  std::vector<config::Parameters> parameters;  // each point's, checked
+  std::vector<parameters::Parameters> parameters;  // each point's, checked
   std::vector<std::size_t> first_task;
   std::size_t tasks = 0;
 };
 
-std::size_t point_tasks(const config::RunParams& point) {
+std::size_t point_tasks(const parameters::RunParams& point) {
   return experiments::experiment_arms(point).size() * static_cast<std::size_t>(point.seeds);
 }
 
@@ -50,7 +50,7 @@ SweepPlan plan(config::Config base, config::Sweep sweep, std::optional<int> jobs
       result.parameters.push_back(checked_parameters(result.points.back()));
       experiments::check_protocol(result.parameters.back(), nullptr);  // sweeps start from zero
       if (jobs) {
-        const config::Parameters& point = result.parameters.back();
+        const parameters::Parameters& point = result.parameters.back();
         check_arms_and_memory(point, experiments::experiment_arms(point.run).size(), *jobs);
       }
     } catch (const config::ConfigError& error) {
@@ -119,7 +119,7 @@ std::vector<std::string> missing_tasks(const SweepPlan& plan,
   std::vector<std::string> missing;
   for (std::size_t p = 0; p < plan.points.size(); ++p) {
     const store::TaskStore store(directory.tasks(p, plan.points.size()));
-    const config::RunParams& point = plan.parameters[p].run;
+    const parameters::RunParams& point = plan.parameters[p].run;
     const auto arms = experiments::experiment_arms(point);
     const auto seeds = static_cast<std::size_t>(point.seeds);
     for (std::size_t t = 0; t < arms.size() * seeds; ++t) {
@@ -259,7 +259,7 @@ void print_run_status(const std::filesystem::path& target, const store::RunState
               << "\n";
     return;
   }
-  const config::Parameters parameters = checked_parameters(state.config);
+  const parameters::Parameters parameters = checked_parameters(state.config);
   const std::size_t tasks = point_tasks(parameters.run);
   std::cout << name << ": " << (state.phase == Phase::kRunning ? "running" : "interrupted") << ", "
             << store::finished_tasks(state.tasks, tasks) << " of " << tasks << " task(s) done"

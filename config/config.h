@@ -1,9 +1,10 @@
 #pragma once
-// The configuration tree of a cbbg run: every key, made from the declarations of the params
-// structs (config/parameters.h, and a user's registered sections: config/declared_keys.h),
-// merged from their defaults, a YAML file and `--set key.path=value` overrides, in that
-// order. Types, choices and ranges are checked here, as each value arrives; invariants a
-// block owns beyond its ranges, and rules across keys, by diagrams::validated_parameters.
+// The configuration of a cbbg run: every registered key (config/declared_keys.h: the run's
+// tree registers the blocks' and plants' sections, parameters/parameters.h; each protocol its
+// own; a user's the same way), merged from their defaults, a YAML file and `--set key.path=value`
+// overrides, in that order. Types, choices and ranges are checked here, as each value arrives;
+// invariants a block owns beyond its ranges, and rules across keys, by
+// diagrams::validated_parameters.
 
 #include <cstdint>
 #include <filesystem>
@@ -61,8 +62,8 @@ struct KeySpec {
   int list_size = 0;  // kNumbers: exact length when > 0
 };
 
-// Every key, in the order `cbbg list` and config.yaml show them: the built-in tree's, then
-// the registered sections'.
+// Every key, in the order `cbbg list` and config.yaml show them: the run's tree, each
+// protocol's sections where it placed them, then the sections registered since.
 const std::vector<KeySpec>& schema();
 // What `spec` allows, as messages and the docs' table say it: "in (0, 1]", "> 0", "one of
 // pd, lqr", "6 numbers >= 0".
@@ -73,7 +74,7 @@ void check_default(const KeySpec& spec);
 
 class Config {
  public:
-  // The built-in defaults.
+  // The defaults of every key registered so far.
   Config();
 
   // Merges a YAML document; `source` names it in error messages (a file name).

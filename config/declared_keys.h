@@ -1,7 +1,8 @@
 #pragma once
 // The config's keys made from params structs' declarations (framework/parameters.h), and the
-// structs read back from a config. The built-in tree (config/parameters.h) is made so; a
-// user's own section is too, once registered:
+// structs read back from a config. The config knows no section of its own: the run's tree
+// (parameters/parameters.h) registers the blocks' and plants' sections, each protocol its own,
+// and a user's section joins them the same way:
 //
 //   struct DlqrParams {
 //     double q_theta = 100.0;
@@ -11,7 +12,7 @@
 //   };
 //   cbbg::config::register_section<DlqrParams>("dlqr");   // before any Config is made
 //   ... --set dlqr.q_theta=50, --grid dlqr.q_theta=10,100, config.yaml, `cbbg list` ...
-//   // below the edge, from the typed tree (config/parameters.h) a factory is given:
+//   // below the edge, from the typed tree (parameters/parameters.h) a factory is given:
 //   const DlqrParams dlqr = cbbg::config::read_section<DlqrParams>(parameters.own, "dlqr");
 
 #include <array>
@@ -217,11 +218,19 @@ std::vector<KeySpec> declared_keys(Params params, std::string_view section) {
   return keys;
 }
 
-// Adds keys to the schema after the built-in ones. Throws std::invalid_argument naming a key
-// that is there already, or whose default its declaration refuses (check_default). Register before
-// making any Config: a Config holds the keys that existed when it was made, and the defaults of the
-// others.
-void register_keys(std::vector<KeySpec> keys);
+// Adds keys to the schema: after the last key of `after` (a key, or a section's name) where
+// given, else at the end. Throws std::invalid_argument naming a key that is there already,
+// whose default its declaration refuses (check_default), or an `after` no key has. Register
+// before making any Config: a Config holds the keys that existed when it was made.
+void register_keys(std::vector<KeySpec> keys, std::string_view after = {});
+// Adds keys before every other: the run's own tree (parameters/parameters.h), registered
+// before main. Throws as register_keys.
+void register_leading_keys(std::vector<KeySpec> keys);
+
+// `words` and the words registered for the text key `key` since (register_choice): what a key
+// open to a user's words declares it allows.
+std::vector<std::string> with_registered_words(std::string_view key,
+                                               std::vector<std::string> words);
 
 // One more word the text key `key` allows (a plant kind a user registers for plant.kind),
 // with its meaning appended to the key's. Throws std::invalid_argument for a key that is not
@@ -229,11 +238,11 @@ void register_keys(std::vector<KeySpec> keys);
 void register_choice(std::string_view key, const std::string& word, std::string_view meaning);
 
 // The section `name` of `config` (a Config, or the OwnSections of the typed tree) as its
-// struct.
+// struct; `name` "" for a struct of keys without a section.
 template <typename Params, class Source>
 Params read_section(const Source& config, std::string_view name) {
   Params params;
-  KeyReader reader(config, std::string(name) + ".");
+  KeyReader reader(config, name.empty() ? std::string() : std::string(name) + ".");
   params.describe(reader);
   return params;
 }

@@ -1,7 +1,7 @@
 #pragma once
-// The values of the sections users registered (config/declared_keys.h), carried in the typed
-// parameter tree beside the built-in sections, so a user's factory below the edge reads its
-// own struct from the tree as the library's factories read theirs:
+// The values of the registered sections (a protocol's, a user's: config/declared_keys.h),
+// carried in the typed parameter tree beside the tree's own sections, so a protocol or a
+// user's factory below the edge reads its own struct from the tree:
 //
 //   const DlqrParams dlqr = cbbg::config::read_section<DlqrParams>(parameters.own, "dlqr");
 

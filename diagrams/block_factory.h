@@ -7,23 +7,31 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 
-#include "cbbg/config/parameters.h"
+#include "cbbg/config/declared_keys.h"
 #include "cbbg/framework/block.h"
+#include "cbbg/parameters/parameters.h"
 #include "cbbg/plant/plant_signals.h"
 
 namespace cbbg::diagrams {
 
 // What the diagram tells a slot's factory.
 struct SlotRequest {
-  std::string name;                      // the block's name: keep it (random streams use it)
-  const config::Parameters& parameters;  // the run's (a user's section: parameters.own)
-  int num_features = 0;                  // critic, actor: n, the features' size; else 0
+  std::string name;                          // the block's name: keep it (random streams use it)
+  const parameters::Parameters& parameters;  // the run's (a user's section: parameters.own)
+  int num_features = 0;                      // critic, actor: n, the features' size; else 0
   // critic, actor: false when the loop evaluates what was learnt: the block must act but
   // never change what it learns (blocks::Learner::learnt_parts).
   bool learns = true;
   int plant_state_size = 0;                     // sensors: the plant's output "state" size
   const plant::SignalIndex* signals = nullptr;  // sensors: where each signal sits in it
+
+  // The block's own registered section (config::register_section), as its struct.
+  template <class Params>
+  Params section(std::string_view section_name) const {
+    return config::read_section<Params>(parameters.own, section_name);
+  }
 };
 
 // Makes the block of one slot. Called once per diagram built (so once per task, maybe in
@@ -33,7 +41,7 @@ struct SlotRequest {
 class BlockFactory {
  public:
   using Named =
-      std::function<std::shared_ptr<Block>(const std::string& name, const config::Parameters&)>;
+      std::function<std::shared_ptr<Block>(const std::string& name, const parameters::Parameters&)>;
   using Requested = std::function<std::shared_ptr<Block>(const SlotRequest&)>;
 
   BlockFactory() = default;
@@ -45,7 +53,7 @@ class BlockFactory {
   template <class F>
   requires(!std::is_invocable_v<const F&, const SlotRequest&> &&
            std::is_invocable_r_v<std::shared_ptr<Block>, const F&, const std::string&,
-                                 const config::Parameters&>) BlockFactory(F factory)
+                                 const parameters::Parameters&>) BlockFactory(F factory)
       : named_(std::move(factory)) {}  // NOLINT: any callable converts
 
   explicit operator bool() const { return named_ || requested_; }
@@ -53,7 +61,7 @@ class BlockFactory {
     return requested_ ? requested_(request) : named_(request.name, request.parameters);
   }
   std::shared_ptr<Block> operator()(const std::string& name,
-                                    const config::Parameters& parameters) const {
+                                    const parameters::Parameters& parameters) const {
     return (*this)(SlotRequest{name, parameters});
   }
   // The callable behind it, if it is a T (as std::function::target).

@@ -4,12 +4,12 @@
 #include <optional>
 #include <stdexcept>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/configured_blocks.h"
 #include "cbbg/diagrams/slot_check.h"
 #include "cbbg/framework/diagram_builder.h"
 #include "cbbg/framework/number_text.h"
 #include "cbbg/framework/primitives/constant_source.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::diagrams {
 namespace {
@@ -19,7 +19,7 @@ const OutputPort& constant(DiagramBuilder& builder, const std::string& name, dou
 }
 
 // The blocks of the basal ganglia's slots, each the user's or the parameters' own.
-BasalGangliaBlocks basal_ganglia_blocks(const config::Parameters& p,
+BasalGangliaBlocks basal_ganglia_blocks(const parameters::Parameters& p,
                                         const ControllerOptions& options) {
   const ControllerSlots& slots = options.slots;
   BasalGangliaBlocks blocks;
@@ -41,9 +41,9 @@ BasalGangliaBlocks basal_ganglia_blocks(const config::Parameters& p,
 
 // The run's parameters with the options' own choices (the actor's rule): a copy only when
 // the options change something.
-const config::Parameters& with_options(const config::Parameters& p,
-                                       const ControllerOptions& options,
-                                       std::optional<config::Parameters>& adjusted) {
+const parameters::Parameters& with_options(const parameters::Parameters& p,
+                                           const ControllerOptions& options,
+                                           std::optional<parameters::Parameters>& adjusted) {
   if (!options.actor_rule) return p;
   adjusted = p;
   adjusted->actor.rule = *options.actor_rule;
@@ -51,7 +51,8 @@ const config::Parameters& with_options(const config::Parameters& p,
 }
 
 // The omega slot's block, or the schedule in the options' mode.
-std::shared_ptr<Block> omega_block(const ControllerOptions& options, const config::Parameters& p) {
+std::shared_ptr<Block> omega_block(const ControllerOptions& options,
+                                   const parameters::Parameters& p) {
   if (options.slots.omega) {
     std::shared_ptr<Block> block = options.slots.omega({"omega", p});
     check_slot_block(block.get(), "omega slot", nullptr, "omega", 1);
@@ -77,7 +78,7 @@ void ControllerOptions::validate() const {
   }
 }
 
-CbbgController::CbbgController(std::string name, const config::Parameters& parameters,
+CbbgController::CbbgController(std::string name, const parameters::Parameters& parameters,
                                const ControllerOptions& options)
     : Diagram(std::move(name)) {
   options.validate();
@@ -94,7 +95,7 @@ CbbgController::CbbgController(std::string name, const config::Parameters& param
     supervisor_action = &constant(builder, "no_supervisor", 0.0);
   }
   if (options.basal_ganglia) {
-    std::optional<config::Parameters> adjusted;
+    std::optional<parameters::Parameters> adjusted;
     add_basal_ganglia(builder, with_options(parameters, options, adjusted), options,
                       *supervisor_action);
   } else {
@@ -103,7 +104,7 @@ CbbgController::CbbgController(std::string name, const config::Parameters& param
   builder.build_into();
 }
 
-void CbbgController::add_basal_ganglia(DiagramBuilder& builder, const config::Parameters& p,
+void CbbgController::add_basal_ganglia(DiagramBuilder& builder, const parameters::Parameters& p,
                                        const ControllerOptions& options,
                                        const OutputPort& supervisor_action) {
   const Block& normaliser = builder.add(

@@ -10,11 +10,11 @@
 
 #include "cbbg/blocks/actor.h"
 #include "cbbg/blocks/omega_schedule.h"
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/basal_ganglia.h"
 #include "cbbg/diagrams/cerebellum.h"
 #include "cbbg/diagrams/controller_slots.h"
 #include "cbbg/framework/diagram.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg {
 class DiagramBuilder;
@@ -73,7 +73,7 @@ struct ControllerOptions {
 /// reads them.
 class CbbgController final : public Diagram {
  public:
-  CbbgController(std::string name, const config::Parameters& parameters,
+  CbbgController(std::string name, const parameters::Parameters& parameters,
                  const ControllerOptions& options);
 
   const InputPort& measured() const { return *measured_; }
@@ -88,7 +88,7 @@ class CbbgController final : public Diagram {
 
  private:
   // Adds normaliser, basal ganglia, omega and mixer, and exports their outputs.
-  void add_basal_ganglia(DiagramBuilder& builder, const config::Parameters& parameters,
+  void add_basal_ganglia(DiagramBuilder& builder, const parameters::Parameters& parameters,
                          const ControllerOptions& options, const OutputPort& supervisor_action);
   // Exports the supervisor's action as the action; the learning outputs are NaN.
   void add_supervisor_alone(DiagramBuilder& builder, const OutputPort& supervisor_action);

@@ -7,7 +7,6 @@
 #include "cbbg/blocks/measured_signals.h"
 #include "cbbg/blocks/torque_push.h"
 #include "cbbg/config/config.h"
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/configured_blocks.h"
 #include "cbbg/diagrams/slot_check.h"
 #include "cbbg/framework/diagram_builder.h"
@@ -15,6 +14,7 @@
 #include "cbbg/framework/primitives/multiplexer.h"
 #include "cbbg/framework/primitives/selector.h"
 #include "cbbg/framework/primitives/zero_order_hold.h"
+#include "cbbg/parameters/parameters.h"
 #include "cbbg/plant/plant_ports.h"
 
 namespace cbbg::diagrams {
@@ -39,20 +39,20 @@ plant::SignalIndex check_plant(const plant::RobotPlant& robot) {
 }
 
 // The push of push.*, when it pushes at all.
-std::optional<blocks::PushParams> configured_push(const config::Parameters& parameters) {
+std::optional<blocks::PushParams> configured_push(const parameters::Parameters& parameters) {
   if (!parameters.push.any()) return std::nullopt;
   return parameters.push;
 }
 
 // The plant of the arm's own factory or of plant.kind's, built for the loop's push (a kind's
 // plant declares its input "disturbance" when push.* pushes from outside).
-std::shared_ptr<plant::RobotPlant> make_plant(const config::Parameters& p,
+std::shared_ptr<plant::RobotPlant> make_plant(const parameters::Parameters& p,
                                               const ClosedLoopOptions& options) {
-  const auto make = [&options](const config::Parameters& q) {
+  const auto make = [&options](const parameters::Parameters& q) {
     return options.plant ? options.plant("plant", q) : plant_kind(q.plant.kind).make("plant", q);
   };
   if (!options.push) return make(p);
-  config::Parameters pushed = p;  // a copy only for a loop of its own push
+  parameters::Parameters pushed = p;  // a copy only for a loop of its own push
   pushed.push = *options.push;
   return make(pushed);
 }
@@ -184,7 +184,7 @@ struct Task {
   const Block* reward;
 };
 
-Task add_task(DiagramBuilder& builder, const config::Parameters& p, const TaskSlots& slots,
+Task add_task(DiagramBuilder& builder, const parameters::Parameters& p, const TaskSlots& slots,
               const plant::RobotPlant& robot, const plant::SignalIndex& signals,
               const Diagram& controller) {
   const int state_size = robot.state_output().size();
@@ -228,7 +228,7 @@ void ClosedLoop::start_trial(Context& context, double theta0) const {
   plant->reset(context, theta0);
 }
 
-ClosedLoop build_closed_loop(std::string name, const config::Parameters& p,
+ClosedLoop build_closed_loop(std::string name, const parameters::Parameters& p,
                              std::shared_ptr<Diagram> controller,
                              const ClosedLoopOptions& options) {
   if (!controller) throw std::invalid_argument("the controller factory returned null");
@@ -277,7 +277,7 @@ ClosedLoopFactory closed_loop_factory(std::string name, ControllerOptions contro
   controller.validate();
   return closed_loop_factory(
       std::move(name),
-      [controller = std::move(controller)](const config::Parameters& parameters) {
+      [controller = std::move(controller)](const parameters::Parameters& parameters) {
         return std::make_unique<CbbgController>("controller", parameters, controller);
       },
       std::move(options));
@@ -286,7 +286,7 @@ ClosedLoopFactory closed_loop_factory(std::string name, ControllerOptions contro
 ClosedLoopFactory closed_loop_factory(std::string name, ControllerFactory controller,
                                       ClosedLoopOptions options) {
   return [name = std::move(name), controller = std::move(controller),
-          options = std::move(options)](const config::Parameters& parameters) {
+          options = std::move(options)](const parameters::Parameters& parameters) {
     return build_closed_loop(name, parameters, controller(parameters), options);
   };
 }

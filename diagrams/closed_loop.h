@@ -94,7 +94,7 @@ struct ClosedLoopOptions {
 // the plant's ports or signals do not fit, naming them, or the controller has two learners
 // of a kind; config::ConfigError when the push comes from outside (push.force,
 // push.pitch_torque) and the plant has no input "disturbance".
-ClosedLoop build_closed_loop(std::string name, const config::Parameters& parameters,
+ClosedLoop build_closed_loop(std::string name, const parameters::Parameters& parameters,
                              std::shared_ptr<Diagram> controller,
                              const ClosedLoopOptions& options = {});
 
@@ -103,11 +103,11 @@ ClosedLoop build_closed_loop(std::string name, const config::Parameters& paramet
 // through its blocks' random generators (BlockContext::random_generator) alone, never
 // through parameters.run.seed: the arms of a seed then draw the same numbers, and a run
 // that drew none is every seed's (transfer shares such an evaluation across the seeds).
-using ClosedLoopFactory = std::function<ClosedLoop(const config::Parameters& parameters)>;
+using ClosedLoopFactory = std::function<ClosedLoop(const parameters::Parameters& parameters)>;
 
 // Builds a controller (any diagram with a controller's ports) from the run's parameters (a
 // std::unique_ptr converts).
-using ControllerFactory = std::function<std::shared_ptr<Diagram>(const config::Parameters&)>;
+using ControllerFactory = std::function<std::shared_ptr<Diagram>(const parameters::Parameters&)>;
 
 // The factory of a CB-BG controller with `controller` options, in a closed loop named `name`.
 ClosedLoopFactory closed_loop_factory(std::string name, ControllerOptions controller,

@@ -23,7 +23,7 @@
 namespace cbbg::diagrams {
 
 std::shared_ptr<Block> configured_supervisor(const SlotRequest& request) {
-  const config::Parameters& p = request.parameters;
+  const parameters::Parameters& p = request.parameters;
   if (p.supervisor.kind == "lqr") {
     return std::make_shared<blocks::LqrSupervisor>(request.name, planar_linearization(p),
                                                    p.supervisor.lqr);
@@ -36,12 +36,12 @@ std::shared_ptr<Block> configured_normaliser(const SlotRequest& request) {
 }
 
 std::shared_ptr<Block> configured_features(const SlotRequest& request) {
-  const config::Parameters& p = request.parameters;
+  const parameters::Parameters& p = request.parameters;
   return std::make_shared<blocks::RbfFeatures>(request.name, p.rbf, p.normaliser.size());
 }
 
 std::shared_ptr<Block> configured_critic(const SlotRequest& request) {
-  const config::Parameters& p = request.parameters;
+  const parameters::Parameters& p = request.parameters;
   blocks::CriticParams params = p.critic;
   params.frozen = !request.learns;
   return std::make_shared<blocks::Critic>(request.name, request.num_features, params,
@@ -56,7 +56,7 @@ std::shared_ptr<Block> configured_actor(const SlotRequest& request) {
 }
 
 std::shared_ptr<Block> configured_exploration(const SlotRequest& request) {
-  const config::Parameters& p = request.parameters;
+  const parameters::Parameters& p = request.parameters;
   switch (p.exploration.kind) {
     case blocks::ExplorationKind::kGaussian:
       return std::make_shared<blocks::GaussianExploration>(request.name, p.exploration,
@@ -83,19 +83,19 @@ std::shared_ptr<Block> configured_mixer(const SlotRequest& request) {
 }
 
 std::shared_ptr<Block> configured_sensors(const SlotRequest& request) {
-  const config::Parameters& p = request.parameters;
+  const parameters::Parameters& p = request.parameters;
   return std::make_shared<blocks::Sensors>(request.name, p.sensors, p.trial.period,
                                            *request.signals, request.plant_state_size);
 }
 
 std::shared_ptr<Block> configured_failure(const SlotRequest& request) {
-  const config::Parameters& p = request.parameters;
+  const parameters::Parameters& p = request.parameters;
   return std::make_shared<blocks::FailureDetector>(
       request.name, blocks::FailureDetectorParams{p.trial.failure_angle}, p.trial.period);
 }
 
 std::shared_ptr<Block> configured_reward(const SlotRequest& request) {
-  const config::Parameters& p = request.parameters;
+  const parameters::Parameters& p = request.parameters;
   if (p.reward.kind == blocks::RewardKind::kQuadratic) {
     return std::make_shared<blocks::QuadraticReward>(request.name, p.reward, p.trial.period);
   }

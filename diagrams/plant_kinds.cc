@@ -23,7 +23,7 @@ double scaled(double value, double factor, const char* key, RobotChange change) 
 }
 
 // The two-wheeler's plant.*: a denser body of the same shape, or its centre of mass moved.
-bool change_two_wheeler(config::Parameters& p, RobotChange change, double factor) {
+bool change_two_wheeler(parameters::Parameters& p, RobotChange change, double factor) {
   plant::RobotParams& robot = p.plant.robot;
   if (change == RobotChange::kComHeight) {
     robot.com_height = scaled(robot.com_height, factor, "plant.com_height", change);
@@ -38,12 +38,12 @@ bool change_two_wheeler(config::Parameters& p, RobotChange change, double factor
   return true;
 }
 
-plant::LinearModel linearize_two_wheeler(const config::Parameters& p) {
+plant::LinearModel linearize_two_wheeler(const parameters::Parameters& p) {
   return plant::linearize_planar_upright(p.plant.robot);
 }
 
 // The library plants declare the input "disturbance" when push.* pushes from outside.
-plant::DisturbanceInput disturbance_input(const config::Parameters& p) {
+plant::DisturbanceInput disturbance_input(const parameters::Parameters& p) {
   return p.push.from_outside() ? plant::DisturbanceInput::kDeclared
                                : plant::DisturbanceInput::kNone;
 }
@@ -54,13 +54,13 @@ constexpr const char* kTwoWheeler = "two_wheeler";
 std::vector<PlantKind>& kinds() {
   static std::vector<PlantKind> all{
       {"simbody", "3-D multibody, reference",
-       [](const std::string& name, const config::Parameters& p) {
+       [](const std::string& name, const parameters::Parameters& p) {
          return std::make_unique<plant::SimbodyPlant>(name, p.plant.robot, p.trial.theta0,
                                                       disturbance_input(p));
        },
        change_two_wheeler, linearize_two_wheeler, kTwoWheeler},
       {"analytic", "fast",
-       [](const std::string& name, const config::Parameters& p) {
+       [](const std::string& name, const parameters::Parameters& p) {
          return std::make_unique<plant::AnalyticPlant>(name, p.plant.robot, p.trial.theta0,
                                                        disturbance_input(p));
        },
@@ -112,7 +112,7 @@ bool same_robot(std::string_view learnt_on, std::string_view loaded_onto) {
          first->robot == second->robot;
 }
 
-plant::LinearModel planar_linearization(const config::Parameters& parameters) {
+plant::LinearModel planar_linearization(const parameters::Parameters& parameters) {
   const PlantKind& kind = plant_kind(parameters.plant.kind);
   if (!kind.linearize) {
     throw std::invalid_argument("plant.kind '" + kind.name +

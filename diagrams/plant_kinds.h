@@ -7,7 +7,7 @@
 //
 //   diagrams::register_plant_kind({
 //       .name = "cartpole", .description = "a pole on a cart driven through its wheel",
-//       .make = [](const std::string& name, const config::Parameters& p) {
+//       .make = [](const std::string& name, const parameters::Parameters& p) {
 //         return std::make_unique<CartPole>(name, config::read_section<CartPoleParams>(p.own,
 //         "cartpole"));
 //       },
@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-#include "cbbg/config/parameters.h"
+#include "cbbg/parameters/parameters.h"
 #include "cbbg/plant/linearization.h"
 #include "cbbg/plant/robot_plant.h"
 
@@ -30,7 +30,7 @@ namespace cbbg::diagrams {
 // Makes the plant block named `name` from the run's typed parameters (a factory may return a
 // std::unique_ptr: it converts).
 using PlantFactory = std::function<std::shared_ptr<plant::RobotPlant>(
-    const std::string& name, const config::Parameters& parameters)>;
+    const std::string& name, const parameters::Parameters& parameters)>;
 
 // A change of the robot an evaluation asks for, by the factor of its key.
 enum class RobotChange {
@@ -47,10 +47,11 @@ struct PlantKind {
   // Applies `change` by `factor` to the kind's own parameters in `parameters`; false when the
   // plant has no such parameter (the evaluation is then refused, never silently unchanged).
   // Throws config::ConfigError for a factor that makes a parameter invalid. Empty: no change.
-  std::function<bool(config::Parameters& parameters, RobotChange change, double factor)> change{};
+  std::function<bool(parameters::Parameters& parameters, RobotChange change, double factor)>
+      change{};
   // The plant linearised upright at rest with both wheels driven alike: x = (theta_b, phi,
   // theta_b', phi'), phi the mean wheel angle, u = the wheel torque. Empty: not offered.
-  std::function<plant::LinearModel(const config::Parameters& parameters)> linearize{};
+  std::function<plant::LinearModel(const parameters::Parameters& parameters)> linearize{};
   // The robot it models, where other kinds model the same one (simbody and analytic:
   // "two_wheeler"): weights learnt on one load onto the others. Empty: a robot of its own.
   std::string robot{};
@@ -72,6 +73,6 @@ bool same_robot(std::string_view learnt_on, std::string_view loaded_onto);
 
 // The linearisation plant.kind's kind offers (PlantKind::linearize) for the run's parameters.
 // Throws std::invalid_argument naming the kind when it offers none.
-plant::LinearModel planar_linearization(const config::Parameters& parameters);
+plant::LinearModel planar_linearization(const parameters::Parameters& parameters);
 
 }  // namespace cbbg::diagrams

@@ -93,7 +93,7 @@ ControllerOptions learnt_actor(ControllerOptions options) {
   return options;
 }
 
-ClosedLoop build_preset(std::string_view name, const config::Parameters& parameters,
+ClosedLoop build_preset(std::string_view name, const parameters::Parameters& parameters,
                         const ClosedLoopOptions& loop) {
   return closed_loop_factory(std::string(name), preset(name).options, loop)(parameters);
 }

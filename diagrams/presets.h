@@ -14,7 +14,7 @@
 // An ablation in user code is one more set of options:
 //
 //   diagrams::ControllerOptions mine = diagrams::preset("cbbg").options;
-//   mine.slots.supervisor = [](const std::string& name, const config::Parameters&) {
+//   mine.slots.supervisor = [](const std::string& name, const parameters::Parameters&) {
 //     return std::make_unique<MySupervisor>(name);
 //   };
 //   const diagrams::Arm arm = diagrams::make_arm("cbbg_mine", mine);
@@ -54,7 +54,7 @@ const Preset& preset(std::string_view name);
 ControllerOptions learnt_actor(ControllerOptions options);
 
 // The closed loop of preset `name` (learnt_actor included), named after it.
-ClosedLoop build_preset(std::string_view name, const config::Parameters& parameters,
+ClosedLoop build_preset(std::string_view name, const parameters::Parameters& parameters,
                         const ClosedLoopOptions& loop = {});
 
 Arm make_arm(std::string name, const ControllerOptions& options,

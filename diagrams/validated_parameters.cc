@@ -15,7 +15,7 @@ namespace cbbg::diagrams {
 namespace {
 
 // The RBF grid's units, centres^inputs, before a grid too large to store is built at all.
-void check_rbf_grid(const config::Parameters& p) {
+void check_rbf_grid(const parameters::Parameters& p) {
   const double units = std::pow(static_cast<double>(p.rbf.centres.size()), p.normaliser.size());
   if (units <= blocks::kMaxFeatures) return;
   throw config::ConfigError(
@@ -27,7 +27,7 @@ void check_rbf_grid(const config::Parameters& p) {
 }
 
 // What the blocks check of their own params, beyond the ranges every value was read with.
-void check_blocks(const config::Parameters& p) {
+void check_blocks(const parameters::Parameters& p) {
   if (p.plant.kind == "simbody") {
     p.plant.robot.validate_rigid_bodies();  // a multibody model needs a rigid body's inertias
   } else {
@@ -54,7 +54,7 @@ void check_blocks(const config::Parameters& p) {
 }
 
 // The blocks' invariants and the rules across sections, as the config's errors.
-void check_invariants(const config::Parameters& parameters) {
+void check_invariants(const parameters::Parameters& parameters) {
   try {
     check_blocks(parameters);
   } catch (const std::invalid_argument& error) {
@@ -67,19 +67,19 @@ void check_invariants(const config::Parameters& parameters) {
 
 }  // namespace
 
-config::Parameters validated_parameters(const config::Config& config) {
+parameters::Parameters validated_parameters(const config::Config& config) {
   // Each value was checked against its declaration as it arrived in the config.
-  const config::Parameters parameters = config::read_parameters(config);
+  const parameters::Parameters parameters = parameters::read_parameters(config);
   check_invariants(parameters);
   return parameters;
 }
 
 namespace {
 
-config::Config with_settings(const config::Parameters& parameters, const std::string& entry,
+config::Config with_settings(const parameters::Parameters& parameters, const std::string& entry,
                              const std::string& source) {
   config::Config config;
-  config::write_parameters(parameters, config);
+  parameters::write_parameters(parameters, config);
   for (const auto& [key, value] : config::split_settings(entry)) {
     config.set(key + "=" + value, source);
   }
@@ -88,18 +88,19 @@ config::Config with_settings(const config::Parameters& parameters, const std::st
 
 }  // namespace
 
-config::Parameters validated_with_settings(const config::Parameters& parameters,
-                                           const std::string& entry, const std::string& source) {
+parameters::Parameters validated_with_settings(const parameters::Parameters& parameters,
+                                               const std::string& entry,
+                                               const std::string& source) {
   return validated_parameters(with_settings(parameters, entry, source));
 }
 
-bool settings_change(const config::Parameters& parameters, const std::string& entry) {
+bool settings_change(const parameters::Parameters& parameters, const std::string& entry) {
   config::Config config;
-  config::write_parameters(parameters, config);
+  parameters::write_parameters(parameters, config);
   return !(with_settings(parameters, entry, "settings") == config);
 }
 
-void validate_parameters(const config::Parameters& parameters) {
+void validate_parameters(const parameters::Parameters& parameters) {
   try {
     check_declared(parameters, "");
   } catch (const std::invalid_argument& error) {

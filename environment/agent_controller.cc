@@ -12,7 +12,8 @@ namespace {
 
 // supervisor.kind's block, the choice diagrams/cbbg_controller.cc makes for the cerebellum
 // (kept there in an anonymous namespace; the few lines are repeated here).
-std::unique_ptr<Block> configured_supervisor(const std::string& name, const config::Parameters& p) {
+std::unique_ptr<Block> configured_supervisor(const std::string& name,
+                                             const parameters::Parameters& p) {
   if (p.supervisor.kind == "lqr") {
     return std::make_unique<blocks::LqrSupervisor>(name, diagrams::planar_linearization(p),
                                                    p.supervisor.lqr);
@@ -22,7 +23,7 @@ std::unique_ptr<Block> configured_supervisor(const std::string& name, const conf
 
 }  // namespace
 
-AgentController::AgentController(std::string name, const config::Parameters& parameters)
+AgentController::AgentController(std::string name, const parameters::Parameters& parameters)
     : Diagram(std::move(name)) {
   DiagramBuilder builder(*this);
   const Block& supervisor = builder.add(configured_supervisor("supervisor", parameters));

@@ -9,9 +9,9 @@
 
 #include <string>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/environment/held_action.h"
 #include "cbbg/framework/diagram.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::environment {
 
@@ -21,7 +21,7 @@ namespace cbbg::environment {
 // on plant.kind's linearisation (which throws std::invalid_argument for a kind without one).
 class AgentController final : public Diagram {
  public:
-  AgentController(std::string name, const config::Parameters& parameters);
+  AgentController(std::string name, const parameters::Parameters& parameters);
 
   // The block whose state is the action the loop applies.
   const HeldAction& held_action() const { return *held_action_; }

@@ -33,14 +33,14 @@ Vector pitch_limited_bound(double failure_angle) {
   return high;
 }
 
-config::Parameters checked(const config::Parameters& parameters) {
+parameters::Parameters checked(const parameters::Parameters& parameters) {
   diagrams::validate_parameters(parameters);
   return parameters;
 }
 
 }  // namespace
 
-BalanceEnvironment::BalanceEnvironment(const config::Parameters& parameters,
+BalanceEnvironment::BalanceEnvironment(const parameters::Parameters& parameters,
                                        EnvironmentOptions options)
     : parameters_(checked(parameters)) {
   auto controller = std::make_unique<AgentController>("controller", parameters_);

@@ -10,7 +10,7 @@
 //   observation_space = Box(low, high, (6,))    observation_low(), observation_high()
 //   action_space = Box(low, high, (1,))         action_low(), action_high()
 //
-//   config::Parameters p = diagrams::validated_parameters(config);
+//   parameters::Parameters p = diagrams::validated_parameters(config);
 //   environment::BalanceEnvironment env(p);      // plant.kind's plant, or options.plant
 //   auto [observation, info] = env.reset(42);
 //   for (;;) {
@@ -65,12 +65,12 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/closed_loop.h"
 #include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/environment/agent_controller.h"
 #include "cbbg/framework/simulator.h"
 #include "cbbg/framework/types.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::environment {
 
@@ -108,7 +108,7 @@ class BalanceEnvironment {
   // config::ConfigError) around the agent. Throws std::invalid_argument when the plant does
   // not fit the loop, or supervisor.kind is lqr and plant.kind's kind has no linearisation
   // (the LQR supervisor is designed on plant.kind's, even with options.plant).
-  explicit BalanceEnvironment(const config::Parameters& parameters,
+  explicit BalanceEnvironment(const parameters::Parameters& parameters,
                               EnvironmentOptions options = {});
 
   // A new episode: the streams re-seeded when `seed` is given, every block's per-trial state
@@ -143,7 +143,7 @@ class BalanceEnvironment {
   double duration() const { return parameters_.trial.duration; }
   // The names of Info::state's entries (plant::RobotPlant::signals()).
   const std::vector<std::string>& signal_names() const { return signal_names_; }
-  const config::Parameters& parameters() const { return parameters_; }
+  const parameters::Parameters& parameters() const { return parameters_; }
   // The closed loop stepped (to draw it: framework/graphviz.h).
   const diagrams::ClosedLoop& closed_loop() const { return loop_; }
 
@@ -161,7 +161,7 @@ class BalanceEnvironment {
   // The step an update ended before its end (status.terminated).
   StepResult stopped_early(const SimulationStatus& status);
 
-  config::Parameters parameters_;
+  parameters::Parameters parameters_;
   const AgentController* controller_ = nullptr;
   diagrams::ClosedLoop loop_;
   std::unique_ptr<Simulator> simulator_;

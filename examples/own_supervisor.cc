@@ -21,13 +21,13 @@
 
 #include <cbbg/blocks/measured_signals.h>
 #include <cbbg/config/declared_keys.h>
-#include <cbbg/config/parameters.h>
 #include <cbbg/config/sweep.h>
 #include <cbbg/diagrams/presets.h>
 #include <cbbg/diagrams/validated_parameters.h>
 #include <cbbg/experiments/experiments.h>
 #include <cbbg/framework/block_context.h>
 #include <cbbg/framework/graphviz.h>
+#include <cbbg/parameters/parameters.h>
 #include <cbbg/store/results_writer.h>
 #include <cbbg/store/run_directory.h>
 #include <cbbg/store/sweep_directory.h>
@@ -73,7 +73,7 @@ class SaturatedPd final : public Block {
   }
 };
 
-void render(const diagrams::Arm& arm, const config::Parameters& parameters,
+void render(const diagrams::Arm& arm, const parameters::Parameters& parameters,
             const std::filesystem::path& figures) {
   std::filesystem::create_directories(figures);
   const std::string dot =
@@ -89,7 +89,7 @@ void render(const diagrams::Arm& arm, const config::Parameters& parameters,
 // One grid point: the run's config (what its directory records) and its typed parameters.
 struct Point {
   config::Config config;
-  config::Parameters parameters;
+  parameters::Parameters parameters;
 };
 
 // The edge of the program: the config made from the arguments, and every grid point's
@@ -120,10 +120,10 @@ std::vector<Point> read_points(int argc, char** argv) {
 // Experiment 1 of both arms at one point, into the results directory `out`.
 void run_point(const Point& point, const std::filesystem::path& out) {
   diagrams::ControllerOptions mine = diagrams::preset("cbbg").options;
-  mine.slots.supervisor = [](const std::string& name, const config::Parameters& p) {
-    return std::make_unique<SaturatedPd>(
-        name, config::read_section<SaturatedPdParams>(p.own, "saturated_pd"),
-        p.plant.robot.torque_limit);
+  mine.slots.supervisor = [](const diagrams::SlotRequest& request) {
+    return std::make_unique<SaturatedPd>(request.name,
+                                         request.section<SaturatedPdParams>("saturated_pd"),
+                                         request.parameters.plant.robot.torque_limit);
   };
   const std::vector<diagrams::Arm> arms{diagrams::preset_arm("cbbg"),
                                         diagrams::make_arm("cbbg_saturated_pd", mine)};

@@ -27,10 +27,10 @@ Vector plant_state(const Eigen::Vector4d& x) {
 
 // The actor's slopes: small enough to stay on the features' smooth part, large enough for
 // double precision (rad, rad, rad/s, rad/s).
-Eigen::Vector4d slopes_at_rest(const config::Parameters& p,
+Eigen::Vector4d slopes_at_rest(const parameters::Parameters& p,
                                const diagrams::ClosedLoopFactory& policy,
                                const LearntWeights& weights) {
-  config::Parameters q = p;
+  parameters::Parameters q = p;
   q.plant.kind = "analytic";  // the actor's law does not depend on the plant; its state is set
   q.sensors = blocks::SensorsParams{};
   const diagrams::ClosedLoop loop = policy(q);
@@ -59,7 +59,7 @@ Eigen::Vector4d slopes_at_rest(const config::Parameters& p,
 
 }  // namespace
 
-ActorLinearisation linearise_actor(const config::Parameters& parameters,
+ActorLinearisation linearise_actor(const parameters::Parameters& parameters,
                                    const diagrams::ClosedLoopFactory& policy,
                                    const LearntWeights& weights) {
   ActorLinearisation result;

@@ -11,9 +11,9 @@
 
 #include <Eigen/Core>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/closed_loop.h"
 #include "cbbg/experiments/learnt_weights.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
 
@@ -37,7 +37,7 @@ struct ActorLinearisation {
 // sensor noise), loads `weights`, reads its action at the origin perturbed in each state, and
 // closes plant.kind's linearisation with the slopes. Throws std::invalid_argument when the
 // kind offers no linearisation or the weights do not fit the policy.
-ActorLinearisation linearise_actor(const config::Parameters& parameters,
+ActorLinearisation linearise_actor(const parameters::Parameters& parameters,
                                    const diagrams::ClosedLoopFactory& policy,
                                    const LearntWeights& weights);
 

@@ -20,7 +20,7 @@ namespace cbbg::experiments {
 namespace {
 
 // The loop of arm `name`, its factory's refusal as the user's.
-diagrams::ClosedLoop build_arm(const std::string& name, const config::Parameters& parameters) {
+diagrams::ClosedLoop build_arm(const std::string& name, const parameters::Parameters& parameters) {
   try {
     return diagrams::named_arm(name).learner(parameters);
   } catch (const config::ConfigError&) {
@@ -90,7 +90,7 @@ double available_memory() {
 
 }  // namespace
 
-std::size_t check_arms_build(const config::Parameters& parameters) {
+std::size_t check_arms_build(const parameters::Parameters& parameters) {
   std::size_t largest = 0;
   for (const std::string& name : experiment_arms(parameters.run)) {
     const std::size_t before = heap_in_use();

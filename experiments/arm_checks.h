@@ -7,7 +7,7 @@
 
 #include <cstddef>
 
-#include "cbbg/config/parameters.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
 
@@ -16,7 +16,7 @@ namespace cbbg::experiments {
 // factory's reason, or the arm, its feature count, its layout's keys and the limit. Returns
 // the most memory one task holds, in bytes, as the heap grew building one (0 where the
 // allocator does not say, as a sanitizer's: then no memory is checked).
-std::size_t check_arms_build(const config::Parameters& parameters);
+std::size_t check_arms_build(const parameters::Parameters& parameters);
 
 // Before any work: `threads` tasks at once of `task_bytes` each fit in the memory the machine
 // has available (Linux /proc/meminfo's MemAvailable; no check where it cannot be read).

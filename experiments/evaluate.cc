@@ -10,8 +10,8 @@
 namespace cbbg::experiments {
 namespace {
 
-void evaluate_only(const config::Parameters& p, const diagrams::Arm& arm, const TelemetryOptions&,
-                   const LearntWeights* initial_weights, SeedRun& run) {
+void evaluate_only(const parameters::Parameters& p, const diagrams::Arm& arm,
+                   const TelemetryOptions&, const LearntWeights* initial_weights, SeedRun& run) {
   const bool learns = arm.learner(p).learner.learns();
   run.evaluation = evaluate_weights(p, arm, learns ? initial_weights : nullptr, run.seed);
   const auto balanced = std::count_if(run.evaluation.begin(), run.evaluation.end(),
@@ -23,7 +23,8 @@ void evaluate_only(const config::Parameters& p, const diagrams::Arm& arm, const 
 
 }  // namespace
 
-void check_evaluation(const config::Parameters& parameters, const std::vector<diagrams::Arm>& arms,
+void check_evaluation(const parameters::Parameters& parameters,
+                      const std::vector<diagrams::Arm>& arms,
                       const LearntWeights* initial_weights) {
   for (const auto& arm : arms) {
     if (initial_weights == nullptr && arm.learner(parameters).learner.learns()) {
@@ -33,7 +34,7 @@ void check_evaluation(const config::Parameters& parameters, const std::vector<di
   }
 }
 
-ExperimentResults run_evaluation(const config::Parameters& parameters,
+ExperimentResults run_evaluation(const parameters::Parameters& parameters,
                                  const std::vector<diagrams::Arm>& arms,
                                  const ExperimentOptions& options) {
   check_evaluation(parameters, arms, options.initial_weights);
@@ -45,10 +46,10 @@ Protocol evaluate_protocol() {
           .meaning =
               "per arm and seed: no training; the weights of --load-weights evaluated from "
               "evaluation.angles under evaluation.*",
-          .run = [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+          .run = [](const parameters::Parameters& p, const std::vector<diagrams::Arm>& arms,
                     const ExperimentOptions& options) { return run_evaluation(p, arms, options); },
           .schema =
-              [](const config::Parameters&) {
+              [](const parameters::Parameters&) {
                 return ResultsSchema{.figures = {{.name = "balanced",
                                                   .type = ValueType::kInteger,
                                                   .meaning = "the evaluation runs that balanced",
@@ -58,7 +59,7 @@ Protocol evaluate_protocol() {
                                      .plots = {"evaluation"}};
               },
           .check =
-              [](const config::Parameters& p, const LearntWeights* initial_weights) {
+              [](const parameters::Parameters& p, const LearntWeights* initial_weights) {
                 check_evaluation(p, diagrams::named_arms(p.run.arms), initial_weights);
               },
           .learns = false};

@@ -5,15 +5,15 @@
 #include <vector>
 
 #include "cbbg/blocks/measured_signals.h"
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/plant_kinds.h"
 #include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/framework/number_text.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
-config::Parameters evaluation_parameters(const config::Parameters& training) {
-  config::Parameters p = training;
-  const config::EvaluationParams& evaluation = p.evaluation;
+parameters::Parameters evaluation_parameters(const parameters::Parameters& training) {
+  parameters::Parameters p = training;
+  const parameters::EvaluationParams& evaluation = p.evaluation;
   const diagrams::PlantKind& kind = diagrams::plant_kind(p.plant.kind);
   for (const auto& [change, factor] :
        {std::pair{diagrams::RobotChange::kBodyMass, evaluation.body_mass_scale},
@@ -40,8 +40,8 @@ config::Parameters evaluation_parameters(const config::Parameters& training) {
   return p;
 }
 
-void check_evaluation_conditions(const config::Parameters& training) {
-  const config::Parameters evaluated = evaluation_parameters(training);
+void check_evaluation_conditions(const parameters::Parameters& training) {
+  const parameters::Parameters evaluated = evaluation_parameters(training);
   try {
     diagrams::validate_parameters(evaluated);
   } catch (const config::ConfigError& error) {
@@ -50,11 +50,11 @@ void check_evaluation_conditions(const config::Parameters& training) {
   }
 }
 
-bool changes_robot(const config::EvaluationParams& evaluation) {
+bool changes_robot(const parameters::EvaluationParams& evaluation) {
   return evaluation.body_mass_scale != 1.0 || evaluation.com_height_scale != 1.0;
 }
 
-void check_plant_takes_conditions(const config::EvaluationParams& evaluation,
+void check_plant_takes_conditions(const parameters::EvaluationParams& evaluation,
                                   const diagrams::ClosedLoop& loop) {
   if (loop.plant_of_kind) return;
   for (const auto& [key, scale] :
@@ -69,11 +69,11 @@ void check_plant_takes_conditions(const config::EvaluationParams& evaluation,
   }
 }
 
-bool pushes_from_outside(const config::EvaluationParams& evaluation) {
+bool pushes_from_outside(const parameters::EvaluationParams& evaluation) {
   return evaluation.push_force != 0.0 || evaluation.push_pitch_torque != 0.0;
 }
 
-void check_plant_takes_push(const config::Parameters& training,
+void check_plant_takes_push(const parameters::Parameters& training,
                             const diagrams::ClosedLoopFactory& loop) {
   if (!pushes_from_outside(training.evaluation)) return;
   try {
@@ -84,7 +84,7 @@ void check_plant_takes_push(const config::Parameters& training,
   }
 }
 
-std::string describe_conditions(const config::EvaluationParams& evaluation) {
+std::string describe_conditions(const parameters::EvaluationParams& evaluation) {
   std::string words;
   auto add = [&words](const std::string& part) {
     if (!words.empty()) words += ", ";

@@ -21,41 +21,41 @@
 
 #include <string>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/closed_loop.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
 
 // `training` with its evaluation.* perturbations applied, the robot's through plant.kind's
 // kind. Throws config::ConfigError naming the evaluation key when a scaled value is not a
 // finite number > 0, or the kind has no parameter the key changes.
-config::Parameters evaluation_parameters(const config::Parameters& training);
+parameters::Parameters evaluation_parameters(const parameters::Parameters& training);
 
 // Before any work: the robot and the push the evaluation.* keys make of `training` are valid
 // (a scale of 1e308 makes an infinite mass). Throws config::ConfigError naming the evaluation
 // key and the value it makes.
-void check_evaluation_conditions(const config::Parameters& training);
+void check_evaluation_conditions(const parameters::Parameters& training);
 
 // Whether `evaluation` changes the robot: a body mass or CoM height scale other than 1 (the
 // noise and the push reach any plant, through the sensors and the wheels).
-bool changes_robot(const config::EvaluationParams& evaluation);
+bool changes_robot(const parameters::EvaluationParams& evaluation);
 
 // Throws config::ConfigError when `evaluation` changes the robot and `loop`'s plant is the
 // arm's own (ClosedLoopOptions::plant), not plant.kind's, which applies the change.
-void check_plant_takes_conditions(const config::EvaluationParams& evaluation,
+void check_plant_takes_conditions(const parameters::EvaluationParams& evaluation,
                                   const diagrams::ClosedLoop& loop);
 
 // Whether `evaluation` pushes from outside (evaluation.push_force, evaluation.push_pitch_torque),
 // which needs a plant with the input "disturbance".
-bool pushes_from_outside(const config::EvaluationParams& evaluation);
+bool pushes_from_outside(const parameters::EvaluationParams& evaluation);
 
 // Before any training: throws config::ConfigError naming the key when `training`'s evaluation
 // pushes from outside and the plant the arm `loop` builds would have no input "disturbance".
-void check_plant_takes_push(const config::Parameters& training,
+void check_plant_takes_push(const parameters::Parameters& training,
                             const diagrams::ClosedLoopFactory& loop);
 
 // The perturbations of `evaluation` in words ("body mass x1.3, pitch noise 0.02"), or "" at
 // their defaults.
-std::string describe_conditions(const config::EvaluationParams& evaluation);
+std::string describe_conditions(const parameters::EvaluationParams& evaluation);
 
 }  // namespace cbbg::experiments

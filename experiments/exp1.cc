@@ -8,7 +8,7 @@
 
 namespace cbbg::experiments {
 
-void run_until_success(const config::Parameters& p, const diagrams::Arm& arm,
+void run_until_success(const parameters::Parameters& p, const diagrams::Arm& arm,
                        const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                        SeedRun& run) {
   SeedLoop seed(p, arm, telemetry, initial_weights, run.seed);
@@ -24,13 +24,13 @@ void run_until_success(const config::Parameters& p, const diagrams::Arm& arm,
   finish_run(p, arm, seed.loop, seed.runner.context(), run);
 }
 
-ExperimentResults run_exp1(const config::Parameters& parameters,
+ExperimentResults run_exp1(const parameters::Parameters& parameters,
                            const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options) {
   return run_per_arm("exp1", run_until_success, parameters, arms, options);
 }
 
-ResultsSchema exp1_schema(const config::Parameters& parameters) {
+ResultsSchema exp1_schema(const parameters::Parameters& parameters) {
   ResultsSchema schema;
   // The paper's one run of Fig. 11 per arm, a reference only on the paper's robot.
   if (diagrams::same_robot(parameters.plant.kind, "simbody")) {
@@ -42,7 +42,7 @@ ResultsSchema exp1_schema(const config::Parameters& parameters) {
 Protocol exp1_protocol() {
   return {.name = "exp1",
           .meaning = "per arm and seed: trials until the first success (paper Fig. 11)",
-          .run = [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+          .run = [](const parameters::Parameters& p, const std::vector<diagrams::Arm>& arms,
                     const ExperimentOptions& options) { return run_exp1(p, arms, options); },
           .schema = exp1_schema};
 }

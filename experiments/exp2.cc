@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "cbbg/config/declared_keys.h"
 #include "cbbg/experiments/builtin_protocols.h"
+#include "cbbg/experiments/exp2_params.h"
 #include "cbbg/experiments/experiments.h"
 #include "cbbg/experiments/protocol_kit.h"
 
@@ -38,12 +40,13 @@ TrialRecord annealing_trial(int trial, double k1, const TrialOutcome& outcome) {
            {"mean_forward_speed", outcome.mean_forward_speed}}};
 }
 
-void run_annealing(const config::Parameters& p, const diagrams::Arm& coordinated,
+void run_annealing(const parameters::Parameters& p, const diagrams::Arm& coordinated,
                    const diagrams::Arm& operant, const TelemetryOptions& telemetry,
                    const LearntWeights* initial_weights, SeedRun& run) {
   const double theta0 = p.trial.theta0;
   const double duration = p.trial.duration;
-  const std::vector<config::AnnealingStep>& schedule = p.annealing;
+  const Exp2Params own = config::read_section<Exp2Params>(p.own, "");
+  const std::vector<config::AnnealingStep>& schedule = own.annealing;
   SeedLoop first(p, coordinated, telemetry, initial_weights, run.seed);
   set_k1(first.loop, first.runner.context(), annealed_k1(schedule, 1));
   run.trials.push_back(
@@ -53,7 +56,7 @@ void run_annealing(const config::Parameters& p, const diagrams::Arm& coordinated
   const diagrams::ClosedLoop later_loop = operant.learner(p);
   TrialRunner later(later_loop, static_cast<std::uint64_t>(run.seed), p.trial.period, telemetry);
   later.context().continue_from(first.runner.context());
-  for (int trial = 2; trial <= p.exp2.trials; ++trial) {
+  for (int trial = 2; trial <= own.exp2.trials; ++trial) {
     const double k1 = annealed_k1(schedule, trial);
     set_k1(later_loop, later.context(), k1);
     run.trials.push_back(annealing_trial(trial, k1, later.run_trial(theta0, duration, trial)));
@@ -72,7 +75,7 @@ void run_annealing(const config::Parameters& p, const diagrams::Arm& coordinated
   keep_weights(learnt_weights(later_loop, later.context(), provenance(p, run)), run);
 }
 
-ResultsSchema exp2_schema(const config::Parameters&) {
+ResultsSchema exp2_schema(const parameters::Parameters&) {
   return {.trial_columns = {{"pitch_rms", ValueType::kNumber,
                              "theta_b's RMS about its mean from trial.settle_time on, rad"},
                             {"pitch_peak_to_peak", ValueType::kNumber,
@@ -92,8 +95,9 @@ ResultsSchema exp2_schema(const config::Parameters&) {
 
 }  // namespace
 
-ExperimentResults run_exp2(const config::Parameters& parameters, const diagrams::Arm& coordinated,
-                           const diagrams::Arm& operant, const ExperimentOptions& options) {
+ExperimentResults run_exp2(const parameters::Parameters& parameters,
+                           const diagrams::Arm& coordinated, const diagrams::Arm& operant,
+                           const ExperimentOptions& options) {
   auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
     run_annealing(parameters, coordinated, operant, telemetry, options.initial_weights, run);
   };
@@ -107,13 +111,15 @@ Protocol exp2_protocol() {
   return {
       .name = "exp2",
       .meaning = "one cbbg trial, then omega = 1 with the annealing schedule (paper Figs. 12-14)",
-      .arms = [](const config::RunParams&) { return std::vector<std::string>{"cbbg"}; },
+      .arms = [](const parameters::RunParams&) { return std::vector<std::string>{"cbbg"}; },
       .run =
-          [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+          [](const parameters::Parameters& p, const std::vector<diagrams::Arm>& arms,
              const ExperimentOptions& options) {
             return run_exp2(p, arms.front(), diagrams::named_arm("bg_only"), options);
           },
-      .schema = exp2_schema};
+      .schema = exp2_schema,
+      .keys = config::declared_keys(Exp2Params{}, ""),
+      .keys_after = "push"};
 }
 
 }  // namespace cbbg::experiments

@@ -1,7 +1,9 @@
 // exp3 (skill acquisition): per arm and seed, trials past the first success until the learnt
 // actor alone balances from every exp3.angles, then the run's learnt actor evaluated.
 
+#include "cbbg/config/declared_keys.h"
 #include "cbbg/experiments/builtin_protocols.h"
+#include "cbbg/experiments/exp3_params.h"
 #include "cbbg/experiments/experiments.h"
 #include "cbbg/experiments/policy_evaluation.h"
 #include "cbbg/experiments/protocol_kit.h"
@@ -9,12 +11,16 @@
 namespace cbbg::experiments {
 namespace {
 
+std::vector<double> skill_angles(const parameters::Parameters& p) {
+  return config::read_section<Exp3Params>(p.own, "exp3").angles;
+}
+
 // The test after a trial: the weights learnt so far, frozen, with the actor alone, from each of
 // exp3.angles in turn (stopping at the first that fails).
-bool actor_alone_balances(const config::Parameters& p, const diagrams::Arm& arm,
+bool actor_alone_balances(const parameters::Parameters& p, const diagrams::Arm& arm,
                           const LearntWeights& weights, long long seed) {
-  const config::Parameters tested = with_seed(p, seed);
-  for (const double angle : p.exp3.angles) {
+  const parameters::Parameters tested = with_seed(p, seed);
+  for (const double angle : skill_angles(p)) {
     EvaluationSettings settings;
     settings.angles = {angle};
     const PolicyEvaluation evaluation = evaluate_policy(tested, arm.policy, weights, settings);
@@ -25,7 +31,14 @@ bool actor_alone_balances(const config::Parameters& p, const diagrams::Arm& arm,
 
 }  // namespace
 
-SkillTest train_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
+void check_skill_angles(const parameters::Parameters& p) {
+  const std::vector<double> angles = skill_angles(p);
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    p.check_inside_failure_angle("exp3.angles[" + std::to_string(i) + "]", angles[i]);
+  }
+}
+
+SkillTest train_until_skill(const parameters::Parameters& p, const diagrams::Arm& arm,
                             const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                             SeedRun& run) {
   SeedLoop seed(p, arm, telemetry, initial_weights, run.seed);
@@ -60,7 +73,7 @@ SkillTest train_until_skill(const config::Parameters& p, const diagrams::Arm& ar
   return test;
 }
 
-void run_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
+void run_until_skill(const parameters::Parameters& p, const diagrams::Arm& arm,
                      const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                      SeedRun& run) {
   const SkillTest test = train_until_skill(p, arm, telemetry, initial_weights, run);
@@ -76,7 +89,7 @@ void run_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
   run.figures.push_back({"failures_to_skill", count(test.failures)});
 }
 
-ExperimentResults run_exp3(const config::Parameters& parameters,
+ExperimentResults run_exp3(const parameters::Parameters& parameters,
                            const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options) {
   return run_per_arm("exp3", run_until_skill, parameters, arms, options);
@@ -88,10 +101,10 @@ Protocol exp3_protocol() {
       .meaning =
           "per arm and seed: trials until the learnt actor alone balances from every "
           "exp3.angles (skill acquisition)",
-      .run = [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+      .run = [](const parameters::Parameters& p, const std::vector<diagrams::Arm>& arms,
                 const ExperimentOptions& options) { return run_exp3(p, arms, options); },
       .schema =
-          [](const config::Parameters&) {
+          [](const parameters::Parameters&) {
             return ResultsSchema{
                 .trial_columns = {{"actor_alone", ValueType::kFlag,
                                    "whether the learnt actor alone balanced from every exp3.angles "
@@ -111,7 +124,10 @@ Protocol exp3_protocol() {
                              .meaning = "the failed trials before trials_to_skill",
                              .summary = FigureSummary::kList}},
                 .plots = {"pitch", "failures", "skill"}};
-          }};
+          },
+      .check = [](const parameters::Parameters& p, const LearntWeights*) { check_skill_angles(p); },
+      .keys = config::declared_keys(Exp3Params{}, "exp3"),
+      .keys_after = "evaluation"};
 }
 
 }  // namespace cbbg::experiments

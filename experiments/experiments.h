@@ -28,12 +28,12 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/presets.h"
 #include "cbbg/experiments/parallel_runs.h"
 #include "cbbg/experiments/protocol_kit.h"
 #include "cbbg/experiments/protocols.h"
 #include "cbbg/experiments/seed_run.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
 
@@ -44,12 +44,12 @@ namespace cbbg::experiments {
 // they do. exp1: trials until the first success (or max_trials), then finish_run. exp3: trials
 // go on past the first success until the learnt actor alone passes exp3's test (or
 // max_trials); an arm that learns nothing has no actor and stops at its first success.
-void run_until_success(const config::Parameters& p, const diagrams::Arm& arm,
+void run_until_success(const parameters::Parameters& p, const diagrams::Arm& arm,
                        const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                        SeedRun& run);
 // exp3's records the test after each trial as the trial's actor_alone, and the figures
 // trials_to_skill and failures_to_skill.
-void run_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
+void run_until_skill(const parameters::Parameters& p, const diagrams::Arm& arm,
                      const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                      SeedRun& run);
 
@@ -60,21 +60,24 @@ struct SkillTest {
   std::optional<int> trials;                // the trial after which the actor alone balanced
   std::optional<int> failures;              // the failed trials before it
 };
-SkillTest train_until_skill(const config::Parameters& p, const diagrams::Arm& arm,
+SkillTest train_until_skill(const parameters::Parameters& p, const diagrams::Arm& arm,
                             const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                             SeedRun& run);
+// Throws config::ConfigError unless every exp3.angles entry lies inside trial.failure_angle:
+// what exp3's training tests from (exp3's check, and transfer's when it trains as exp3).
+void check_skill_angles(const parameters::Parameters& p);
 
 // exp1's results schema (the default's, with the paper's figures on the paper's robot), which
 // an arm run alone has too.
-ResultsSchema exp1_schema(const config::Parameters& parameters);
+ResultsSchema exp1_schema(const parameters::Parameters& parameters);
 
 // exp1 for each arm, over the parameters' seeds.
-ExperimentResults run_exp1(const config::Parameters& parameters,
+ExperimentResults run_exp1(const parameters::Parameters& parameters,
                            const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options = {});
 
 // exp3 for each arm, over the parameters' seeds.
-ExperimentResults run_exp3(const config::Parameters& parameters,
+ExperimentResults run_exp3(const parameters::Parameters& parameters,
                            const std::vector<diagrams::Arm>& arms,
                            const ExperimentOptions& options = {});
 
@@ -82,17 +85,18 @@ ExperimentResults run_exp3(const config::Parameters& parameters,
 // start from (options.initial_weights, cbbg run --load-weights) evaluated as exp1 evaluates
 // what it learnt, or the closed loop of an arm that learns nothing. Throws config::ConfigError
 // before any work for an arm that learns when there are no initial weights.
-ExperimentResults run_evaluation(const config::Parameters& parameters,
+ExperimentResults run_evaluation(const parameters::Parameters& parameters,
                                  const std::vector<diagrams::Arm>& arms,
                                  const ExperimentOptions& options = {});
 // Its check before any work (Protocol::check).
-void check_evaluation(const config::Parameters& parameters, const std::vector<diagrams::Arm>& arms,
-                      const LearntWeights* initial_weights);
+void check_evaluation(const parameters::Parameters& parameters,
+                      const std::vector<diagrams::Arm>& arms, const LearntWeights* initial_weights);
 
 // exp2: trial 1 in `coordinated`'s closed loop, the later trials in `operant`'s, which
 // carries on the learning of trial 1 (Context::continue_from). The results name the arm
 // `coordinated.name`.
-ExperimentResults run_exp2(const config::Parameters& parameters, const diagrams::Arm& coordinated,
-                           const diagrams::Arm& operant, const ExperimentOptions& options = {});
+ExperimentResults run_exp2(const parameters::Parameters& parameters,
+                           const diagrams::Arm& coordinated, const diagrams::Arm& operant,
+                           const ExperimentOptions& options = {});
 
 }  // namespace cbbg::experiments

@@ -12,15 +12,15 @@
 #include <stdexcept>
 #include <thread>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/framework/interrupt.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
 namespace {
 
 // Runs one task, its steps rows (after their header line) into the store's file or into
 // run.steps_csv.
-void run_task(const config::Parameters& parameters, std::size_t task, const TaskBody& body,
+void run_task(const parameters::Parameters& parameters, std::size_t task, const TaskBody& body,
               const TaskStorage* store, SeedRun& run) {
   std::ofstream file;
   std::ostringstream memory;
@@ -54,7 +54,7 @@ void run_task(const config::Parameters& parameters, std::size_t task, const Task
   store->save(task, run);
 }
 
-ExperimentResults empty_results(const config::RunParams& what,
+ExperimentResults empty_results(const parameters::RunParams& what,
                                 const std::vector<std::string>& arms) {
   ExperimentResults results;
   results.experiment = what.experiment;
@@ -73,7 +73,7 @@ ExperimentResults empty_results(const config::RunParams& what,
 
 }  // namespace
 
-ExperimentResults run_tasks(const config::Parameters& parameters,
+ExperimentResults run_tasks(const parameters::Parameters& parameters,
                             const std::vector<std::string>& arms, const TaskBody& body,
                             const ExperimentOptions& options) {
   ExperimentResults results = empty_results(parameters.run, arms);

@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <functional>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/experiments/seed_run.h"
+#include "cbbg/parameters/parameters.h"
 #include "cbbg/records/task_storage.h"
 
 namespace cbbg::experiments {
@@ -40,7 +40,7 @@ using TaskBody = std::function<void(SeedRun& run, const TelemetryOptions& teleme
 // `seeds` of them), each task run by `body` in `options.jobs` threads. The first task to
 // throw stops the others from starting and is rethrown; an interrupt (Ctrl-C in Python,
 // framework/interrupt.h) stops the running ones too, at their simulations' next instant.
-ExperimentResults run_tasks(const config::Parameters& parameters,
+ExperimentResults run_tasks(const parameters::Parameters& parameters,
                             const std::vector<std::string>& arms, const TaskBody& body,
                             const ExperimentOptions& options);
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "cbbg/config/parameters.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
 
@@ -31,7 +31,7 @@ int AngleEvaluation::balanced() const {
 namespace {
 
 // The runs of evaluate_policy, or of evaluate_controller when `weights` is null.
-PolicyEvaluation evaluate(const config::Parameters& parameters,
+PolicyEvaluation evaluate(const parameters::Parameters& parameters,
                           const diagrams::ClosedLoopFactory& factory, const LearntWeights* weights,
                           const EvaluationSettings& settings) {
   settings.validate();
@@ -65,13 +65,13 @@ PolicyEvaluation evaluate(const config::Parameters& parameters,
 
 }  // namespace
 
-PolicyEvaluation evaluate_policy(const config::Parameters& parameters,
+PolicyEvaluation evaluate_policy(const parameters::Parameters& parameters,
                                  const diagrams::ClosedLoopFactory& policy,
                                  const LearntWeights& weights, const EvaluationSettings& settings) {
   return evaluate(parameters, policy, &weights, settings);
 }
 
-PolicyEvaluation evaluate_controller(const config::Parameters& parameters,
+PolicyEvaluation evaluate_controller(const parameters::Parameters& parameters,
                                      const diagrams::ClosedLoopFactory& controller,
                                      const EvaluationSettings& settings) {
   return evaluate(parameters, controller, nullptr, settings);

@@ -12,10 +12,10 @@
 #include <optional>
 #include <vector>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/closed_loop.h"
 #include "cbbg/experiments/learnt_weights.h"
 #include "cbbg/experiments/trial_runner.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
 
@@ -51,13 +51,13 @@ struct PolicyEvaluation {
 // settings.repeats times. The weights' feature count must match the loop's features
 // (store::check_layout gives the user's message; here a mismatch throws
 // std::invalid_argument, as does a loop without an actor).
-PolicyEvaluation evaluate_policy(const config::Parameters& parameters,
+PolicyEvaluation evaluate_policy(const parameters::Parameters& parameters,
                                  const diagrams::ClosedLoopFactory& policy,
                                  const LearntWeights& weights, const EvaluationSettings& settings);
 
 // The same runs of a closed loop that learns nothing (pd_only: the supervisor alone), as it
 // is. Throws std::invalid_argument for a loop that learns.
-PolicyEvaluation evaluate_controller(const config::Parameters& parameters,
+PolicyEvaluation evaluate_controller(const parameters::Parameters& parameters,
                                      const diagrams::ClosedLoopFactory& controller,
                                      const EvaluationSettings& settings);
 

@@ -17,12 +17,12 @@ std::vector<std::string> names_of(const std::vector<diagrams::Arm>& arms) {
 
 }  // namespace
 
-config::Parameters with_seed(config::Parameters parameters, long long seed) {
+parameters::Parameters with_seed(parameters::Parameters parameters, long long seed) {
   parameters.run.seed = seed;
   return parameters;
 }
 
-WeightsProvenance provenance(const config::Parameters& p, const SeedRun& run) {
+WeightsProvenance provenance(const parameters::Parameters& p, const SeedRun& run) {
   return {run.arm, run.seed, static_cast<long long>(run.trials.size()), p.plant.kind};
 }
 
@@ -34,9 +34,9 @@ void keep_weights(LearntWeights weights, SeedRun& run) {
   }
 }
 
-SeedEvaluation evaluate_seed(const config::Parameters& training, const diagrams::Arm& arm,
+SeedEvaluation evaluate_seed(const parameters::Parameters& training, const diagrams::Arm& arm,
                              const LearntWeights* weights, long long seed) {
-  const config::Parameters p = with_seed(evaluation_parameters(training), seed);
+  const parameters::Parameters p = with_seed(evaluation_parameters(training), seed);
   EvaluationSettings settings;
   settings.angles = p.evaluation.angles;
   PolicyEvaluation evaluation;
@@ -53,19 +53,19 @@ SeedEvaluation evaluate_seed(const config::Parameters& training, const diagrams:
   return result;
 }
 
-std::vector<EvaluationRecord> evaluate_weights(const config::Parameters& training,
+std::vector<EvaluationRecord> evaluate_weights(const parameters::Parameters& training,
                                                const diagrams::Arm& arm,
                                                const LearntWeights* weights, long long seed) {
   return evaluate_seed(training, arm, weights, seed).records;
 }
 
-std::vector<EvaluationRecord> evaluate_run(const config::Parameters& training,
+std::vector<EvaluationRecord> evaluate_run(const parameters::Parameters& training,
                                            const diagrams::Arm& arm, const SeedRun& run) {
   if (run.weights_diverged) return {};
   return evaluate_weights(training, arm, run.weights ? &*run.weights : nullptr, run.seed);
 }
 
-void finish_run(const config::Parameters& p, const diagrams::Arm& arm,
+void finish_run(const parameters::Parameters& p, const diagrams::Arm& arm,
                 const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run) {
   if (loop.learner.learns()) {
     keep_weights(learnt_weights(loop, context, provenance(p, run)), run);
@@ -73,7 +73,7 @@ void finish_run(const config::Parameters& p, const diagrams::Arm& arm,
   run.evaluation = evaluate_run(p, arm, run);
 }
 
-SeedLoop::SeedLoop(const config::Parameters& p, const diagrams::Arm& arm,
+SeedLoop::SeedLoop(const parameters::Parameters& p, const diagrams::Arm& arm,
                    const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                    long long seed)
     : loop(arm.learner(p)),
@@ -83,16 +83,18 @@ SeedLoop::SeedLoop(const config::Parameters& p, const diagrams::Arm& arm,
   }
 }
 
-TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial) {
+TrialRecord next_trial(const parameters::Parameters& p, TrialRunner& runner, int trial) {
   return next_trial(p, runner, trial, p.trial.theta0);
 }
 
-TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial, double theta0) {
+TrialRecord next_trial(const parameters::Parameters& p, TrialRunner& runner, int trial,
+                       double theta0) {
   return {trial, p.tropism.k1, runner.run_trial(theta0, p.trial.duration, trial)};
 }
 
 ExperimentResults run_per_arm(const std::string& experiment, const PerSeed& protocol,
-                              const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+                              const parameters::Parameters& p,
+                              const std::vector<diagrams::Arm>& arms,
                               const ExperimentOptions& options) {
   for (std::size_t a = 0; a < arms.size(); ++a) {
     if (!config::is_name(arms[a].name)) {

@@ -9,21 +9,21 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/arms.h"
 #include "cbbg/experiments/learnt_weights.h"
 #include "cbbg/experiments/parallel_runs.h"
 #include "cbbg/experiments/seed_run.h"
 #include "cbbg/experiments/trial_runner.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
 
 // `parameters` with the root seed `seed`: an evaluation after a seed's training uses its
 // streams.
-config::Parameters with_seed(config::Parameters parameters, long long seed);
+parameters::Parameters with_seed(parameters::Parameters parameters, long long seed);
 
 // Where a run's weights come from: its arm, seed, trials and plant.kind.
-WeightsProvenance provenance(const config::Parameters& p, const SeedRun& run);
+WeightsProvenance provenance(const parameters::Parameters& p, const SeedRun& run);
 
 // Keeps what was learnt, unless it stopped being finite (a diverged learner): then the run
 // says so instead, and nothing evaluates or saves it.
@@ -34,7 +34,7 @@ void keep_weights(LearntWeights weights, SeedRun& run);
 // exploration, no supervisor, frozen), as `cbbg eval` runs it (nothing for an arm without a
 // policy), or, without weights, the arm's closed loop as it is (pd_only: the supervisor
 // alone).
-std::vector<EvaluationRecord> evaluate_weights(const config::Parameters& training,
+std::vector<EvaluationRecord> evaluate_weights(const parameters::Parameters& training,
                                                const diagrams::Arm& arm,
                                                const LearntWeights* weights, long long seed);
 
@@ -43,42 +43,44 @@ struct SeedEvaluation {
   std::vector<EvaluationRecord> records;
   bool seed_free = true;
 };
-SeedEvaluation evaluate_seed(const config::Parameters& training, const diagrams::Arm& arm,
+SeedEvaluation evaluate_seed(const parameters::Parameters& training, const diagrams::Arm& arm,
                              const LearntWeights* weights, long long seed);
 
 // What `run` leaves, tested so with its seed: its learnt weights, or, for an arm that learns
 // nothing, its closed loop; nothing for a learner whose weights diverged.
-std::vector<EvaluationRecord> evaluate_run(const config::Parameters& training,
+std::vector<EvaluationRecord> evaluate_run(const parameters::Parameters& training,
                                            const diagrams::Arm& arm, const SeedRun& run);
 
 // The end of a run: what was learnt is kept (keep_weights), and the run evaluated
 // (evaluate_run) into SeedRun::evaluation.
-void finish_run(const config::Parameters& p, const diagrams::Arm& arm,
+void finish_run(const parameters::Parameters& p, const diagrams::Arm& arm,
                 const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run);
 
 // One seed of an arm: its learning closed loop and the runner of its trials, started from
 // the initial weights when there are some.
 struct SeedLoop {
-  SeedLoop(const config::Parameters& p, const diagrams::Arm& arm, const TelemetryOptions& telemetry,
-           const LearntWeights* initial_weights, long long seed);
+  SeedLoop(const parameters::Parameters& p, const diagrams::Arm& arm,
+           const TelemetryOptions& telemetry, const LearntWeights* initial_weights, long long seed);
   diagrams::ClosedLoop loop;
   TrialRunner runner;  // runs `loop`: declared after it
 };
 
 // The next trial from trial.theta0 (or `theta0`), for trial.duration, k1 fixed.
-TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial);
-TrialRecord next_trial(const config::Parameters& p, TrialRunner& runner, int trial, double theta0);
+TrialRecord next_trial(const parameters::Parameters& p, TrialRunner& runner, int trial);
+TrialRecord next_trial(const parameters::Parameters& p, TrialRunner& runner, int trial,
+                       double theta0);
 
 // One seed of one arm under a protocol: fills `run` (its arm and seed set).
 using PerSeed =
-    std::function<void(const config::Parameters&, const diagrams::Arm&, const TelemetryOptions&,
+    std::function<void(const parameters::Parameters&, const diagrams::Arm&, const TelemetryOptions&,
                        const LearntWeights* initial_weights, SeedRun&)>;
 
 // `per_seed` for every (arm, seed), in options.jobs threads, the results named `protocol`.
 // Throws std::invalid_argument before any work for an arm name that is not a name or is
 // given twice, and config::ConfigError for an evaluation an arm's plant would not see.
 ExperimentResults run_per_arm(const std::string& protocol, const PerSeed& per_seed,
-                              const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+                              const parameters::Parameters& p,
+                              const std::vector<diagrams::Arm>& arms,
                               const ExperimentOptions& options);
 
 }  // namespace cbbg::experiments

@@ -11,8 +11,14 @@ namespace cbbg::experiments {
 namespace {
 
 std::vector<Protocol>& registry() {
-  static std::vector<Protocol> all{exp1_protocol(), exp2_protocol(), exp3_protocol(),
-                                   evaluate_protocol(), transfer_protocol()};
+  static std::vector<Protocol> all = [] {
+    std::vector<Protocol> library{exp1_protocol(), exp2_protocol(), exp3_protocol(),
+                                  evaluate_protocol(), transfer_protocol()};
+    for (const Protocol& protocol : library) {
+      config::register_keys(protocol.keys, protocol.keys_after);
+    }
+    return library;
+  }();
   return all;
 }
 
@@ -27,10 +33,20 @@ void register_protocol(Protocol protocol) {
     throw std::invalid_argument("protocol '" + protocol.name + "': an arm has that name");
   }
   if (!protocol.run) throw std::invalid_argument("protocol '" + protocol.name + "' has no run");
+  config::register_keys(protocol.keys, protocol.keys_after);
   registry().push_back(std::move(protocol));
 }
 
 const std::vector<Protocol>& protocols() { return registry(); }
+
+bool is_protocol_key(std::string_view key) {
+  for (const Protocol& protocol : registry()) {
+    for (const config::KeySpec& spec : protocol.keys) {
+      if (spec.path == key) return true;
+    }
+  }
+  return false;
+}
 
 const Protocol* find_protocol(std::string_view name) {
   for (const Protocol& protocol : registry()) {
@@ -39,7 +55,7 @@ const Protocol* find_protocol(std::string_view name) {
   return nullptr;
 }
 
-ResultsSchema results_schema(const config::Parameters& parameters) {
+ResultsSchema results_schema(const parameters::Parameters& parameters) {
   const Protocol* protocol = find_protocol(parameters.run.experiment);
   ResultsSchema schema = protocol == nullptr ? exp1_schema(parameters)  // an arm alone
                          : protocol->schema  ? protocol->schema(parameters)
@@ -60,18 +76,19 @@ void check_recorded_figures(const ExperimentResults& results) {
   }
 }
 
-void check_protocol(const config::Parameters& parameters, const LearntWeights* initial_weights) {
+void check_protocol(const parameters::Parameters& parameters,
+                    const LearntWeights* initial_weights) {
   const Protocol* protocol = find_protocol(parameters.run.experiment);
   if (protocol != nullptr && protocol->check) protocol->check(parameters, initial_weights);
 }
 
-std::vector<std::string> experiment_arms(const config::RunParams& run) {
+std::vector<std::string> experiment_arms(const parameters::RunParams& run) {
   const Protocol* protocol = find_protocol(run.experiment);
   if (protocol == nullptr) return {run.experiment};
   return protocol->arms ? protocol->arms(run) : run.arms;
 }
 
-ExperimentResults run_experiment(const config::Parameters& parameters,
+ExperimentResults run_experiment(const parameters::Parameters& parameters,
                                  const ExperimentOptions& options) {
   check_run_names(parameters.run);
   const std::vector<diagrams::Arm> arms = diagrams::named_arms(experiment_arms(parameters.run));

@@ -9,15 +9,17 @@
 //   experiments::register_protocol({
 //       .name = "curriculum",
 //       .meaning = "trials from 0.05 rad until a success, then from trial.theta0",
-//       .run = [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+//       .run = [](const parameters::Parameters& p, const std::vector<diagrams::Arm>& arms,
 //                 const experiments::ExperimentOptions& options) {
 //         return experiments::run_per_arm("curriculum", curriculum_seed, p, arms, options);
 //       },
-//       .schema = [](const config::Parameters&) {
+//       .schema = [](const parameters::Parameters&) {
 //         return experiments::ResultsSchema{.figures = {{.name = "warm_up_trials",
 //                                                        .type = ValueType::kInteger,
 //                                                        .paired = true}}};
-//       }});
+//       },
+//       .keys = config::declared_keys(CurriculumParams{}, "curriculum")});
+//   // and in its run: config::read_section<CurriculumParams>(p.own, "curriculum")
 
 #include <functional>
 #include <string>
@@ -25,10 +27,11 @@
 #include <utility>
 #include <vector>
 
-#include "cbbg/config/parameters.h"
+#include "cbbg/config/declared_keys.h"
 #include "cbbg/diagrams/arms.h"
 #include "cbbg/experiments/parallel_runs.h"
 #include "cbbg/experiments/seed_run.h"
+#include "cbbg/parameters/parameters.h"
 #include "cbbg/records/schema.h"
 
 namespace cbbg::experiments {
@@ -37,46 +40,58 @@ struct Protocol {
   std::string name{};
   std::string meaning{};  // one line, for `cbbg list` and the help
   // The arms it runs, by name, from the run's parameters; empty: the `arms` key's.
-  std::function<std::vector<std::string>(const config::RunParams&)> arms{};
+  std::function<std::vector<std::string>(const parameters::RunParams&)> arms{};
   // Runs it over those arms (diagrams::named_arm of each), its results named after it.
-  std::function<ExperimentResults(const config::Parameters&, const std::vector<diagrams::Arm>&,
+  std::function<ExperimentResults(const parameters::Parameters&, const std::vector<diagrams::Arm>&,
                                   const ExperimentOptions&)>
       run{};
   // What its results hold (records/schema.h), from the run's parameters (transfer names its
   // figures after its conditions); none: exp1's, without the paper's figures.
-  std::function<ResultsSchema(const config::Parameters&)> schema{};
+  std::function<ResultsSchema(const parameters::Parameters&)> schema{};
   // Before any work, given the weights learning starts from (none: nullptr): a user's mistake
   // in the parameters, as a config::ConfigError; none by default.
-  std::function<void(const config::Parameters&, const LearntWeights* initial_weights)> check{};
+  std::function<void(const parameters::Parameters&, const LearntWeights* initial_weights)> check{};
   // Whether its runs learn weights (what --save-weights keeps); evaluate's only use them.
   bool learns = true;
+  // Its own keys (config::declared_keys of its params structs), registered with it and read
+  // from the run's parameters.own (config::read_section); placed in config.yaml after the key
+  // or section `keys_after` names, else at the end. A transfer condition never sets them.
+  std::vector<config::KeySpec> keys{};
+  std::string keys_after{};
 };
 
-// Adds `protocol` (its name a config::is_name word no protocol or arm has). Register before
-// running the command line. Throws std::invalid_argument.
+// Adds `protocol` (its name a config::is_name word no protocol or arm has) and its keys.
+// Register before making the config (the command line makes it). Throws
+// std::invalid_argument.
 void register_protocol(Protocol protocol);
 
 // exp1, exp2, exp3, evaluate, transfer, then the registered protocols.
 const std::vector<Protocol>& protocols();
+// Every program that includes this header has the library's protocols, and their keys, before
+// main; after the tree's (parameters/parameters.h, included above), which they follow.
+[[maybe_unused]] inline const bool kLibraryProtocolsRegistered = !protocols().empty();
+
+// Whether a protocol's own keys (Protocol::keys) declare `key`.
+bool is_protocol_key(std::string_view key);
 // The protocol named `name`, or nullptr (an arm's name: that arm alone under exp1).
 const Protocol* find_protocol(std::string_view name);
 
 // The schema of the results of the experiment `parameters` name: its protocol's, or exp1's (an
 // arm alone). Throws std::invalid_argument when a protocol declares one that cannot be written.
-ResultsSchema results_schema(const config::Parameters& parameters);
+ResultsSchema results_schema(const parameters::Parameters& parameters);
 
 // Throws std::runtime_error naming the run when one of `results`' runs records a figure its
 // schema does not declare (it would be lost).
 void check_recorded_figures(const ExperimentResults& results);
 
 // The check of the protocol `parameters` name, if it has one (Protocol::check).
-void check_protocol(const config::Parameters& parameters, const LearntWeights* initial_weights);
+void check_protocol(const parameters::Parameters& parameters, const LearntWeights* initial_weights);
 
 // The arms `run.experiment` runs, by name: its protocol's, or the one arm it names.
-std::vector<std::string> experiment_arms(const config::RunParams& run);
+std::vector<std::string> experiment_arms(const parameters::RunParams& run);
 
 // The experiment the parameters name, over its arms (what `cbbg run` runs).
-ExperimentResults run_experiment(const config::Parameters& parameters,
+ExperimentResults run_experiment(const parameters::Parameters& parameters,
                                  const ExperimentOptions& options = {});
 
 }  // namespace cbbg::experiments

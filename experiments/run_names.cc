@@ -40,7 +40,7 @@ void check_arm_names(const std::vector<std::string>& arms) {
   }
 }
 
-void check_run_names(const config::RunParams& run) {
+void check_run_names(const parameters::RunParams& run) {
   check_experiment_name(run.experiment);
   check_arm_names(run.arms);
 }

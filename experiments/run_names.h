@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/config/parameters.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
 
@@ -23,6 +23,6 @@ std::vector<ProtocolName> protocol_names();
 // is allowed and what was given.
 void check_experiment_name(const std::string& experiment);
 void check_arm_names(const std::vector<std::string>& arms);
-void check_run_names(const config::RunParams& run);
+void check_run_names(const parameters::RunParams& run);
 
 }  // namespace cbbg::experiments

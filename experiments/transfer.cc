@@ -3,26 +3,32 @@
 #include <string_view>
 
 #include "cbbg/config/config.h"
+#include "cbbg/config/declared_keys.h"
 #include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/experiments/builtin_protocols.h"
 #include "cbbg/experiments/evaluation_conditions.h"
 #include "cbbg/experiments/experiments.h"
 #include "cbbg/experiments/protocol_kit.h"
 #include "cbbg/experiments/shared_evaluations.h"
+#include "cbbg/experiments/transfer_params.h"
 
 namespace cbbg::experiments {
 namespace {
 
+TransferParams transfer_params(const parameters::Parameters& p) {
+  return config::read_section<TransferParams>(p.own, "transfer");
+}
+
 // What a condition may change: what the evaluation sees, never what is learnt or how.
-bool condition_may_set(const std::string& key, const config::Parameters& p) {
+bool condition_may_set(const std::string& key, const parameters::Parameters& p) {
   for (const char* section : {"evaluation.", "sensors.", "push."}) {
     if (key.starts_with(section)) return true;
   }
   if (key.starts_with("plant.")) return key != "plant.kind";
-  return p.own.values.contains(key);
+  return p.own.values.contains(key) && !is_protocol_key(key);
 }
 
-TransferCondition applied(const config::Parameters& p, const std::string& entry,
+TransferCondition applied(const parameters::Parameters& p, const std::string& entry,
                           const std::string& label) {
   for (const auto& [key, value] : config::split_settings(entry)) {
     if (!condition_may_set(key, p)) {
@@ -72,17 +78,18 @@ std::vector<std::vector<EvaluationRecord>> evaluate_conditions(
 
 }  // namespace
 
-std::vector<TransferCondition> transfer_conditions(const config::Parameters& p) {
+std::vector<TransferCondition> transfer_conditions(const parameters::Parameters& p) {
   std::vector<TransferCondition> conditions;
-  const std::vector<std::string>& entries = p.transfer.conditions;
+  const std::vector<std::string> entries = transfer_params(p).conditions;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     conditions.push_back(applied(p, entries[i], "transfer.conditions[" + std::to_string(i) + "]"));
   }
   return conditions;
 }
 
-std::vector<TransferCondition> check_transfer(const config::Parameters& p,
+std::vector<TransferCondition> check_transfer(const parameters::Parameters& p,
                                               const std::vector<diagrams::Arm>& arms) {
+  if (transfer_params(p).training == TransferTraining::kUntilSkill) check_skill_angles(p);
   std::vector<TransferCondition> conditions = transfer_conditions(p);
   for (const auto& condition : conditions) {
     for (const auto& arm : arms) {
@@ -96,12 +103,13 @@ std::vector<TransferCondition> check_transfer(const config::Parameters& p,
   return conditions;
 }
 
-ExperimentResults run_transfer(const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+ExperimentResults run_transfer(const parameters::Parameters& p,
+                               const std::vector<diagrams::Arm>& arms,
                                const ExperimentOptions& options) {
   const std::vector<TransferCondition> conditions = check_transfer(p, arms);
-  const bool until_skill = p.transfer.training == config::TransferTraining::kUntilSkill;
+  const bool until_skill = transfer_params(p).training == TransferTraining::kUntilSkill;
   SharedEvaluations shared;
-  const PerSeed per_seed = [&](const config::Parameters& q, const diagrams::Arm& arm,
+  const PerSeed per_seed = [&](const parameters::Parameters& q, const diagrams::Arm& arm,
                                const TelemetryOptions& telemetry,
                                const LearntWeights* initial_weights, SeedRun& run) {
     std::optional<SkillTest> skill;
@@ -129,9 +137,9 @@ ExperimentResults run_transfer(const config::Parameters& p, const std::vector<di
   return run_per_arm("transfer", per_seed, p, arms, options);
 }
 
-ResultsSchema transfer_schema(const config::Parameters& p) {
+ResultsSchema transfer_schema(const parameters::Parameters& p) {
   ResultsSchema schema{.plots = {"pitch", "failures", "figures"}};
-  for (const std::string& condition : p.transfer.conditions) {
+  for (const std::string& condition : transfer_params(p).conditions) {
     schema.figures.push_back({.name = "balanced@" + condition,
                               .type = ValueType::kInteger,
                               .meaning = "evaluation runs that balanced under " + condition,
@@ -140,7 +148,7 @@ ResultsSchema transfer_schema(const config::Parameters& p) {
                               .type = ValueType::kInteger,
                               .meaning = "evaluation runs under " + condition});
   }
-  if (p.transfer.training == config::TransferTraining::kUntilSkill) {
+  if (transfer_params(p).training == TransferTraining::kUntilSkill) {
     schema.figures.push_back({.name = "skilled",
                               .type = ValueType::kInteger,
                               .meaning = "1 when the actor alone came to balance, else 0"});
@@ -163,11 +171,13 @@ Protocol transfer_protocol() {
       .meaning =
           "per arm and seed: one training (transfer.training), then evaluated under "
           "each of transfer.conditions",
-      .run = [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+      .run = [](const parameters::Parameters& p, const std::vector<diagrams::Arm>& arms,
                 const ExperimentOptions& options) { return run_transfer(p, arms, options); },
       .schema = transfer_schema,
-      .check = [](const config::Parameters& p,
-                  const LearntWeights*) { check_transfer(p, diagrams::named_arms(p.run.arms)); }};
+      .check = [](const parameters::Parameters& p,
+                  const LearntWeights*) { check_transfer(p, diagrams::named_arms(p.run.arms)); },
+      .keys = config::declared_keys(TransferParams{}, "transfer"),
+      .keys_after = "exp3"};
 }
 
 }  // namespace cbbg::experiments

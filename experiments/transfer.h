@@ -19,16 +19,16 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/arms.h"
 #include "cbbg/experiments/parallel_runs.h"
 #include "cbbg/experiments/seed_run.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::experiments {
 
 struct TransferCondition {
-  std::string name;               // the transfer.conditions entry, "evaluation.noise_std=0.05"
-  config::Parameters parameters;  // the run's, with the entry's settings
+  std::string name;                   // the transfer.conditions entry, "evaluation.noise_std=0.05"
+  parameters::Parameters parameters;  // the run's, with the entry's settings
   // The settings are the run's own values: its figures are those of the run's evaluation
   // (SeedRun::evaluation), which it takes instead of evaluating the same again.
   bool changes_nothing = false;
@@ -38,15 +38,16 @@ struct TransferCondition {
 // config::ConfigError naming the entry (transfer.conditions[i]) when it sets a key outside
 // the evaluation, the robot, its sensors, the pushes and the registered sections, or makes
 // parameters no run would take.
-std::vector<TransferCondition> transfer_conditions(const config::Parameters& p);
+std::vector<TransferCondition> transfer_conditions(const parameters::Parameters& p);
 
 // The conditions, and before any training, every arm's plant sees the robot each condition
 // changes (evaluation_conditions.h). Throws config::ConfigError.
-std::vector<TransferCondition> check_transfer(const config::Parameters& p,
+std::vector<TransferCondition> check_transfer(const parameters::Parameters& p,
                                               const std::vector<diagrams::Arm>& arms);
 
 // The transfer protocol over `arms`, the results named "transfer".
-ExperimentResults run_transfer(const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+ExperimentResults run_transfer(const parameters::Parameters& p,
+                               const std::vector<diagrams::Arm>& arms,
                                const ExperimentOptions& options = {});
 
 }  // namespace cbbg::experiments

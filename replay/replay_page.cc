@@ -94,7 +94,7 @@ std::string robot_json(const ReplayRobot& robot) {
 
 }  // namespace
 
-ReplayRobot replay_robot(const config::Parameters& parameters) {
+ReplayRobot replay_robot(const parameters::Parameters& parameters) {
   const auto plant = diagrams::plant_kind(parameters.plant.kind).make("plant", parameters);
   return {plant->drawing(), parameters.trial.failure_angle, parameters.plant.robot.torque_limit};
 }
@@ -134,7 +134,7 @@ std::string replay_of_run(const std::filesystem::path& run, const TrialChoice& c
   const std::vector<TrialEntry> chosen =
       choose_trials(read_trial_entries(run / "trials.csv"), choice);
   const std::vector<TrialLog> logs = read_trial_logs(run / "steps.csv", chosen);
-  const config::Parameters parameters = config::read_parameters(config);
+  const parameters::Parameters parameters = parameters::read_parameters(config);
   const std::string title = parameters.run.experiment + ", " + parameters.plant.kind +
                             " plant: " + (name.empty() ? run.filename().string() : name);
   return replay_page(page_template, title, replay_robot(parameters), logs);

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cbbg/config/parameters.h"
+#include "cbbg/parameters/parameters.h"
 #include "cbbg/plant/plant_drawing.h"
 #include "cbbg/replay/trial_log.h"
 
@@ -29,7 +29,7 @@ struct ReplayRobot {
 
 // The robot of a run's parameters: the drawing of the plant plant.kind's kind builds from them
 // (a user's kind's plant states its own), and the limits.
-ReplayRobot replay_robot(const config::Parameters& parameters);
+ReplayRobot replay_robot(const parameters::Parameters& parameters);
 
 // `page_template` with `trials` in it. Throws std::invalid_argument when the template is not
 // a replay page (no generator tag or no data marker).

@@ -1,7 +1,7 @@
 #include "cbbg/store/results_writer.h"
 
-#include "cbbg/config/parameters.h"
 #include "cbbg/framework/number_text.h"
+#include "cbbg/parameters/parameters.h"
 #include "cbbg/records/paired_statistics.h"
 #include "cbbg/store/fault_point.h"
 #include "cbbg/store/files.h"
@@ -393,7 +393,7 @@ std::string schema_json(const ExperimentResults& results) {
        {"reference", reference}});
 }
 
-RunFacts run_facts(const config::Parameters& parameters) {
+RunFacts run_facts(const parameters::Parameters& parameters) {
   return {parameters.plant.kind, parameters.run.max_trials, parameters.log.decimation};
 }
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cbbg/config/config.h"
-#include "cbbg/config/parameters.h"
+#include "cbbg/parameters/parameters.h"
 #include "cbbg/records/experiment_results.h"
 
 namespace cbbg::store {
@@ -28,7 +28,7 @@ struct RunFacts {
   long long max_trials = 0;
   long long log_decimation = 0;  // log.decimation: steps.csv when positive
 };
-RunFacts run_facts(const config::Parameters& parameters);
+RunFacts run_facts(const parameters::Parameters& parameters);
 
 // Writes every data file of `results` into `directory` (which must exist), config.yaml as
 // recorded_config, and each learning run's weights into weights/<arm>_seed<k>.txt. steps.csv comes

@@ -35,7 +35,7 @@ void count_ticks(benchmark::State& state, long long ticks) {
 }
 
 void run_diagram_trial(benchmark::State& state, Schedule schedule) {
-  const config::Parameters parameters = config::read_parameters(analytic_config());
+  const parameters::Parameters parameters = parameters::read_parameters(analytic_config());
   diagrams::ClosedLoop controller = diagrams::build_preset("cbbg", parameters);
   controller.schedule = schedule;
   const double theta0 = parameters.trial.theta0;

@@ -36,7 +36,7 @@ struct CartPoleParams {
   }
 };
 
-inline CartPoleParams cart_pole_params(const cbbg::config::Parameters& parameters) {
+inline CartPoleParams cart_pole_params(const cbbg::parameters::Parameters& parameters) {
   return cbbg::config::read_section<CartPoleParams>(parameters.own, "cartpole");
 }
 
@@ -127,18 +127,18 @@ inline void register_cart_pole() {
   cbbg::diagrams::register_plant_kind(
       {.name = "cartpole",
        .description = "a pole on a wheeled cart (cartpole.*)",
-       .make = [](const std::string& name,
-                  const cbbg::config::Parameters& p) -> std::unique_ptr<cbbg::plant::RobotPlant> {
+       .make = [](const std::string& name, const cbbg::parameters::Parameters& p)
+           -> std::unique_ptr<cbbg::plant::RobotPlant> {
          return std::make_unique<CartPole>(name, cart_pole_params(p));
        },
        .change =
-           [](cbbg::config::Parameters& p, cbbg::diagrams::RobotChange change, double factor) {
+           [](cbbg::parameters::Parameters& p, cbbg::diagrams::RobotChange change, double factor) {
              if (change != cbbg::diagrams::RobotChange::kBodyMass) return false;
              std::get<double>(p.own.values.at("cartpole.pole_mass")) *= factor;
              return true;
            },
        .linearize =
-           [](const cbbg::config::Parameters& p) { return linearize(cart_pole_params(p)); }});
+           [](const cbbg::parameters::Parameters& p) { return linearize(cart_pole_params(p)); }});
 }
 
 }  // namespace cartpole

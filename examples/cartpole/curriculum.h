@@ -26,7 +26,7 @@ struct CurriculumParams {
 // failures on the way to the first success from trial.theta0, and the seed's own figure
 // warm_up_trials the trials from the first angle, which its schema declares (figures.csv,
 // summed in summary.json, compared between arms, drawn by cbbg plot).
-inline void curriculum_seed(const cbbg::config::Parameters& p, const cbbg::diagrams::Arm& arm,
+inline void curriculum_seed(const cbbg::parameters::Parameters& p, const cbbg::diagrams::Arm& arm,
                             const cbbg::experiments::TelemetryOptions& telemetry,
                             const cbbg::experiments::LearntWeights* initial_weights,
                             cbbg::experiments::SeedRun& run) {
@@ -63,12 +63,12 @@ inline void register_curriculum() {
        .meaning = "per arm and seed: trials from curriculum.first_angle until a success, then "
                   "from trial.theta0 until one",
        .run =
-           [](const cbbg::config::Parameters& p, const std::vector<cbbg::diagrams::Arm>& arms,
+           [](const cbbg::parameters::Parameters& p, const std::vector<cbbg::diagrams::Arm>& arms,
               const cbbg::experiments::ExperimentOptions& options) {
              return cbbg::experiments::run_per_arm("curriculum", curriculum_seed, p, arms, options);
            },
        .schema =
-           [](const cbbg::config::Parameters&) {
+           [](const cbbg::parameters::Parameters&) {
              using namespace cbbg::experiments;
              return ResultsSchema{
                  .figures = {{.name = "warm_up_trials",

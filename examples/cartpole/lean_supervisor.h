@@ -54,7 +54,7 @@ class LeanPd final : public cbbg::Block {
 inline void register_lean_pd() { cbbg::config::register_section<LeanPdParams>("lean_pd"); }
 
 inline std::unique_ptr<cbbg::Block> make_lean_pd(const std::string& name,
-                                                 const cbbg::config::Parameters& p) {
+                                                 const cbbg::parameters::Parameters& p) {
   return std::make_unique<LeanPd>(name, cbbg::config::read_section<LeanPdParams>(p.own, "lean_pd"));
 }
 

@@ -59,7 +59,7 @@ class TileCoding final : public cbbg::Block, public cbbg::blocks::DescribesLayou
 inline void register_tiles() { cbbg::config::register_section<TileParams>(TileParams::kSection); }
 
 inline std::unique_ptr<cbbg::Block> make_tiles(const std::string& name,
-                                               const cbbg::config::Parameters& p) {
+                                               const cbbg::parameters::Parameters& p) {
   return std::make_unique<TileCoding>(
       name, cbbg::config::read_section<TileParams>(p.own, TileParams::kSection));
 }

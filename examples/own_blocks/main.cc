@@ -40,7 +40,7 @@ void register_own_critic() {
 
 void register_own_exploration() {
   ControllerOptions options = paper();
-  options.slots.exploration = [](const std::string& name, const cbbg::config::Parameters& p) {
+  options.slots.exploration = [](const std::string& name, const cbbg::parameters::Parameters& p) {
     return std::make_shared<own_blocks::UniformExploration>(name, p);
   };
   cbbg::diagrams::register_arm("own_exploration", "cbbg with uniform exploration", options);
@@ -48,7 +48,7 @@ void register_own_exploration() {
 
 void register_own_reward() {
   cbbg::diagrams::TaskSlots task;
-  task.reward = [](const std::string& name, const cbbg::config::Parameters& p) {
+  task.reward = [](const std::string& name, const cbbg::parameters::Parameters& p) {
     return std::make_shared<own_blocks::PitchCostReward>(name, p);
   };
   cbbg::diagrams::register_arm("own_reward", "cbbg learning from a pitch cost", paper(), task);

@@ -6,15 +6,16 @@
 #include <string>
 
 #include <cbbg/blocks/measured_signals.h>
-#include <cbbg/config/parameters.h>
 #include <cbbg/framework/block.h>
 #include <cbbg/framework/block_context.h>
+#include <cbbg/parameters/parameters.h>
 
 namespace own_blocks {
 
 class PitchCostReward final : public cbbg::Block {
  public:
-  PitchCostReward(std::string name, const cbbg::config::Parameters& p) : Block(std::move(name)) {
+  PitchCostReward(std::string name, const cbbg::parameters::Parameters& p)
+      : Block(std::move(name)) {
     const double failure_angle = p.trial.failure_angle;
     const auto& measured = declare_input_port("measured", cbbg::blocks::kMeasuredSize);
     const auto& failed = declare_input_port("failed", 1);

@@ -7,16 +7,17 @@
 #include <cmath>
 #include <string>
 
-#include <cbbg/config/parameters.h>
 #include <cbbg/framework/block.h>
 #include <cbbg/framework/block_context.h>
 #include <cbbg/framework/random.h>
+#include <cbbg/parameters/parameters.h>
 
 namespace own_blocks {
 
 class UniformExploration final : public cbbg::Block {
  public:
-  UniformExploration(std::string name, const cbbg::config::Parameters& p) : Block(std::move(name)) {
+  UniformExploration(std::string name, const cbbg::parameters::Parameters& p)
+      : Block(std::move(name)) {
     const double k_b = p.sampler.k_b;
     const auto& actor_action = declare_input_port("actor_action", 1);
     const auto& temperature = declare_input_port("temperature", 1);

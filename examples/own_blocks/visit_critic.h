@@ -10,16 +10,17 @@
 #include <string>
 
 #include <cbbg/blocks/learner.h>
-#include <cbbg/config/parameters.h>
 #include <cbbg/framework/block.h>
 #include <cbbg/framework/block_context.h>
+#include <cbbg/parameters/parameters.h>
 
 namespace own_blocks {
 
 class VisitCritic final : public cbbg::Block, public cbbg::blocks::Learner {
  public:
   // `learns` false: act, never change w or v (an evaluation of what was learnt).
-  VisitCritic(std::string name, int num_features, const cbbg::config::Parameters& p, bool learns)
+  VisitCritic(std::string name, int num_features, const cbbg::parameters::Parameters& p,
+              bool learns)
       : Block(std::move(name)), num_features_(num_features) {
     using cbbg::StateLifetime;
     const double beta = p.critic.beta, gamma = p.critic.gamma;

@@ -163,7 +163,7 @@ void bind_closed_loop(py::module_& m) {
            "Time 0, per-trial state reset, the robot at theta0 at rest; learning carries on.");
   m.def(
       "build_closed_loop",
-      [](std::string name, const config::Parameters& p, py::object controller, py::object plant,
+      [](std::string name, const parameters::Parameters& p, py::object controller, py::object plant,
          std::optional<blocks::PushParams> push, std::optional<diagrams::TaskSlots> task) {
         return diagrams::build_closed_loop(
             std::move(name), p, shared_from_python<Diagram>(controller, "build_closed_loop"),
@@ -175,7 +175,7 @@ void bind_closed_loop(py::module_& m) {
       "callable(name, parameters) -> RobotPlant, or None for plant.kind's.");
   m.def(
       "build_preset",
-      [](std::string_view name, const config::Parameters& p, py::object plant,
+      [](std::string_view name, const parameters::Parameters& p, py::object plant,
          std::optional<blocks::PushParams> push, std::optional<diagrams::TaskSlots> task) {
         return diagrams::build_preset(name, p, loop_options(plant, std::move(push), task));
       },
@@ -190,7 +190,7 @@ void bind_arms(py::module_& m) {
       .def_readonly("name", &diagrams::Arm::name)
       .def(
           "learner",
-          [](const diagrams::Arm& arm, const config::Parameters& p) { return arm.learner(p); },
+          [](const diagrams::Arm& arm, const parameters::Parameters& p) { return arm.learner(p); },
           py::arg("parameters"), py::call_guard<py::gil_scoped_release>())
       .def_property_readonly(
           "learns", [](const diagrams::Arm& arm) { return static_cast<bool>(arm.policy); });
@@ -240,11 +240,11 @@ void bind_arms(py::module_& m) {
 }
 
 // A change of the robot, asked of a Python plant kind as a dict of settings.
-using PythonChange = std::function<bool(config::Parameters&, diagrams::RobotChange, double)>;
+using PythonChange = std::function<bool(parameters::Parameters&, diagrams::RobotChange, double)>;
 PythonChange change_from(py::object change) {
   if (change.is_none()) return {};
   SharedPythonObject callable(std::move(change));
-  return [callable](config::Parameters& p, diagrams::RobotChange what, double factor) {
+  return [callable](parameters::Parameters& p, diagrams::RobotChange what, double factor) {
     py::gil_scoped_acquire gil;
     py::object settings = calling_python([&] {
       return py::reinterpret_borrow<py::object>(callable.get())(copy_of(p),
@@ -252,7 +252,7 @@ PythonChange change_from(py::object change) {
     });
     if (settings.is_none()) return false;
     config::Config config;
-    config::write_parameters(p, config);
+    parameters::write_parameters(p, config);
     for (const auto& [key, value] : settings.cast<py::dict>()) {
       const std::string assignment =
           key.cast<std::string>() + "=" +
@@ -260,7 +260,7 @@ PythonChange change_from(py::object change) {
       config.set(assignment,
                  std::string("the plant kind's change of ") + diagrams::change_key(what));
     }
-    p = config::read_parameters(config);
+    p = parameters::read_parameters(config);
     return true;
   };
 }

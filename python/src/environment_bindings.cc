@@ -66,7 +66,7 @@ void bind_environment(py::module_& m) {
       "terminated, truncated, info). The action, N m on both wheels, is held for trial.period; "
       "the observation is the 6 measured signals; info holds time, supervisor_action (the "
       "configured supervisor's action on this observation), state and signal_names.")
-      .def(py::init([](const config::Parameters& p, py::object plant) {
+      .def(py::init([](const parameters::Parameters& p, py::object plant) {
              return std::make_unique<BalanceEnvironment>(
                  p, environment::EnvironmentOptions{.plant = plant_factory_from(plant)});
            }),

@@ -11,17 +11,17 @@
 
 #include "bindings.h"
 #include "cbbg/config/declared_keys.h"
-#include "cbbg/config/parameters.h"
 #include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::python {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-config::Config config_of(const config::Parameters& parameters) {
+config::Config config_of(const parameters::Parameters& parameters) {
   config::Config config;
-  config::write_parameters(parameters, config);
+  parameters::write_parameters(parameters, config);
   return config;
 }
 
@@ -33,7 +33,7 @@ bool is_key(const std::string& key) {
 }
 
 // The value of any key of a typed tree: built-in, or of a registered section.
-config::Value value_of(const config::Parameters& parameters, const std::string& key) {
+config::Value value_of(const parameters::Parameters& parameters, const std::string& key) {
   if (!is_key(key)) {
     const std::string close = config::closest_key(key);
     throw config::ConfigError("unknown key '" + key + "'" +
@@ -180,19 +180,19 @@ void bind_config(py::module_& m) {
 }
 
 void bind_typed_parameters(py::module_& m) {
-  py::class_<config::Parameters>(
+  py::class_<parameters::Parameters>(
       m, "Parameters",
       "The typed parameter tree of a run, checked whole (validated_parameters); what every "
       "factory and protocol is given.")
       .def("value", &value_of, py::arg("key"), "The value of any key, a registered one's too.")
       .def("__getitem__", &value_of, py::arg("key"))
       .def("to_config", &config_of)
-      .def("to_yaml", [](const config::Parameters& p) { return config_of(p).to_yaml(); })
-      .def_property_readonly("seeds", [](const config::Parameters& p) { return p.run.seeds; })
-      .def_property_readonly("seed", [](const config::Parameters& p) { return p.run.seed; })
+      .def("to_yaml", [](const parameters::Parameters& p) { return config_of(p).to_yaml(); })
+      .def_property_readonly("seeds", [](const parameters::Parameters& p) { return p.run.seeds; })
+      .def_property_readonly("seed", [](const parameters::Parameters& p) { return p.run.seed; })
       .def_property_readonly("experiment",
-                             [](const config::Parameters& p) { return p.run.experiment; })
-      .def_property_readonly("arms", [](const config::Parameters& p) { return p.run.arms; });
+                             [](const parameters::Parameters& p) { return p.run.experiment; })
+      .def_property_readonly("arms", [](const parameters::Parameters& p) { return p.run.arms; });
   m.def("validated_parameters", &diagrams::validated_parameters, py::arg("config"),
         "The typed tree of `config`, every value and rule checked (ConfigError otherwise).");
 }

@@ -229,18 +229,18 @@ void bind_results(py::module_& m) {
 void bind_runs(py::module_& m) {
   m.def(
       "run_experiment",
-      [](const config::Parameters& p, int jobs, const LearntWeights* initial_weights) {
+      [](const parameters::Parameters& p, int jobs, const LearntWeights* initial_weights) {
         return experiments::run_experiment(p, options_of(jobs, initial_weights));
       },
       py::arg("parameters"), py::arg("jobs") = 1, py::arg("initial_weights") = nullptr,
       py::call_guard<py::gil_scoped_release>(),
       "The experiment the parameters name (a protocol, or one arm under exp1's), over its arms.");
-  using Runner = ExperimentResults (*)(const config::Parameters&, const std::vector<diagrams::Arm>&,
-                                       const ExperimentOptions&);
+  using Runner = ExperimentResults (*)(const parameters::Parameters&,
+                                       const std::vector<diagrams::Arm>&, const ExperimentOptions&);
   const auto def_runner = [&m](const char* name, Runner runner, const char* doc) {
     m.def(
         name,
-        [runner](const config::Parameters& p, const std::vector<diagrams::Arm>& arms, int jobs,
+        [runner](const parameters::Parameters& p, const std::vector<diagrams::Arm>& arms, int jobs,
                  const LearntWeights* initial_weights) {
           return runner(p, arms, options_of(jobs, initial_weights));
         },
@@ -255,7 +255,7 @@ void bind_runs(py::module_& m) {
              "Train once, evaluate under each of transfer.conditions.");
   m.def(
       "run_exp2",
-      [](const config::Parameters& p, const diagrams::Arm& coordinated,
+      [](const parameters::Parameters& p, const diagrams::Arm& coordinated,
          const diagrams::Arm& operant, int jobs) {
         return experiments::run_exp2(p, coordinated, operant, options_of(jobs, nullptr));
       },
@@ -282,7 +282,7 @@ struct SeedLoopHandle {
 // A per-seed body written in Python: per_seed(parameters, arm, seed_run, kit) fills seed_run.
 experiments::PerSeed per_seed_from(py::object per_seed) {
   SharedPythonObject callable(std::move(per_seed));
-  return [callable](const config::Parameters& p, const diagrams::Arm& arm,
+  return [callable](const parameters::Parameters& p, const diagrams::Arm& arm,
                     const experiments::TelemetryOptions& telemetry,
                     const LearntWeights* initial_weights, experiments::SeedRun& run) {
     // Python gets its own copies of the arm and the run (copied back when the call returns)
@@ -314,7 +314,7 @@ void bind_kit(py::module_& m) {
       "the per-seed call only: after it, its methods raise RuntimeError.")
       .def(
           "trial",
-          [](const SeedLoopHandle& kit, const config::Parameters& p, int trial,
+          [](const SeedLoopHandle& kit, const parameters::Parameters& p, int trial,
              std::optional<double> theta0) {
             experiments::SeedLoop& loop = kit.checked();
             return theta0 ? experiments::next_trial(p, loop.runner, trial, *theta0)
@@ -348,11 +348,12 @@ void bind_kit(py::module_& m) {
             {.name = name,
              .meaning = std::move(meaning),
              .run =
-                 [name, body](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
+                 [name, body](const parameters::Parameters& p,
+                              const std::vector<diagrams::Arm>& arms,
                               const ExperimentOptions& options) {
                    return experiments::run_per_arm(name, body, p, arms, options);
                  },
-             .schema = [schema](const config::Parameters&) { return schema; }});
+             .schema = [schema](const parameters::Parameters&) { return schema; }});
       },
       py::arg("name"), py::arg("meaning"), py::arg("per_seed"), py::arg("evaluates") = true,
       py::arg("paired") = true, py::arg("figures") = std::vector<experiments::Figure>{},

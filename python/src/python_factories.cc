@@ -44,7 +44,7 @@ py::object callable_from(const Factory& factory) {
 
 }  // namespace
 
-py::object copy_of(const config::Parameters& parameters) {
+py::object copy_of(const parameters::Parameters& parameters) {
   return py::cast(parameters, py::return_value_policy::copy);
 }
 
@@ -62,14 +62,15 @@ std::shared_ptr<Block> PythonBlockFactory::operator()(const diagrams::SlotReques
 }
 
 std::shared_ptr<plant::RobotPlant> PythonPlantFactory::operator()(
-    const std::string& name, const config::Parameters& p) const {
+    const std::string& name, const parameters::Parameters& p) const {
   py::gil_scoped_acquire gil;
   py::object plant = calling_python(
       [&] { return py::reinterpret_borrow<py::object>(callable.get())(name, copy_of(p)); });
   return shared_from_python<plant::RobotPlant>(plant, "the plant factory");
 }
 
-std::shared_ptr<Diagram> PythonControllerFactory::operator()(const config::Parameters& p) const {
+std::shared_ptr<Diagram> PythonControllerFactory::operator()(
+    const parameters::Parameters& p) const {
   py::gil_scoped_acquire gil;
   py::object controller = calling_python(
       [&] { return py::reinterpret_borrow<py::object>(callable.get())(copy_of(p)); });

@@ -27,17 +27,17 @@ struct PythonBlockFactory {
 struct PythonPlantFactory {
   SharedPythonObject callable;
   std::shared_ptr<plant::RobotPlant> operator()(const std::string& name,
-                                                const config::Parameters& p) const;
+                                                const parameters::Parameters& p) const;
 };
 
 // A controller's factory: callable(parameters) -> Diagram.
 struct PythonControllerFactory {
   SharedPythonObject callable;
-  std::shared_ptr<Diagram> operator()(const config::Parameters& p) const;
+  std::shared_ptr<Diagram> operator()(const parameters::Parameters& p) const;
 };
 
 // A copy of `parameters` for Python to keep.
-py::object copy_of(const config::Parameters& parameters);
+py::object copy_of(const parameters::Parameters& parameters);
 
 // `value` as a factory: None (empty), a callable, or what callable_of returned.
 diagrams::BlockFactory block_factory_from(py::handle value);

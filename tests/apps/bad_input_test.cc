@@ -65,6 +65,10 @@ std::vector<BadInput> bad_inputs() {
       {quick + "--set evaluation.angles=[0.1,0.6]",
        "evaluation.angles[1] (0.6 rad) must lie inside trial.failure_angle"},
       {quick + "--set evaluation.angles=[]", "evaluation.angles must be a non-empty list"},
+      {quick + "--experiment exp3 --set exp3.angles=[0.1,0.6]",
+       "exp3.angles[1] (0.6 rad) must lie inside trial.failure_angle"},
+      {quick + "--experiment transfer --set exp3.angles=[-0.6]",
+       "exp3.angles[0] (-0.6 rad) must lie inside trial.failure_angle"},
       {quick + "--set critic.gamma=nan", "critic.gamma must be a number; got 'nan'"},
       {quick + "--set critic.gamma=1.5", "critic.gamma must be in (0, 1]; got 1.5"},
       {quick + "--set critic.lambda=1", "critic.lambda must be in [0, 1); got 1"},
@@ -81,7 +85,7 @@ std::vector<BadInput> bad_inputs() {
       {quick + "--set reward.q=[1,2]",
        "reward.q must be a list of 3 numbers (on theta_b^2, theta_b'^2, phi'^2); got a list of 2"},
       {quick + "--set tropism.kind=none", "tropism.kind must be one of value, fixed; got 'none'"},
-      {quick + "--set plant.kind=mujoco", "plant.kind must be one of simbody, analytic"},
+      {quick + "--set plant.kind=ode", "plant.kind must be one of simbody, analytic"},
       {quick + "--set plant.body_mass=-10", "plant.body_mass must be > 0; got -10"},
       {quick + "--set supervisor.kind=mpc", "supervisor.kind must be one of pd, lqr"},
       {quick + "--set arms=[cbbg,cbbg]", "arms lists 'cbbg' twice"},
@@ -262,7 +266,7 @@ TEST(BadInput, EveryCaseExitsTwoWithOneLineAndLeavesEverythingAsItWas) {
   const auto before = cbbg::testing::tree_of(scratch);
 
   const std::vector<BadInput> cases = bad_inputs();
-  ASSERT_EQ(cases.size(), 132u);  // the README counts them: a case dropped shows here
+  ASSERT_EQ(cases.size(), 134u);  // the README counts them: a case dropped shows here
   for (const BadInput& input : cases) {
     const std::string arguments = expand(input.arguments, scratch.string());
     SCOPED_TRACE(arguments);

@@ -20,6 +20,7 @@
 
 #include "cbbg/config/config.h"
 #include "cbbg/diagrams/presets.h"
+#include "cbbg/experiments/protocols.h"  // the keys of a cbbg run: the tree's and the protocols'
 #include "tests/apps/cbbg_process.h"
 #include "tests/support/scratch_directory.h"
 

@@ -6,6 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "cbbg/experiments/protocols.h"  // the keys of a cbbg run: the tree's and the protocols'
+
 #include "tests/support/error_of.h"
 #include "tests/support/scratch_directory.h"
 

@@ -20,7 +20,7 @@ TEST(Arms, ARegisteredArmIsKnownByNameWhereverAPresetIs) {
   ControllerOptions half = preset("cbbg").options;
   half.omega = blocks::OmegaMode::kConstant;
   register_arm("cbbg_half", "omega held at 0.5", half);
-  register_arm("pitch_law", "a control law alone", [](const config::Parameters&) {
+  register_arm("pitch_law", "a control law alone", [](const parameters::Parameters&) {
     return std::unique_ptr<Diagram>();  // never built here
   });
   EXPECT_EQ(registered_arms().size(), 2U);

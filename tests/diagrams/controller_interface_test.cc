@@ -74,7 +74,7 @@ class StepOmega final : public Block {
 
 TEST(ControllerInterface, AUsersBlockFillsTheOmegaSlot) {
   ControllerOptions options = preset("cbbg").options;
-  options.slots.omega = [](const std::string& name, const config::Parameters&) {
+  options.slots.omega = [](const std::string& name, const parameters::Parameters&) {
     return std::make_unique<StepOmega>(name);
   };
   const Arm arm = make_arm("cbbg_step", options);
@@ -85,7 +85,7 @@ TEST(ControllerInterface, AUsersBlockFillsTheOmegaSlot) {
   const experiments::ExperimentResults results = experiments::run_exp1(quick_parameters(), {arm});
   EXPECT_TRUE(results.run(0, 0).weights.has_value());
 
-  options.slots.omega = [](const std::string& name, const config::Parameters&) {
+  options.slots.omega = [](const std::string& name, const parameters::Parameters&) {
     return std::make_unique<blocks::Mixer>(name);
   };
   EXPECT_THAT([&] { make_arm("cbbg_mixer", options).learner(quick_parameters()); },
@@ -119,7 +119,7 @@ TEST(ControllerInterface, EachLearnerFreezesAlone) {
 }
 
 // A controller built by hand: the user's law alone, with no diagnostics at all.
-std::unique_ptr<Diagram> law_alone(const config::Parameters&) {
+std::unique_ptr<Diagram> law_alone(const parameters::Parameters&) {
   DiagramBuilder builder("controller");
   const Block& law = builder.emplace<PitchSupervisor>("law");
   builder.export_input(law.input_port("measured"), "measured");
@@ -147,7 +147,7 @@ TEST(ControllerInterface, AHandBuiltControllerNeedsOnlyItsPorts) {
 // The ablation of a fixed omega of 1/2 built by hand from the library's subsystems: the
 // user's supervisor, the paper's normaliser and basal ganglia, the user's own mixing. No
 // name of a block inside the library is needed.
-std::unique_ptr<Diagram> half_and_half(const config::Parameters& p) {
+std::unique_ptr<Diagram> half_and_half(const parameters::Parameters& p) {
   DiagramBuilder builder("controller");
   const Block& law = builder.emplace<PitchSupervisor>("supervisor");
   const Block& normaliser = builder.emplace<blocks::Normaliser>("normaliser", p.normaliser);
@@ -237,7 +237,7 @@ std::pair<const Block*, const Block*> two_learners(DiagramBuilder& builder, cons
 }
 
 // A user's actor and critic on the measured pitch and pitch rate.
-std::unique_ptr<Diagram> dot_product_controller(const config::Parameters&) {
+std::unique_ptr<Diagram> dot_product_controller(const parameters::Parameters&) {
   DiagramBuilder builder("controller");
   const auto [actor, critic] =
       two_learners(builder, "policy", Role::kActor, "value", Role::kCritic);
@@ -247,7 +247,7 @@ std::unique_ptr<Diagram> dot_product_controller(const config::Parameters&) {
 }
 
 TEST(ControllerInterface, TwoLearnersOfAKindAreRefused) {
-  auto two_actors = [](const config::Parameters&) {
+  auto two_actors = [](const parameters::Parameters&) {
     DiagramBuilder builder("controller");
     const auto [first, second] =
         two_learners(builder, "first", Role::kActor, "second", Role::kActor);
@@ -283,7 +283,7 @@ TEST(ControllerInterface, AUsersLearnersAreFoundAndTheirWeightsKept) {
 
 // A controller the closed loop cannot feed, or whose learners are ambiguous, is refused.
 TEST(ControllerInterface, AControllerWithoutTheClosedLoopsPortsIsRefused) {
-  auto no_action = [](const config::Parameters&) {
+  auto no_action = [](const parameters::Parameters&) {
     DiagramBuilder builder("controller");
     const Block& law = builder.emplace<PitchSupervisor>("law");
     builder.export_input(law.input_port("measured"), "measured");
@@ -294,7 +294,7 @@ TEST(ControllerInterface, AControllerWithoutTheClosedLoopsPortsIsRefused) {
               ThrowsMessage<std::invalid_argument>(
                   "controller 'controller' must have an output \"action\" of size 1; its "
                   "outputs are: torque"));
-  auto extra_input = [](const config::Parameters&) {
+  auto extra_input = [](const parameters::Parameters&) {
     DiagramBuilder builder("controller");
     const Block& law = builder.emplace<PitchSupervisor>("law");
     const Block& mixer = builder.emplace<blocks::Mixer>("mixer");

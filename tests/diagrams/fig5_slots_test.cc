@@ -273,7 +273,7 @@ TEST(Fig5Slots, TheRecordedRewardIsTheOneTheCriticReceives) {
     return std::make_shared<RewardEchoCritic>(request.name, request.num_features);
   };
   ClosedLoopOptions task;
-  task.slots.reward = [](const std::string& name, const config::Parameters&) {
+  task.slots.reward = [](const std::string& name, const parameters::Parameters&) {
     return std::make_shared<PitchSquareReward>(name);
   };
   const ClosedLoop loop = closed_loop_factory("echo", options, task)(quick_parameters());
@@ -364,7 +364,7 @@ ControllerOptions two_part_options(ControllerOptions options) {
 }
 
 TEST(Fig5Slots, ALearnerWithTwoPartsIsSavedLoadedAndCarriedOverBitForBit) {
-  const config::Parameters p = quick_parameters();
+  const parameters::Parameters p = quick_parameters();
   const ClosedLoop loop =
       closed_loop_factory("cbbg_two", two_part_options(preset("cbbg").options))(p);
   experiments::TrialRunner runner(loop, 1, 0.01);
@@ -423,7 +423,7 @@ Exploration exploration_of(const ClosedLoop& loop) {
 }
 
 TEST(Fig5Slots, ArmsThatDifferOnlyInTheCriticSeeTheSameExplorationNoise) {
-  config::Parameters td0 = quick_parameters();
+  parameters::Parameters td0 = quick_parameters();
   td0.critic.kind = blocks::CriticKind::kTd0;
   const ControllerOptions options = preset("cbbg").options;
   const Exploration paper = exploration_of(closed_loop_factory("a", options)(quick_parameters()));

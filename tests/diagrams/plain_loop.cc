@@ -148,7 +148,7 @@ PlainLoop::PlainLoop(const config::Config& config, std::uint64_t root_seed, std:
 
   state_ = std::make_unique<State>(config, root_seed);
   State& s = *state_;
-  s.robot = config::read_parameters(config).plant.robot;
+  s.robot = parameters::read_parameters(config).plant.robot;
   s.period = config.number("trial.period");
   s.failure_angle = config.number("trial.failure_angle");
   s.reward_a1 = config.number("reward.a1");

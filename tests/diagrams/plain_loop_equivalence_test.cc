@@ -153,7 +153,8 @@ BothRuns run_both(const std::string& arm, const config::Config& config,
                   const std::vector<double>& theta0s,
                   const std::optional<StartWeights>& start = std::nullopt,
                   Schedule schedule = Schedule::kCompiled) {
-  diagrams::ClosedLoop controller = diagrams::build_preset(arm, config::read_parameters(config));
+  diagrams::ClosedLoop controller =
+      diagrams::build_preset(arm, parameters::read_parameters(config));
   controller.schedule = schedule;
   experiments::TrialRunner runner(controller, seed, config.number("trial.period"));
   PlainLoop loop(loop_config, loop_seed, arm);

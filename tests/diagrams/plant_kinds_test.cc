@@ -60,12 +60,12 @@ class Pendulum final : public plant::RobotPlant {
   }
 };
 
-PendulumParams pendulum_params(const config::Parameters& p) {
+PendulumParams pendulum_params(const parameters::Parameters& p) {
   return config::read_section<PendulumParams>(p.own, "pendulum");
 }
 
 // x = (theta, phi, theta', phi'), u = the torque on both wheels (2 tau).
-plant::LinearModel pendulum_model(const config::Parameters& p) {
+plant::LinearModel pendulum_model(const parameters::Parameters& p) {
   const PendulumParams pendulum = pendulum_params(p);
   plant::LinearModel model{Eigen::MatrixXd::Zero(4, 4), Eigen::MatrixXd::Zero(4, 1)};
   model.A(0, 2) = model.A(1, 3) = 1.0;
@@ -83,11 +83,11 @@ void register_kinds() {
     register_plant_kind({.name = "pendulum",
                          .description = "an inverted pendulum on one wheel",
                          .make =
-                             [](const std::string& name, const config::Parameters& p) {
+                             [](const std::string& name, const parameters::Parameters& p) {
                                return std::make_unique<Pendulum>(name, pendulum_params(p));
                              },
                          .change =
-                             [](config::Parameters& p, RobotChange change, double factor) {
+                             [](parameters::Parameters& p, RobotChange change, double factor) {
                                if (change != RobotChange::kBodyMass) return false;
                                std::get<double>(p.own.values.at("pendulum.mass")) *= factor;
                                return true;
@@ -95,7 +95,7 @@ void register_kinds() {
                          .linearize = pendulum_model});
     register_plant_kind({.name = "rigid",
                          .description = "",
-                         .make = [](const std::string& name, const config::Parameters& p) {
+                         .make = [](const std::string& name, const parameters::Parameters& p) {
                            return std::make_unique<Pendulum>(name, pendulum_params(p));
                          }});
     return true;
@@ -116,7 +116,7 @@ config::Config config_of(const std::string& kind) {
 
 TEST(PlantKinds, TheBuiltInKindsAreThoseThePlantKindKeyDeclares) {
   const std::vector<std::string> declared =
-      config::declared_keys(config::PlantSection{}, "plant").front().choices;
+      config::declared_keys(parameters::PlantSection{}, "plant").front().choices;
   ASSERT_GE(plant_kinds().size(), 2U);
   EXPECT_EQ(declared, (std::vector<std::string>{plant_kinds()[0].name, plant_kinds()[1].name}));
   EXPECT_THAT([] { plant_kind("cartpole"); },
@@ -127,7 +127,7 @@ TEST(PlantKinds, TheBuiltInKindsAreThoseThePlantKindKeyDeclares) {
 TEST(PlantKinds, ARegisteredKindIsAPlantKindWordAndBuildsItsPlant) {
   config::Config config = config_of("pendulum");
   config.set("pendulum.mass=2");
-  const config::Parameters p = validated_parameters(config);
+  const parameters::Parameters p = validated_parameters(config);
   const ClosedLoop loop = build_preset("pd_only", p);
   EXPECT_NE(dynamic_cast<const Pendulum*>(loop.plant), nullptr);
   EXPECT_THAT([] { register_plant_kind({.name = "pendulum", .make = {}}); },
@@ -142,10 +142,10 @@ TEST(PlantKinds, ARegisteredKindIsAPlantKindWordAndBuildsItsPlant) {
 TEST(PlantKinds, AnEvaluationChangesTheRobotThroughTheKindOrIsRefused) {
   config::Config config = config_of("pendulum");
   config.set("evaluation.body_mass_scale=3");
-  const config::Parameters evaluated =
+  const parameters::Parameters evaluated =
       experiments::evaluation_parameters(validated_parameters(config));
   EXPECT_EQ(pendulum_params(evaluated).mass, 3.0);
-  EXPECT_EQ(evaluated.plant.robot.body_mass, config::Parameters{}.plant.robot.body_mass);
+  EXPECT_EQ(evaluated.plant.robot.body_mass, parameters::Parameters{}.plant.robot.body_mass);
 
   config.set("evaluation.com_height_scale=0.5");
   EXPECT_THAT([&] { experiments::check_evaluation_conditions(validated_parameters(config)); },
@@ -163,7 +163,7 @@ TEST(PlantKinds, AnEvaluationChangesTheRobotThroughTheKindOrIsRefused) {
 TEST(PlantKinds, AnLqrSupervisorDesignsFromThePlantInTheLoop) {
   config::Config config = config_of("pendulum");
   config.set("supervisor.kind=lqr");
-  const config::Parameters p = validated_parameters(config);
+  const parameters::Parameters p = validated_parameters(config);
   const blocks::LqrSupervisor designed("supervisor", planar_linearization(p), p.supervisor.lqr);
   const blocks::LqrSupervisor expected("supervisor", pendulum_model(p), p.supervisor.lqr);
   const blocks::LqrSupervisor robot("supervisor", p.plant.robot, p.supervisor.lqr);

@@ -42,18 +42,18 @@ TEST(Presets, TheArmsAreEveryPresetButTheLearntActor) {
 
 TEST(Presets, EachHasTheBlocksItsNameSays) {
   const config::Config config = analytic_config();
-  const ClosedLoop cbbg = build_preset("cbbg", config::read_parameters(config));
+  const ClosedLoop cbbg = build_preset("cbbg", parameters::read_parameters(config));
   EXPECT_TRUE(has_block(*cbbg.diagram, "cerebellum"));
   EXPECT_TRUE(has_block(*cbbg.diagram, "critic"));
   EXPECT_TRUE(has_block(*cbbg.diagram, "sampler"));
-  const ClosedLoop bg_only = build_preset("bg_only", config::read_parameters(config));
+  const ClosedLoop bg_only = build_preset("bg_only", parameters::read_parameters(config));
   EXPECT_FALSE(has_block(*bg_only.diagram, "cerebellum"));
   EXPECT_TRUE(has_block(*bg_only.diagram, "actor"));
-  const ClosedLoop pd_only = build_preset("pd_only", config::read_parameters(config));
+  const ClosedLoop pd_only = build_preset("pd_only", parameters::read_parameters(config));
   EXPECT_TRUE(has_block(*pd_only.diagram, "supervisor"));
   EXPECT_FALSE(has_block(*pd_only.diagram, "actor"));
   EXPECT_FALSE(pd_only.learner.learns());
-  const ClosedLoop policy = build_preset(kLearntActor, config::read_parameters(config));
+  const ClosedLoop policy = build_preset(kLearntActor, parameters::read_parameters(config));
   EXPECT_TRUE(has_block(*policy.diagram, "actor"));
   EXPECT_FALSE(has_block(*policy.diagram, "sampler"));
   EXPECT_FALSE(has_block(*policy.diagram, "supervisor"));
@@ -69,7 +69,7 @@ TEST(Presets, OmegaFollowsThePreset) {
                                     {"cbbg", 0.0},  // the schedule starts at 0 (n2 = 500)
                                     {"pd_only", 0.0},
                                     {kLearntActor, 1.0}}) {
-    const ClosedLoop loop = build_preset(name, config::read_parameters(config));
+    const ClosedLoop loop = build_preset(name, parameters::read_parameters(config));
     auto context = loop.diagram->create_context(1);
     EXPECT_EQ(loop.diagram->eval_output(*context, *loop.telemetry)[kTelemetryOmega], omega) << name;
   }
@@ -78,12 +78,12 @@ TEST(Presets, OmegaFollowsThePreset) {
 TEST(Presets, ThePlantKindAndSupervisorKindSwapBlocks) {
   config::Config config = analytic_config();
   config.set("supervisor.kind=lqr");
-  const ClosedLoop lqr = build_preset("cbbg", config::read_parameters(config));
+  const ClosedLoop lqr = build_preset("cbbg", parameters::read_parameters(config));
   auto context = lqr.diagram->create_context(1);
   // Leaning forward, both supervisors push the wheels forward (a_S > 0).
   EXPECT_GT(lqr.diagram->eval_output(*context, *lqr.telemetry)[kTelemetrySupervisorAction], 0.0);
   config.set("plant.kind=simbody");
-  const ClosedLoop simbody = build_preset("cbbg", config::read_parameters(config));
+  const ClosedLoop simbody = build_preset("cbbg", parameters::read_parameters(config));
   auto simbody_context = simbody.diagram->create_context(1);
   EXPECT_EQ(simbody.diagram->eval_output(*simbody_context, *simbody.telemetry)[kTelemetryThetaB],
             config.number("trial.theta0"));
@@ -101,10 +101,10 @@ TEST(Presets, UnknownNamesListThePresets) {
 
 TEST(Presets, TheLearntActorOfAnArmKeepsItsSlots) {
   ControllerOptions options = preset("cb_only").options;
-  options.slots.features = [](const std::string&, const config::Parameters&) {
+  options.slots.features = [](const std::string&, const parameters::Parameters&) {
     return std::unique_ptr<Block>();
   };
-  options.slots.omega = [](const std::string&, const config::Parameters&) {
+  options.slots.omega = [](const std::string&, const parameters::Parameters&) {
     return std::unique_ptr<Block>();
   };
   const ControllerOptions alone = learnt_actor(options);
@@ -121,7 +121,7 @@ TEST(Presets, TheLearntActorOfAnArmKeepsItsSlots) {
 
 // The sampler's generator in a fresh context of preset `name` under `seed`.
 RandomGenerator sampler_stream(const std::string& name, std::uint64_t seed) {
-  const ClosedLoop loop = build_preset(name, config::read_parameters(analytic_config()));
+  const ClosedLoop loop = build_preset(name, parameters::read_parameters(analytic_config()));
   auto context = loop.diagram->create_context(seed);
   const auto& controller = static_cast<const Diagram&>(loop.diagram->block("controller"));
   const auto& basal_ganglia = static_cast<const Diagram&>(controller.block("basal_ganglia"));

@@ -5,9 +5,9 @@
 #include <string>
 
 #include "cbbg/blocks/measured_signals.h"
-#include "cbbg/config/parameters.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/block_context.h"
+#include "cbbg/parameters/parameters.h"
 
 namespace cbbg::diagrams::testing {
 
@@ -20,7 +20,9 @@ inline config::Config quick_config() {
   return config;
 }
 
-inline config::Parameters quick_parameters() { return config::read_parameters(quick_config()); }
+inline parameters::Parameters quick_parameters() {
+  return parameters::read_parameters(quick_config());
+}
 
 // A PD law on the pitch alone, a_S = 40 theta_b + 8 theta_b'. Input "measured" (6), output
 // "action".

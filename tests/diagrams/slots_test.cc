@@ -45,17 +45,17 @@ using cbbg::testing::PendulumRobot;
 
 TEST(Slots, AUsersSupervisorTakesTheCerebellumsPlace) {
   ControllerOptions options = preset("cbbg").options;
-  options.slots.supervisor = [](const std::string& name, const config::Parameters&) {
+  options.slots.supervisor = [](const std::string& name, const parameters::Parameters&) {
     return std::make_unique<PitchSupervisor>(name);
   };
   const Arm mine = make_arm("cbbg_pitch", options);
-  const ClosedLoop loop = mine.learner(config::read_parameters(quick_config()));
+  const ClosedLoop loop = mine.learner(parameters::read_parameters(quick_config()));
   auto context = loop.diagram->create_context(1);
   // theta0 = 0.1744 at rest: a_S = 40 theta0.
   EXPECT_DOUBLE_EQ(loop.diagram->eval_output(*context, *loop.telemetry)[kTelemetrySupervisorAction],
                    40.0 * 0.1744);
-  const experiments::ExperimentResults results =
-      experiments::run_exp1(config::read_parameters(quick_config()), {preset_arm("cbbg"), mine});
+  const experiments::ExperimentResults results = experiments::run_exp1(
+      parameters::read_parameters(quick_config()), {preset_arm("cbbg"), mine});
   ASSERT_EQ(results.arms, (std::vector<std::string>{"cbbg", "cbbg_pitch"}));
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
     const auto& run = results.run(1, s);
@@ -67,11 +67,11 @@ TEST(Slots, AUsersSupervisorTakesTheCerebellumsPlace) {
 
 TEST(Slots, AUsersFeaturesFeedCriticAndActor) {
   ControllerOptions options = preset("bg_only").options;
-  options.slots.features = [](const std::string& name, const config::Parameters&) {
+  options.slots.features = [](const std::string& name, const parameters::Parameters&) {
     return std::make_unique<LinearFeatures>(name);
   };
   const ClosedLoop loop =
-      make_arm("bg_linear", options).learner(config::read_parameters(quick_config()));
+      make_arm("bg_linear", options).learner(parameters::read_parameters(quick_config()));
   EXPECT_EQ(loop.learner.critic->num_features(), 3);
   EXPECT_EQ(loop.learner.actor->num_features(), 3);
   experiments::TrialRunner runner(loop, 1, 0.01);
@@ -108,7 +108,7 @@ class Tiles final : public Block, public blocks::DescribesLayout {
 
 Arm tiles_arm(int per_axis) {
   ControllerOptions options = preset("cbbg").options;
-  options.slots.features = [per_axis](const std::string& name, const config::Parameters&) {
+  options.slots.features = [per_axis](const std::string& name, const parameters::Parameters&) {
     return std::make_unique<Tiles>(name, per_axis);
   };
   return make_arm("cbbg_tiles", options);
@@ -116,7 +116,7 @@ Arm tiles_arm(int per_axis) {
 
 TEST(Slots, AUsersFeaturesKeepTheirWeightsWithTheirOwnLayout) {
   const experiments::ExperimentResults results =
-      experiments::run_exp1(config::read_parameters(quick_config()), {tiles_arm(6)});
+      experiments::run_exp1(parameters::read_parameters(quick_config()), {tiles_arm(6)});
   const experiments::SeedRun& run = results.run(0, 0);
   ASSERT_TRUE(run.weights.has_value());
   EXPECT_EQ(run.weights->num_features(), 36);
@@ -128,7 +128,7 @@ TEST(Slots, AUsersFeaturesKeepTheirWeightsWithTheirOwnLayout) {
   store::save_weights(scratch.path() / "w.txt", *run.weights);
   const experiments::LearntWeights loaded = store::load_weights(scratch.path() / "w.txt");
   EXPECT_TRUE(loaded == *run.weights);
-  const config::Parameters parameters = config::read_parameters(quick_config());
+  const parameters::Parameters parameters = parameters::read_parameters(quick_config());
   EXPECT_NO_THROW(
       experiments::check_layout(loaded, tiles_arm(6).policy(parameters).layout, "w.txt"));
   EXPECT_THAT(
@@ -146,12 +146,12 @@ TEST(Slots, AUsersFeaturesKeepTheirWeightsWithTheirOwnLayout) {
 
 TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
   ClosedLoopOptions pendulum;
-  pendulum.plant = [](const std::string& name, const config::Parameters&) {
+  pendulum.plant = [](const std::string& name, const parameters::Parameters&) {
     return std::make_unique<PendulumRobot>(name);
   };
   // The paper's PD law balances the pendulum (50 > 2 * 24.5 / 2 ... stable), its absence not.
   const ClosedLoop supervised =
-      build_preset("pd_only", config::read_parameters(quick_config()), pendulum);
+      build_preset("pd_only", parameters::read_parameters(quick_config()), pendulum);
   experiments::TrialRunner runner(supervised, 1, 0.01);
   const experiments::TrialOutcome balanced = runner.run_trial(0.1744, 8.0);  // past 5 s
   EXPECT_EQ(balanced.status, experiments::TrialStatus::kSuccess);
@@ -159,8 +159,9 @@ TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
   EXPECT_TRUE(std::isnan(supervised.plant->wheel_radius()));
   EXPECT_TRUE(std::isfinite(balanced.pitch_rms));  // the span after the settle time exists
   EXPECT_TRUE(std::isnan(balanced.mean_forward_speed));
-  EXPECT_EQ(build_preset("pd_only", config::read_parameters(quick_config())).plant->wheel_radius(),
-            0.15);
+  EXPECT_EQ(
+      build_preset("pd_only", parameters::read_parameters(quick_config())).plant->wheel_radius(),
+      0.15);
   // Its signals by name: the loop measures its pitch and wheel, and it has no pose.
   auto context = supervised.diagram->create_context(1);
   supervised.start_trial(*context, 0.05);
@@ -171,12 +172,12 @@ TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
   EXPECT_EQ(experiments::steps_csv_header(supervised.signals),
             "arm,seed,trial,t,theta_b,dtheta_b,phi_l,phi_r,a_S,a_A,a_E,a,omega,V,delta,T,reward\n");
   const experiments::ExperimentResults results = experiments::run_exp1(
-      config::read_parameters(quick_config()), {preset_arm("bg_only", pendulum)});
+      parameters::read_parameters(quick_config()), {preset_arm("bg_only", pendulum)});
   EXPECT_EQ(results.runs.size(), 2u);
   EXPECT_GT(results.runs[0].trials.size(), 0u);
   EXPECT_EQ(results.runs[0].trials.front().outcome.status, experiments::TrialStatus::kFailed);
   // Its evaluation on a changed robot would leave it unchanged: refused before any training.
-  config::Parameters heavier = config::read_parameters(quick_config());
+  parameters::Parameters heavier = parameters::read_parameters(quick_config());
   heavier.evaluation.body_mass_scale = 1.3;
   EXPECT_THAT(
       [&] { experiments::run_exp1(heavier, {preset_arm("bg_only", pendulum)}); },
@@ -192,19 +193,19 @@ TEST(Slots, AUsersPlantTakesTheRobotsPlace) {
 TEST(Slots, AUsersPlantTakesAPushFromOutsideThroughItsDisturbanceInput) {
   auto pendulum_arm = [](plant::DisturbanceInput disturbance) {
     ClosedLoopOptions options;
-    options.plant = [disturbance](const std::string& name, const config::Parameters&) {
+    options.plant = [disturbance](const std::string& name, const parameters::Parameters&) {
       return std::make_unique<PendulumRobot>(name, disturbance);
     };
     return options;
   };
-  config::Parameters pushed = config::read_parameters(quick_config());
+  parameters::Parameters pushed = parameters::read_parameters(quick_config());
   pushed.push.pitch_torque = 30.0;
   pushed.push.start = 1.0;
   pushed.push.duration = 0.5;
   const ClosedLoopOptions taking = pendulum_arm(plant::DisturbanceInput::kDeclared);
   // Unpushed (the input fixed at zero) it balances; pushed harder than the motors can answer
   // (30 N m on the body against 10 N m), it falls.
-  config::Parameters unpushed = pushed;
+  parameters::Parameters unpushed = pushed;
   unpushed.push = blocks::PushParams{};
   const ClosedLoop still = build_preset("pd_only", unpushed, taking);
   experiments::TrialRunner calm(still, 1, 0.01);
@@ -226,7 +227,7 @@ TEST(Slots, AUsersPlantTakesAPushFromOutsideThroughItsDisturbanceInput) {
                   "push.force and push.pitch_torque push the robot from outside, but plant "
                   "'plant' has no input \"disturbance\" of size 2 (force, pitch torque); keep "
                   "them 0 for this plant, or push through the motors (push.torque)"));
-  config::Parameters evaluated_pushed = config::read_parameters(quick_config());
+  parameters::Parameters evaluated_pushed = parameters::read_parameters(quick_config());
   evaluated_pushed.evaluation.push_force = 50.0;
   EXPECT_THAT(
       [&] { experiments::run_exp1(evaluated_pushed, {preset_arm("bg_only", deaf)}); },

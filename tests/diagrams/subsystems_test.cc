@@ -124,14 +124,14 @@ TEST(CbbgController, OffersTheDocumentedPortsWithAndWithoutBasalGanglia) {
   const std::vector<std::string> outputs{
       "action",   "supervisor_action", "actor_action", "exploration_action", "omega", "value",
       "td_error", "temperature",       "entropy"};
-  const CbbgController full("controller", config::read_parameters(config), ControllerOptions{});
+  const CbbgController full("controller", parameters::read_parameters(config), ControllerOptions{});
   EXPECT_EQ(port_names(full, true), (std::vector<std::string>{"measured", "reward", "failed"}));
   EXPECT_EQ(port_names(full, false), outputs);
   EXPECT_EQ(child_names(full), (std::vector<std::string>{"cerebellum", "normaliser",
                                                          "basal_ganglia", "omega", "mixer"}));
   ControllerOptions alone;
   alone.basal_ganglia = false;
-  const CbbgController supervisor("controller", config::read_parameters(config), alone);
+  const CbbgController supervisor("controller", parameters::read_parameters(config), alone);
   EXPECT_EQ(port_names(supervisor, true), std::vector<std::string>{"measured"});
   EXPECT_EQ(supervisor.reward(), nullptr);
   EXPECT_EQ(supervisor.basal_ganglia(), nullptr);
@@ -143,7 +143,9 @@ TEST(CbbgController, RefusesOptionsWithNothingThatActs) {
   nothing.supervisor = false;
   nothing.basal_ganglia = false;
   EXPECT_THAT(
-      [&] { CbbgController("controller", config::read_parameters(analytic_config()), nothing); },
+      [&] {
+        CbbgController("controller", parameters::read_parameters(analytic_config()), nothing);
+      },
       ThrowsMessage<std::invalid_argument>(
           "controller options: with neither a supervisor nor basal ganglia nothing acts; "
           "keep one of them"));
@@ -151,7 +153,7 @@ TEST(CbbgController, RefusesOptionsWithNothingThatActs) {
 
 TEST(ClosedLoop, AStartedTrialResetsPerTrialStateAndKeepsTheWeights) {
   const config::Config config = analytic_config();
-  const ClosedLoop loop = build_preset("bg_only", config::read_parameters(config));
+  const ClosedLoop loop = build_preset("bg_only", parameters::read_parameters(config));
   experiments::TrialRunner runner(loop, 1, config.number("trial.period"));
   const experiments::TrialOutcome first = runner.run_trial(0.1744, 20.0);
   EXPECT_EQ(first.status, experiments::TrialStatus::kFailed);  // a blank actor cannot balance
@@ -176,13 +178,13 @@ TEST(ClosedLoop, RefusesAPlantWithoutTheRobotPorts) {
     void reset(Context&, double) const override {}
   };
   ClosedLoopOptions options;
-  options.plant = [](const std::string& name, const config::Parameters&) {
+  options.plant = [](const std::string& name, const parameters::Parameters&) {
     return std::make_unique<OneInputPlant>(name);
   };
   EXPECT_THAT(
       [&] {
         closed_loop_factory("one_input", ControllerOptions{},
-                            options)(config::read_parameters(analytic_config()));
+                            options)(parameters::read_parameters(analytic_config()));
       },
       ThrowsMessage<std::invalid_argument>(
           "plant 'plant' must have an input \"torque\" of size 2 and an output \"state\" "
@@ -207,11 +209,11 @@ class NamedSignalsPlant final : public plant::RobotPlant {
 TEST(ClosedLoop, RefusesAPlantWhoseSignalsDoNotFit) {
   auto loop_with = [](int size, std::vector<std::string> names) {
     ClosedLoopOptions options;
-    options.plant = [=](const std::string& name, const config::Parameters&) {
+    options.plant = [=](const std::string& name, const parameters::Parameters&) {
       return std::make_unique<NamedSignalsPlant>(name, size, names);
     };
     closed_loop_factory("named", ControllerOptions{},
-                        options)(config::read_parameters(analytic_config()));
+                        options)(parameters::read_parameters(analytic_config()));
   };
   EXPECT_THAT(
       [&] {
@@ -237,23 +239,23 @@ TEST(ClosedLoop, RefusesAPlantWhoseSignalsDoNotFit) {
 
 TEST(ParamsFromConfig, PlantSimbodyIntegratorChoosesTheIntegrator) {
   config::Config config = analytic_config();
-  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_integrator,
+  EXPECT_EQ(parameters::read_parameters(config).plant.robot.simbody_integrator,
             plant::SimbodyIntegrator::kMerson);
   config.set("plant.simbody_integrator=rk3");
-  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_integrator,
+  EXPECT_EQ(parameters::read_parameters(config).plant.robot.simbody_integrator,
             plant::SimbodyIntegrator::kRungeKutta3);
   config.set("plant.simbody_integrator=verlet");
-  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_integrator,
+  EXPECT_EQ(parameters::read_parameters(config).plant.robot.simbody_integrator,
             plant::SimbodyIntegrator::kVerlet);
   EXPECT_THROW(config.set("plant.simbody_integrator=euler"), config::ConfigError);
 }
 
 TEST(ParamsFromConfig, PlantSimbodyModelChoosesTheFormulation) {
   config::Config config = analytic_config();
-  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_model,
+  EXPECT_EQ(parameters::read_parameters(config).plant.robot.simbody_model,
             plant::SimbodyModel::kRollingBase);
   config.set("plant.simbody_model=constrained");
-  EXPECT_EQ(config::read_parameters(config).plant.robot.simbody_model,
+  EXPECT_EQ(parameters::read_parameters(config).plant.robot.simbody_model,
             plant::SimbodyModel::kNoSlipConstraints);
   EXPECT_THAT([&] { config.set("plant.simbody_model=lagrange"); },
               ::testing::ThrowsMessage<config::ConfigError>(
@@ -262,7 +264,7 @@ TEST(ParamsFromConfig, PlantSimbodyModelChoosesTheFormulation) {
 }
 
 TEST(ClosedLoop, IsDrawnWithTheCerebellumAndTheBasalGangliaAsClusters) {
-  const ClosedLoop loop = build_preset("cbbg", config::read_parameters(analytic_config()));
+  const ClosedLoop loop = build_preset("cbbg", parameters::read_parameters(analytic_config()));
   const std::string dot = to_dot(*loop.diagram, {.hidden_blocks = {"cbbg/telemetry"}});
   EXPECT_THAT(dot, HasSubstr("subgraph \"cluster_cbbg/controller/cerebellum\""));
   EXPECT_THAT(dot, HasSubstr("subgraph \"cluster_cbbg/controller/basal_ganglia\""));

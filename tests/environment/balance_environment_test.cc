@@ -30,14 +30,14 @@ using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 // The run's parameters with `settings` ("key=value"), checked as a run's are.
-config::Parameters parameters_with(const std::vector<std::string>& settings) {
+parameters::Parameters parameters_with(const std::vector<std::string>& settings) {
   config::Config config;
   for (const std::string& setting : settings) config.set(setting);
   return diagrams::validated_parameters(config);
 }
 
 // The analytic plant keeps these tests quick.
-config::Parameters analytic(std::vector<std::string> settings = {}) {
+parameters::Parameters analytic(std::vector<std::string> settings = {}) {
   settings.insert(settings.begin(), "plant.kind=analytic");
   return parameters_with(settings);
 }
@@ -82,7 +82,7 @@ std::vector<double> flattened(const Rollout& rollout) {
 }
 
 // The telemetry of one trial of the pd_only preset, one row per tick.
-std::vector<Vector> pd_only_trial(const config::Parameters& p, std::uint64_t seed,
+std::vector<Vector> pd_only_trial(const parameters::Parameters& p, std::uint64_t seed,
                                   const diagrams::ClosedLoopOptions& options = {}) {
   const diagrams::ClosedLoop loop = diagrams::build_preset("pd_only", p, options);
   experiments::TrialRunner runner(loop, seed, p.trial.period);
@@ -112,7 +112,7 @@ void expect_same_as_trial(const Rollout& rollout, const std::vector<Vector>& tri
 
 TEST(BalanceEnvironment, PlayingTheSupervisorIsThePdOnlyPresetsTrial) {
   for (const char* kind : {"pd", "lqr"}) {
-    const config::Parameters p = analytic({std::string("supervisor.kind=") + kind});
+    const parameters::Parameters p = analytic({std::string("supervisor.kind=") + kind});
     BalanceEnvironment env(p);
     const Rollout rollout = supervisor_rollout(env, 3);
     expect_same_as_trial(rollout, pd_only_trial(p, 3));
@@ -121,7 +121,7 @@ TEST(BalanceEnvironment, PlayingTheSupervisorIsThePdOnlyPresetsTrial) {
 }
 
 TEST(BalanceEnvironment, TheObservationIsWhatTheSensorsMeasureNoiseIncluded) {
-  const config::Parameters p = analytic({kNoisySensors});
+  const parameters::Parameters p = analytic({kNoisySensors});
   BalanceEnvironment env(p);
   const Rollout rollout = supervisor_rollout(env, 11);
   expect_same_as_trial(rollout, pd_only_trial(p, 11));
@@ -132,13 +132,13 @@ TEST(BalanceEnvironment, TheObservationIsWhatTheSensorsMeasureNoiseIncluded) {
 }
 
 TEST(BalanceEnvironment, PlayingTheSupervisorOnTheSimbodyPlantIsThePresetsTrialToo) {
-  const config::Parameters p = parameters_with({"plant.kind=simbody", "trial.duration=5"});
+  const parameters::Parameters p = parameters_with({"plant.kind=simbody", "trial.duration=5"});
   BalanceEnvironment env(p);
   expect_same_as_trial(supervisor_rollout(env, 1), pd_only_trial(p, 1));
 }
 
 TEST(BalanceEnvironment, TheSameSeedGivesTheSameEpisode) {
-  const config::Parameters p = analytic({kNoisySensors, "trial.duration=1"});
+  const parameters::Parameters p = analytic({kNoisySensors, "trial.duration=1"});
   BalanceEnvironment env(p);
   const std::vector<double> first = flattened(supervisor_rollout(env, 5));
   const std::vector<double> other = flattened(supervisor_rollout(env, 6));
@@ -155,7 +155,7 @@ TEST(BalanceEnvironment, TheSameSeedGivesTheSameEpisode) {
 }
 
 TEST(BalanceEnvironment, AMovedEnvironmentCarriesOnItsEpisode) {
-  const config::Parameters p = analytic({"trial.duration=0.5"});
+  const parameters::Parameters p = analytic({"trial.duration=0.5"});
   BalanceEnvironment reference(p);
   const Rollout whole = supervisor_rollout(reference, 2);
   BalanceEnvironment env(p);
@@ -166,7 +166,7 @@ TEST(BalanceEnvironment, AMovedEnvironmentCarriesOnItsEpisode) {
 }
 
 TEST(BalanceEnvironment, TheRewardIsTheTransitionsFromTheSlidingSurface) {
-  const config::Parameters p = analytic({"trial.duration=3"});
+  const parameters::Parameters p = analytic({"trial.duration=3"});
   BalanceEnvironment env(p);
   const Rollout rollout = supervisor_rollout(env, 1);
   auto surface = [&p](const Vector& y) {
@@ -184,7 +184,7 @@ TEST(BalanceEnvironment, TheRewardIsTheTransitionsFromTheSlidingSurface) {
 }
 
 TEST(BalanceEnvironment, TerminatedWhenTheRobotFalls) {
-  const config::Parameters p = analytic();
+  const parameters::Parameters p = analytic();
   BalanceEnvironment env(p);
   env.reset(std::nullopt, 0.1);
   StepResult step;
@@ -293,12 +293,13 @@ TEST(BalanceEnvironment, TheSpacesAreTheFailureAngleAndTheTorqueLimit) {
 
 using cbbg::testing::PendulumRobot;
 
-const diagrams::PlantFactory kPendulum = [](const std::string& name, const config::Parameters&) {
+const diagrams::PlantFactory kPendulum = [](const std::string& name,
+                                            const parameters::Parameters&) {
   return std::make_unique<PendulumRobot>(name);
 };
 
 TEST(BalanceEnvironment, AUsersOwnPlantRunsThroughTheOptions) {
-  const config::Parameters p = analytic({"trial.duration=1"});
+  const parameters::Parameters p = analytic({"trial.duration=1"});
   BalanceEnvironment env(p, {.plant = kPendulum});
   const std::vector<std::string> names{"wheel", "pitch", "wheel_rate", "pitch_rate"};
   EXPECT_EQ(env.signal_names(), names);

@@ -15,10 +15,10 @@
 namespace cbbg::experiments {
 namespace {
 
-config::Parameters analytic() {
+parameters::Parameters analytic() {
   config::Config config;
   config.set("plant.kind=analytic");
-  return config::read_parameters(config);
+  return parameters::read_parameters(config);
 }
 
 const diagrams::ClosedLoopFactory& policy() {
@@ -27,7 +27,7 @@ const diagrams::ClosedLoopFactory& policy() {
   return factory;
 }
 
-LearntWeights random_weights(const config::Parameters& p, std::uint64_t seed) {
+LearntWeights random_weights(const parameters::Parameters& p, std::uint64_t seed) {
   LearntWeights weights;
   weights.layout = policy()(p).layout;
   const int n = 49;
@@ -43,7 +43,7 @@ LearntWeights random_weights(const config::Parameters& p, std::uint64_t seed) {
 // a = sum_k theta_k exp(-((x_0 - c_i)^2 + (x_1 - c_j)^2) / (2 b^2)), x = (theta_b / n_theta,
 // theta_b' / n_dtheta): at x = 0, da/dtheta_b = sum_k theta_k phi_k(0) c_i / (b^2 n_theta).
 TEST(ActorLinearisation, SlopesAreTheDerivativeOfTheRbfLawAtRest) {
-  const config::Parameters p = analytic();
+  const parameters::Parameters p = analytic();
   const LearntWeights weights = random_weights(p, 4);
   const std::vector<double>& c = p.rbf.centres;
   const double b2 = p.rbf.width * p.rbf.width;
@@ -70,7 +70,7 @@ TEST(ActorLinearisation, SlopesAreTheDerivativeOfTheRbfLawAtRest) {
 // No action: the modes are the held robot's own, the fall among them (|z| > 1, a real s of
 // about sqrt(M g L / inertia)); sorted, largest first.
 TEST(ActorLinearisation, WithoutAnActionTheRobotFalls) {
-  const config::Parameters p = analytic();
+  const parameters::Parameters p = analytic();
   LearntWeights weights = random_weights(p, 1);
   weights.actor.weights("actor").setZero();
   const ActorLinearisation linear = linearise_actor(p, policy(), weights);
@@ -86,7 +86,7 @@ TEST(ActorLinearisation, WithoutAnActionTheRobotFalls) {
 }
 
 TEST(ActorLinearisation, RefusesWeightsThatDoNotFitTheActor) {
-  const config::Parameters p = analytic();
+  const parameters::Parameters p = analytic();
   LearntWeights short_weights = random_weights(p, 2);
   short_weights.actor = LearntState::of_weights(Vector::Zero(3));
   EXPECT_THROW(linearise_actor(p, policy(), short_weights), std::invalid_argument);

@@ -23,7 +23,7 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
-config::Parameters run_of(const std::string& arms) {
+parameters::Parameters run_of(const std::string& arms) {
   config::Config config;
   config.set("plant.kind=analytic");
   config.set("arms=" + arms);
@@ -45,7 +45,7 @@ class Wide final : public Block {
 TEST(ArmChecks, AFactoryThatRefusesTheParametersIsTheUsersMistake) {
   diagrams::register_arm(
       "refusing_arm", "a supervisor whose design fails",
-      [](const config::Parameters&) -> std::shared_ptr<Diagram> {
+      [](const parameters::Parameters&) -> std::shared_ptr<Diagram> {
         throw std::runtime_error("the discrete Riccati equation has no solution for dlqr.q");
       });
   EXPECT_THAT([] { check_arms_build(run_of("[cbbg, refusing_arm]")); },
@@ -58,7 +58,7 @@ TEST(ArmChecks, AFactoryThatRefusesTheParametersIsTheUsersMistake) {
 TEST(ArmChecks, ALearnerLargerThanAWeightsFileHoldsIsRefused) {
   auto wide = [](int size) {
     diagrams::ControllerOptions options = diagrams::preset("bg_only").options;
-    options.slots.features = [size](const std::string& name, const config::Parameters&) {
+    options.slots.features = [size](const std::string& name, const parameters::Parameters&) {
       return std::make_shared<Wide>(name, size);
     };
     return options;

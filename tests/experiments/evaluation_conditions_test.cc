@@ -21,32 +21,32 @@ config::Config analytic_config() {
 }
 
 // The evaluation's parameters of a training config.
-config::Parameters evaluated(const config::Config& training) {
-  return evaluation_parameters(config::read_parameters(training));
+parameters::Parameters evaluated(const config::Config& training) {
+  return evaluation_parameters(parameters::read_parameters(training));
 }
 
 TEST(EvaluationConditions, AtTheirDefaultsTheEvaluationIsTheTraining) {
   const config::Config training = analytic_config();
   config::Config evaluation;
-  config::write_parameters(evaluated(training), evaluation);
+  parameters::write_parameters(evaluated(training), evaluation);
   EXPECT_EQ(evaluation, training);
 }
 
 TEST(EvaluationConditions, AreDescribedInWordsOnlyWhenChanged) {
   config::Config config = analytic_config();
-  EXPECT_EQ(describe_conditions(config::read_parameters(config).evaluation), "");
+  EXPECT_EQ(describe_conditions(parameters::read_parameters(config).evaluation), "");
   config.set("evaluation.body_mass_scale=0.7");
   config.set("evaluation.com_height_scale=1.15");
   config.set("evaluation.noise_std=0.02");
   config.set("evaluation.push_torque=5");
   config.set("evaluation.push_duration=0.5");
-  EXPECT_EQ(describe_conditions(config::read_parameters(config).evaluation),
+  EXPECT_EQ(describe_conditions(parameters::read_parameters(config).evaluation),
             "body mass x0.7, CoM height x1.15, pitch noise 0.02, push 5 N m on each wheel from 5 s "
             "for 0.5 s");
   config.set("evaluation.push_torque=0");
   config.set("evaluation.push_force=40");
   config.set("evaluation.push_pitch_torque=-2");
-  EXPECT_EQ(describe_conditions(config::read_parameters(config).evaluation),
+  EXPECT_EQ(describe_conditions(parameters::read_parameters(config).evaluation),
             "body mass x0.7, CoM height x1.15, pitch noise 0.02, push 40 N at the centre of mass "
             "and -2 N m on the body from 5 s for 0.5 s");
 }
@@ -63,13 +63,13 @@ TEST(EvaluationConditions, APushFromOutsideBecomesThePushOfTheEvaluation) {
   EXPECT_EQ(push.pitch_torque, 0.0);
   EXPECT_EQ(push.start, 2.0);
   EXPECT_EQ(push.duration, 0.5);
-  EXPECT_TRUE(pushes_from_outside(config::read_parameters(training).evaluation));
+  EXPECT_TRUE(pushes_from_outside(parameters::read_parameters(training).evaluation));
   training.set("evaluation.push_force=0");
   training.set("evaluation.push_pitch_torque=3");
   EXPECT_EQ(evaluated(training).push.pitch_torque, 3.0);
   training.set("evaluation.push_pitch_torque=0");
   EXPECT_EQ(evaluated(training).push.torque, 1.0);  // no evaluation push: push.* as set
-  EXPECT_FALSE(pushes_from_outside(config::read_parameters(training).evaluation));
+  EXPECT_FALSE(pushes_from_outside(parameters::read_parameters(training).evaluation));
 }
 
 TEST(EvaluationConditions, TheMassScaleMakesTheBodyDenserAndLeavesTheWheels) {
@@ -111,12 +111,12 @@ TEST(EvaluationConditions, APushTorqueSetsThePushOfEveryTrial) {
   EXPECT_EQ(push.torque, -3.0);
   EXPECT_EQ(push.start, 2.0);
   EXPECT_EQ(push.duration, 0.5);
-  EXPECT_EQ(config::read_parameters(training).push.torque, 0.0);
+  EXPECT_EQ(parameters::read_parameters(training).push.torque, 0.0);
 }
 
 bool has_push(const config::Config& config) {
   const diagrams::ClosedLoop loop =
-      diagrams::build_preset("pd_only", config::read_parameters(config));
+      diagrams::build_preset("pd_only", parameters::read_parameters(config));
   const auto& blocks = loop.diagram->blocks();
   return std::any_of(blocks.begin(), blocks.end(),
                      [](const auto& block) { return block->name() == "push"; });
@@ -158,7 +158,7 @@ TEST(EvaluationConditions, ANoisyPitchChangesWhatTheSupervisorDoes) {
 
 TEST(EvaluationConditions, ALearningLoopIsEvaluatedThroughItsPolicy) {
   EXPECT_THAT(([] {
-                evaluate_controller(config::read_parameters(analytic_config()),
+                evaluate_controller(parameters::read_parameters(analytic_config()),
                                     diagrams::preset_arm("cbbg").learner,
                                     EvaluationSettings{{0.1}, 1});
               }),
@@ -174,7 +174,7 @@ TEST(EvaluationConditions, Exp1EvaluatesTheSupervisorAloneUnderThem) {
   config.set("evaluation.push_start=2");
   config.set("evaluation.push_duration=1.5");
   const ExperimentResults results =
-      run_exp1(config::read_parameters(config), {diagrams::preset_arm("pd_only")});
+      run_exp1(parameters::read_parameters(config), {diagrams::preset_arm("pd_only")});
   const SeedRun& run = results.run(0, 0);
   ASSERT_TRUE(run.succeeded);  // trained (here: run) unpushed
   ASSERT_EQ(run.evaluation.size(), 1u);
@@ -186,7 +186,7 @@ TEST(EvaluationConditions, Exp3EvaluatesTheActorItTaughtUnderThem) {
   config.set("seeds=1");
   config.set("evaluation.angles=[0.05, 0.25]");
   const ExperimentResults nominal =
-      run_exp3(config::read_parameters(config), {diagrams::preset_arm("bg_only")});
+      run_exp3(parameters::read_parameters(config), {diagrams::preset_arm("bg_only")});
   const SeedRun& run = nominal.run(0, 0);
   ASSERT_TRUE(run.figure("trials_to_skill").has_value());
   ASSERT_EQ(run.evaluation.size(), 2u);
@@ -197,7 +197,7 @@ TEST(EvaluationConditions, Exp3EvaluatesTheActorItTaughtUnderThem) {
 
   config.set("evaluation.com_height_scale=0.5");
   const ExperimentResults lower =
-      run_exp3(config::read_parameters(config), {diagrams::preset_arm("bg_only")});
+      run_exp3(parameters::read_parameters(config), {diagrams::preset_arm("bg_only")});
   EXPECT_EQ(lower.run(0, 0).figures, run.figures);  // training is nominal: the same skill
   EXPECT_NE(lower.run(0, 0).evaluation[1].outcome.final_theta,
             run.evaluation[1].outcome.final_theta);

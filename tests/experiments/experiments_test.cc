@@ -32,7 +32,7 @@ config::Config quick_config() {
 
 TEST(TrialRunner, ATrialReachingItsDurationSucceeds) {
   const config::Config config = quick_config();
-  const auto controller = build_preset("pd_only", config::read_parameters(config));
+  const auto controller = build_preset("pd_only", parameters::read_parameters(config));
   TrialRunner runner(controller, 1, config.number("trial.period"));
   const TrialOutcome outcome = runner.run_trial(0.1744, 2.0);
   EXPECT_EQ(outcome.status, TrialStatus::kSuccess);
@@ -45,7 +45,7 @@ TEST(TrialRunner, RecordsThePoseTheWheelsRolledTo) {
   for (const char* kind : {"analytic", "simbody"}) {
     config::Config config = quick_config();
     config.set(std::string("plant.kind=") + kind);
-    const auto controller = build_preset("pd_only", config::read_parameters(config));
+    const auto controller = build_preset("pd_only", parameters::read_parameters(config));
     TrialRunner runner(controller, 1, config.number("trial.period"));
     ASSERT_EQ(runner.run_trial(0.1744, 2.0).status, TrialStatus::kSuccess);
     const auto values = runner.telemetry().values();
@@ -64,7 +64,7 @@ TEST(TrialRunner, RecordsThePoseTheWheelsRolledTo) {
 // from the kept log.
 TEST(TrialRunner, MeasuresTheOscillationAfterTheSettleTime) {
   const config::Config config = quick_config();
-  const auto controller = build_preset("pd_only", config::read_parameters(config));
+  const auto controller = build_preset("pd_only", parameters::read_parameters(config));
   TelemetryOptions telemetry;
   telemetry.settle_time = 2.0;
   TrialRunner runner(controller, 1, config.number("trial.period"), telemetry);
@@ -111,7 +111,8 @@ TEST(Experiments, Exp1CountsFailuresBeforeTheFirstSuccess) {
   config.set("arms=[cbbg, bg_only]");
   ExperimentOptions two_threads;
   two_threads.jobs = 2;
-  const ExperimentResults results = run_experiment(config::read_parameters(config), two_threads);
+  const ExperimentResults results =
+      run_experiment(parameters::read_parameters(config), two_threads);
   ASSERT_EQ(results.runs.size(), 4u);
   EXPECT_EQ(results.seeds, (std::vector<long long>{1, 2}));
   for (const SeedRun& run : results.runs) {
@@ -132,7 +133,7 @@ TEST(Experiments, Exp3RunsUntilTheActorAloneBalancesFromEveryAngle) {
   config::Config config = quick_config();
   config.set("experiment=exp3");
   config.set("arms=[cbbg, bg_only, pd_only]");
-  const ExperimentResults results = run_experiment(config::read_parameters(config));
+  const ExperimentResults results = run_experiment(parameters::read_parameters(config));
   EXPECT_EQ(results.experiment, "exp3");
   for (std::size_t arm : {0u, 1u}) {
     for (std::size_t seed = 0; seed < 2; ++seed) {
@@ -165,7 +166,7 @@ TEST(Experiments, Exp3ReportsASeedThatNeverGetsThereAsSuch) {
   config.set("experiment=exp3");
   config.set("arms=[bg_only]");
   config.set("max_trials=2");
-  const ExperimentResults results = run_experiment(config::read_parameters(config));
+  const ExperimentResults results = run_experiment(parameters::read_parameters(config));
   for (const SeedRun& run : results.runs) {
     EXPECT_EQ(run.trials.size(), 2u);
     EXPECT_FALSE(run.figure("trials_to_skill").has_value());
@@ -176,7 +177,7 @@ TEST(Experiments, Exp3ReportsASeedThatNeverGetsThereAsSuch) {
   EXPECT_EQ(back.trials[1].value("actor_alone"), results.runs[0].trials[1].value("actor_alone"));
   EXPECT_FALSE(back.figure("trials_to_skill").has_value());
   EXPECT_THAT(figures_csv(results), HasSubstr("bg_only,1,,\n"));
-  EXPECT_THAT(summary_json(results, run_facts(config::read_parameters(config))),
+  EXPECT_THAT(summary_json(results, run_facts(parameters::read_parameters(config))),
               HasSubstr("\"trials_to_skill\": [null, null],\n      \"failures_to_skill\": "
                         "[null, null],\n      \"num_skilled\": 0,\n      \"skill_median\": "
                         "null"));
@@ -188,12 +189,12 @@ TEST(Experiments, ASeedThatNeverSucceedsCountsAllItsTrials) {
   config.set("seeds=1");
   config.set("max_trials=3");
   config.set("trial.failure_angle=0.1");  // below theta0: every trial fails at once
-  const ExperimentResults results = run_experiment(config::read_parameters(config));
+  const ExperimentResults results = run_experiment(parameters::read_parameters(config));
   ASSERT_EQ(results.runs.size(), 1u);
   EXPECT_FALSE(results.runs[0].succeeded);
   EXPECT_EQ(results.runs[0].failures_before_success, 3);
   EXPECT_EQ(results.runs[0].trials.size(), 3u);
-  EXPECT_THAT(summary_json(results, run_facts(config::read_parameters(config))),
+  EXPECT_THAT(summary_json(results, run_facts(parameters::read_parameters(config))),
               HasSubstr("\"succeeded\": [false]"));
 }
 
@@ -203,7 +204,7 @@ TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
   config.set("seeds=1");
   config.set("max_trials=3");
   config.set("critic.beta=1e300");  // the critic's weights overflow within a few ticks
-  const ExperimentResults results = run_experiment(config::read_parameters(config));
+  const ExperimentResults results = run_experiment(parameters::read_parameters(config));
   const auto& trials = results.runs.at(0).trials;
   ASSERT_EQ(trials.size(), 3u);
   for (const TrialRecord& record : trials) {
@@ -218,7 +219,7 @@ TEST(Experiments, ADivergingTrialIsRecordedAndTheRunGoesOn) {
   EXPECT_TRUE(results.runs[0].weights_diverged);
   EXPECT_FALSE(results.runs[0].weights.has_value());
   EXPECT_TRUE(results.runs[0].evaluation.empty());
-  EXPECT_THAT(summary_json(results, run_facts(config::read_parameters(config))),
+  EXPECT_THAT(summary_json(results, run_facts(parameters::read_parameters(config))),
               HasSubstr("\"weights_diverged\": [true]"));
 }
 
@@ -230,7 +231,7 @@ TEST(Experiments, ATemperatureTooLargeToAverageEndsTheTrialAsDiverged) {
   config.set("seeds=1");
   config.set("max_trials=2");
   config.set("tropism.k1=1e308");
-  const ExperimentResults results = run_experiment(config::read_parameters(config));
+  const ExperimentResults results = run_experiment(parameters::read_parameters(config));
   const auto& trials = results.runs.at(0).trials;
   ASSERT_EQ(trials.size(), 2u);
   for (const TrialRecord& record : trials) {
@@ -247,7 +248,7 @@ TEST(Experiments, Exp2AnnealsK1TrialByTrial) {
   config.set("seeds=1");
   config.set("exp2.trials=12");
   config.set("trial.duration=1");
-  const ExperimentResults results = run_experiment(config::read_parameters(config));
+  const ExperimentResults results = run_experiment(parameters::read_parameters(config));
   ASSERT_EQ(results.runs.size(), 1u);
   const auto& trials = results.runs[0].trials;
   ASSERT_EQ(trials.size(), 12u);
@@ -264,8 +265,9 @@ TEST(Experiments, Exp1GivesEveryArmOfASeedTheSameRandomStreams) {
   config::Config config = quick_config();
   config.set("log.decimation=0");
   const ControllerOptions options = preset("bg_only").options;
-  const ExperimentResults results = run_exp1(
-      config::read_parameters(config), {make_arm("first", options), make_arm("second", options)});
+  const ExperimentResults results =
+      run_exp1(parameters::read_parameters(config),
+               {make_arm("first", options), make_arm("second", options)});
   for (std::size_t s = 0; s < results.seeds.size(); ++s) {
     const SeedRun& first = results.run(0, s);
     const SeedRun& second = results.run(1, s);
@@ -280,12 +282,12 @@ TEST(Experiments, Exp1GivesEveryArmOfASeedTheSameRandomStreams) {
   EXPECT_NE(results.run(0, 0).weights->actor, results.run(0, 1).weights->actor);
   EXPECT_THAT(
       [&] {
-        run_exp1(config::read_parameters(config), {preset_arm("cbbg"), preset_arm("cbbg")});
+        run_exp1(parameters::read_parameters(config), {preset_arm("cbbg"), preset_arm("cbbg")});
       },
       ::testing::ThrowsMessage<std::invalid_argument>(
           "exp1: two arms are named 'cbbg'; an arm's name must be unique"));
   EXPECT_THAT(
-      [&] { run_exp1(config::read_parameters(config), {make_arm("mine/v2", options)}); },
+      [&] { run_exp1(parameters::read_parameters(config), {make_arm("mine/v2", options)}); },
       ::testing::ThrowsMessage<std::invalid_argument>(
           "exp1: arm name 'mine/v2' is not a name (1 to 100 letters, digits, '_', '-' and '.', "
           "not starting with '-' or '.'): it names files and columns of the results"));
@@ -297,11 +299,11 @@ TEST(Experiments, Exp2CarriesTheCoordinatedTrialsLearningIntoOperantLearning) {
   config.set("seeds=1");
   config.set("exp2.trials=2");
   config.set("log.decimation=0");
-  const ExperimentResults results = run_experiment(config::read_parameters(config));
+  const ExperimentResults results = run_experiment(parameters::read_parameters(config));
   ASSERT_EQ(results.runs.front().trials.size(), 2u);
   // By hand: one cbbg trial, then bg_only continuing from its context.
-  const ClosedLoop coordinated = build_preset("cbbg", config::read_parameters(config));
-  const ClosedLoop operant = build_preset("bg_only", config::read_parameters(config));
+  const ClosedLoop coordinated = build_preset("cbbg", parameters::read_parameters(config));
+  const ClosedLoop operant = build_preset("bg_only", parameters::read_parameters(config));
   TrialRunner first(coordinated, 1, 0.01);
   first.run_trial(0.1744, 20.0);
   TrialRunner later(operant, 1, 0.01);
@@ -317,7 +319,7 @@ TEST(Experiments, Exp2CarriesTheCoordinatedTrialsLearningIntoOperantLearning) {
 }
 
 TEST(Experiments, TheRunsNamesComeFromTheProtocolAndPresetTables) {
-  config::RunParams run;
+  parameters::RunParams run;
   EXPECT_NO_THROW(check_run_names(run));
   run.arms = {"cbbg", "nope"};
   EXPECT_THAT([&] { check_run_names(run); },
@@ -343,7 +345,7 @@ TEST(ResultsWriter, ConfigYamlRecordsTheArmsTheProtocolCompared) {
   config.set("trial.duration=0.5");
   config.set("log.decimation=0");
   const ExperimentResults mine =
-      run_exp1(config::read_parameters(config), {make_arm("mine", preset("bg_only").options)});
+      run_exp1(parameters::read_parameters(config), {make_arm("mine", preset("bg_only").options)});
   const config::Config recorded = recorded_config(mine, config);
   EXPECT_EQ(recorded.names("arms"), std::vector<std::string>{"mine"});
   EXPECT_THAT(recorded.to_yaml(), HasSubstr("\narms: [mine]\n"));

@@ -47,7 +47,7 @@ config::Config analytic_config() {
 const LearntWeights& bg_only_weights() {
   static const LearntWeights weights = [] {
     const config::Config config = analytic_config();
-    const ClosedLoop learner = build_preset("bg_only", config::read_parameters(config));
+    const ClosedLoop learner = build_preset("bg_only", parameters::read_parameters(config));
     TrialRunner runner(learner, 1, config.number("trial.period"));
     int trials = 0;
     bool balanced = false;
@@ -80,7 +80,7 @@ PolicyEvaluation evaluate(const config::Config& config, const LearntWeights& wei
                           std::optional<PushParams> push = std::nullopt) {
   const ClosedLoopFactory policy =
       closed_loop_factory(kLearntActor, preset(kLearntActor).options, {.push = push});
-  return evaluate_policy(config::read_parameters(config), policy, weights, settings);
+  return evaluate_policy(parameters::read_parameters(config), policy, weights, settings);
 }
 
 bool same_bits(double a, double b) {
@@ -114,7 +114,7 @@ TEST(PolicyEvaluation, MatchesTheLearntActorDiagramRunByTrialRunner) {
   config.set("sensors.noise_std=[0.002, 0.01, 0, 0, 0, 0]");
   config.set("seed=5");
   for (const double theta0 : {0.05, 0.2}) {
-    const ClosedLoop policy = build_preset(kLearntActor, config::read_parameters(config));
+    const ClosedLoop policy = build_preset(kLearntActor, parameters::read_parameters(config));
     TrialRunner runner(policy, 5, config.number("trial.period"));
     load_learnt_weights(policy, runner.context(), bg_only_weights());
     const TrialOutcome expected = runner.run_trial(theta0, config.number("trial.duration"));
@@ -274,7 +274,7 @@ void register_own_robot() {
   static const bool done = [] {
     register_plant_kind({.name = "own_robot",
                          .description = "a user's robot",
-                         .make = [](const std::string& name, const config::Parameters& p) {
+                         .make = [](const std::string& name, const parameters::Parameters& p) {
                            return plant_kind("analytic").make(name, p);
                          }});
     return true;

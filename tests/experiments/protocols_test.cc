@@ -10,6 +10,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "cbbg/config/declared_keys.h"
 #include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/experiments/protocol_kit.h"
 #include "cbbg/experiments/protocols.h"
@@ -21,7 +22,7 @@ namespace {
 using ::testing::ThrowsMessage;
 
 // Two trials per seed, whatever happens: from 0.05 rad, then from trial.theta0.
-void two_trials(const config::Parameters& p, const diagrams::Arm& arm,
+void two_trials(const parameters::Parameters& p, const diagrams::Arm& arm,
                 const TelemetryOptions& telemetry, const LearntWeights* initial, SeedRun& run) {
   SeedLoop seed(p, arm, telemetry, initial, run.seed);
   run.trials.push_back(next_trial(p, seed.runner, 1, 0.05));
@@ -34,7 +35,7 @@ TEST(Protocols, TheBuiltInThreeComeFirst) {
   EXPECT_EQ(protocols()[0].name, "exp1");
   EXPECT_EQ(protocols()[1].name, "exp2");
   EXPECT_EQ(protocols()[2].name, "exp3");
-  config::RunParams run;
+  parameters::RunParams run;
   run.experiment = "exp2";
   EXPECT_EQ(experiment_arms(run), (std::vector<std::string>{"cbbg"}));
   run.experiment = "exp3";
@@ -46,12 +47,13 @@ TEST(Protocols, TheBuiltInThreeComeFirst) {
 }
 
 TEST(Protocols, ARegisteredProtocolRunsByItsName) {
-  register_protocol({.name = "two_trials",
-                     .meaning = "two trials per seed",
-                     .run = [](const config::Parameters& p, const std::vector<diagrams::Arm>& arms,
-                               const ExperimentOptions& options) {
-                       return run_per_arm("two_trials", two_trials, p, arms, options);
-                     }});
+  register_protocol(
+      {.name = "two_trials",
+       .meaning = "two trials per seed",
+       .run = [](const parameters::Parameters& p, const std::vector<diagrams::Arm>& arms,
+                 const ExperimentOptions& options) {
+         return run_per_arm("two_trials", two_trials, p, arms, options);
+       }});
   EXPECT_EQ(protocol_names().back().name, "two_trials");
   EXPECT_NO_THROW(check_experiment_name("two_trials"));
 
@@ -79,6 +81,56 @@ TEST(Protocols, ARegisteredProtocolRunsByItsName) {
                   "protocol 'no run': a name is letters, digits, '_', '-' and '.'"));
   EXPECT_THAT([] { register_protocol({.name = "norun", .run = {}}); },
               ThrowsMessage<std::invalid_argument>("protocol 'norun' has no run"));
+}
+
+// A protocol's own section, registered with it: placed where it asked in every config made
+// after, read back from the tree's registered values, and never registered twice.
+struct WarmUpParams {
+  double first_angle = 0.05;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("first_angle", first_angle, "warm_up: the first trial's pitch, rad", kFinite);
+  }
+};
+
+TEST(Protocols, AProtocolsOwnKeysAreRegisteredWithItWhereItPlacesThem) {
+  double first_angle = 0.0;
+  register_protocol(
+      {.name = "warm_up",
+       .run =
+           [&first_angle](const parameters::Parameters& p, const std::vector<diagrams::Arm>&,
+                          const ExperimentOptions&) {
+             first_angle = config::read_section<WarmUpParams>(p.own, "warm_up").first_angle;
+             return ExperimentResults{};
+           },
+       .keys = config::declared_keys(WarmUpParams{}, "warm_up"),
+       .keys_after = "trial"});
+  std::vector<std::string> paths;
+  for (const config::KeySpec& key : config::schema()) paths.push_back(key.path);
+  const auto placed = std::find(paths.begin(), paths.end(), "warm_up.first_angle");
+  ASSERT_NE(placed, paths.end());
+  EXPECT_EQ(*(placed - 1), "trial.settle_time");  // the trial section's last key
+  EXPECT_TRUE(is_protocol_key("warm_up.first_angle"));
+  EXPECT_TRUE(is_protocol_key("exp3.angles"));
+  EXPECT_FALSE(is_protocol_key("trial.theta0"));
+
+  config::Config config;
+  config.set("experiment=warm_up");
+  config.set("warm_up.first_angle=0.07");
+  run_experiment(diagrams::validated_parameters(config));
+  EXPECT_EQ(first_angle, 0.07);
+
+  EXPECT_THAT(
+      [] {
+        register_protocol(
+            {.name = "warm_up_again",
+             .run = [](const parameters::Parameters&, const std::vector<diagrams::Arm>&,
+                       const ExperimentOptions&) { return ExperimentResults{}; },
+             .keys = config::declared_keys(WarmUpParams{}, "warm_up")});
+      },
+      ThrowsMessage<std::invalid_argument>("config key 'warm_up.first_angle' is declared twice"));
+  EXPECT_EQ(find_protocol("warm_up_again"), nullptr);
 }
 
 // evaluate: no training, the given weights evaluated per seed as exp1 evaluates what it
@@ -118,13 +170,20 @@ TEST(Protocols, EvaluateTestsTheGivenWeightsAsExp1EvaluatesWhatItLearnt) {
 TEST(Protocols, NoCodeOutsideAProtocolsFilesNamesIt) {
   const std::filesystem::path source = CBBG_SOURCE_DIR;
   const std::filesystem::path experiments = source / "experiments";
-  const std::vector<std::filesystem::path> own{
-      experiments / "exp1.cc",       experiments / "exp2.cc",           experiments / "exp3.cc",
-      experiments / "evaluate.cc",   experiments / "transfer.h",        experiments / "transfer.cc",
-      experiments / "experiments.h", source / "config" / "parameters.h"};
+  const std::vector<std::filesystem::path> own{experiments / "exp1.cc",
+                                               experiments / "exp2.cc",
+                                               experiments / "exp2_params.h",
+                                               experiments / "exp3.cc",
+                                               experiments / "exp3_params.h",
+                                               experiments / "evaluate.cc",
+                                               experiments / "transfer.h",
+                                               experiments / "transfer.cc",
+                                               experiments / "transfer_params.h",
+                                               experiments / "experiments.h",
+                                               source / "parameters" / "parameters.h"};
   int files = 0;
-  for (const char* folder : {"apps", "blocks", "config", "diagrams", "experiments", "plant",
-                             "records", "replay", "store"}) {
+  for (const char* folder : {"apps", "blocks", "config", "diagrams", "experiments", "parameters",
+                             "plant", "records", "replay", "store"}) {
     for (const auto& entry : std::filesystem::recursive_directory_iterator(source / folder)) {
       const std::string ending = entry.path().extension().string();
       if (ending != ".cc" && ending != ".h") continue;
@@ -139,6 +198,12 @@ TEST(Protocols, NoCodeOutsideAProtocolsFilesNamesIt) {
       }
       if (std::string(folder) == "store") {  // below the protocols: it knows their schema alone
         EXPECT_EQ(text.str().find("cbbg/experiments/"), std::string::npos) << entry.path();
+      }
+      if (std::string(folder) == "config") {  // a generic engine: whoever declares keys is above
+        for (const char* above : {"cbbg/blocks/", "cbbg/plant/", "cbbg/parameters/",
+                                  "cbbg/diagrams/", "cbbg/experiments/"}) {
+          EXPECT_EQ(text.str().find(above), std::string::npos) << entry.path() << ": " << above;
+        }
       }
       if (std::string(folder) != "store" && std::string(folder) != "apps") continue;
       for (const char* figure :

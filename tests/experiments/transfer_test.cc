@@ -93,7 +93,7 @@ TEST(Transfer, ItsRecordAndResultsKeepTheFigures) {
   // The supervisor alone copes; it has no actor to come to balance alone.
   EXPECT_THAT(csv, HasSubstr("\npd_only,1,2,2,2,2,0,\n"));
   const std::string summary =
-      store::summary_json(results, store::run_facts(config::read_parameters(config)));
+      store::summary_json(results, store::run_facts(parameters::read_parameters(config)));
   EXPECT_THAT(summary, HasSubstr("\"figures\": {\"balanced@evaluation.body_mass_scale=1.3\": 4"));
   // Paired over the balanced figures, not over how many ran.
   EXPECT_THAT(summary, HasSubstr("\"figure\": \"balanced@evaluation.body_mass_scale=1.3\""));
@@ -104,7 +104,7 @@ TEST(Transfer, ItsRecordAndResultsKeepTheFigures) {
 TEST(Transfer, AConditionThatChangesNothingTakesTheRunsOwnEvaluation) {
   config::Config config = small_transfer();
   config.set("transfer.conditions=[evaluation.noise_std=0, evaluation.noise_std=0.05]");
-  const config::Parameters p = diagrams::validated_parameters(config);
+  const parameters::Parameters p = diagrams::validated_parameters(config);
   const std::vector<TransferCondition> conditions = transfer_conditions(p);
   ASSERT_EQ(conditions.size(), 2U);
   EXPECT_TRUE(conditions[0].changes_nothing);
@@ -124,6 +124,10 @@ TEST(Transfer, AConditionSetsOnlyWhatTheEvaluationSees) {
                   "transfer.conditions[0]: a condition sets what the evaluation sees: keys of "
                   "evaluation.*, plant.* (not plant.kind), sensors.*, push.* or a registered "
                   "section; got 'critic.gamma'"));
+  // A protocol's own keys are how it runs, not what the evaluation sees.
+  config.set("transfer.conditions=[exp2.trials=5]");
+  EXPECT_THAT([&] { transfer_conditions(diagrams::validated_parameters(config)); },
+              ThrowsMessage<config::ConfigError>(HasSubstr("got 'exp2.trials'")));
   config.set("transfer.conditions=[evaluation.body_mass_scale=1e308]");
   EXPECT_THAT([&] { transfer_conditions(diagrams::validated_parameters(config)); },
               ThrowsMessage<config::ConfigError>(
@@ -181,7 +185,7 @@ class PitchLaw final : public Block {
 
 // An arm of the user's that learns nothing, counting the closed loops it builds.
 diagrams::Arm pitch_law_arm(bool dither, std::atomic<int>& builds) {
-  const diagrams::ControllerFactory controller = [dither, &builds](const config::Parameters&) {
+  const diagrams::ControllerFactory controller = [dither, &builds](const parameters::Parameters&) {
     ++builds;
     DiagramBuilder builder("pitch_law");
     auto& law = builder.emplace<PitchLaw>("law", dither);
@@ -199,7 +203,7 @@ TEST(Transfer, SeedsShareTheEvaluationsThatDrewNoRandomNumber) {
   config.set("seeds=3");
   config.set(
       "transfer.conditions=[evaluation.body_mass_scale=1.3, evaluation.com_height_scale=1.3]");
-  const config::Parameters p = diagrams::validated_parameters(config);
+  const parameters::Parameters p = diagrams::validated_parameters(config);
   std::vector<int> builds_of;
   for (const bool dither : {false, true}) {
     std::atomic<int> builds{0};
@@ -262,7 +266,7 @@ TEST(Transfer, TrialsToSkillIsOneValueWhereverItAppears) {
               HasSubstr("\n" + never->arm + "," + std::to_string(never->seed) + ","));
   EXPECT_THAT(store::figures_csv(results), HasSubstr(",0,\n"));  // skilled 0, no trials
   const std::string summary =
-      store::summary_json(results, store::run_facts(config::read_parameters(config)));
+      store::summary_json(results, store::run_facts(parameters::read_parameters(config)));
   EXPECT_THAT(summary, HasSubstr("\"trials_to_skill\": ["));  // per seed, null for none
   EXPECT_THAT(summary, Not(ContainsRegex("\"trials_to_skill\": [0-9]")));  // never summed
   const records::PairedComparison comparison = records::compare_paired(paired[0], paired[1]);

@@ -80,7 +80,7 @@ TEST(VariantConfigs, WeightsLearntSeeingTheWheelsAreRefusedOnThePapersView) {
   config::Config paper;
   paper.set("plant.kind=analytic");
   const diagrams::ClosedLoop policy =
-      diagrams::build_preset(diagrams::kLearntActor, config::read_parameters(paper));
+      diagrams::build_preset(diagrams::kLearntActor, parameters::read_parameters(paper));
   EXPECT_THAT([&] { experiments::check_layout(weights, policy.layout, "w.txt"); },
               ::testing::ThrowsMessage<config::ConfigError>(
                   ::testing::HasSubstr("weights file 'w.txt' was made for")));

@@ -113,11 +113,12 @@ class DrawnCart final : public plant::RobotPlant {
 // plant.kind: drawn_cart, registered once, before its config is made.
 void register_drawn_cart() {
   static const bool done = [] {
-    diagrams::register_plant_kind({.name = "drawn_cart",
-                                   .description = "a cart and pole that draws itself",
-                                   .make = [](const std::string& name, const config::Parameters&) {
-                                     return std::make_unique<DrawnCart>(name);
-                                   }});
+    diagrams::register_plant_kind(
+        {.name = "drawn_cart",
+         .description = "a cart and pole that draws itself",
+         .make = [](const std::string& name, const parameters::Parameters&) {
+           return std::make_unique<DrawnCart>(name);
+         }});
     return true;
   }();
   (void)done;

@@ -63,7 +63,8 @@ TEST(StepsCsv, OneHeaderThenEveryTasksRowsOrTheHeaderAlone) {
   const std::string header = experiments::steps_csv_header();
   ASSERT_TRUE(results.runs[1].steps_csv.starts_with(header));
   const cbbg::testing::ScratchDirectory scratch;
-  write_result_files(results, config, run_facts(config::read_parameters(config)), scratch.path());
+  write_result_files(results, config, run_facts(parameters::read_parameters(config)),
+                     scratch.path());
   const std::string written = read(scratch.path() / "steps.csv");
   EXPECT_EQ(written, header + results.runs[0].steps_csv.substr(header.size()) +
                          results.runs[1].steps_csv.substr(header.size()));
@@ -71,14 +72,15 @@ TEST(StepsCsv, OneHeaderThenEveryTasksRowsOrTheHeaderAlone) {
   // A protocol that runs no trial (evaluate) logs no row: the header alone.
   EXPECT_EQ(results.steps_header, header);
   for (auto& run : results.runs) run.steps_csv.clear();
-  write_result_files(results, config, run_facts(config::read_parameters(config)), scratch.path());
+  write_result_files(results, config, run_facts(parameters::read_parameters(config)),
+                     scratch.path());
   EXPECT_EQ(read(scratch.path() / "steps.csv"), header);
 }
 
 TEST(StepsCsv, ArmsWhosePlantsGiveOtherSignalsAreRefused) {
   const config::Config config = quick_config();
   diagrams::ClosedLoopOptions one_wheel;
-  one_wheel.plant = [](const std::string& name, const config::Parameters&) {
+  one_wheel.plant = [](const std::string& name, const parameters::Parameters&) {
     return std::make_unique<OneWheel>(name);
   };
   const experiments::ExperimentResults results = experiments::run_exp1(
@@ -88,7 +90,7 @@ TEST(StepsCsv, ArmsWhosePlantsGiveOtherSignalsAreRefused) {
   const std::string path = (scratch.path() / "steps.csv").string();
   EXPECT_THAT(
       [&] {
-        write_result_files(results, config, run_facts(config::read_parameters(config)),
+        write_result_files(results, config, run_facts(parameters::read_parameters(config)),
                            scratch.path());
       },
       ThrowsMessage<std::runtime_error>(

@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "cbbg/config/config.h"
-#include "cbbg/config/parameters.h"
 #include "cbbg/experiments/protocols.h"
 #include "cbbg/experiments/seed_run.h"
+#include "cbbg/parameters/parameters.h"
 #include "cbbg/store/results_writer.h"
 
 namespace cbbg::store {
@@ -28,7 +28,7 @@ experiments::ExperimentResults results_of(const std::string& experiment,
   config.set("experiment=" + experiment);
   experiments::ExperimentResults results;
   results.experiment = experiment;
-  results.schema = experiments::results_schema(config::read_parameters(config));
+  results.schema = experiments::results_schema(parameters::read_parameters(config));
   results.arms = arms;
   results.seeds = {1};
   for (const std::string& arm : arms) {

@@ -439,7 +439,7 @@ TEST_F(WeightsFile, LayoutMismatchNamesWhereTheLayoutsDiffer) {
 // an exact model of one robot).
 void register_user_kinds() {
   static const bool done = [] {
-    const PlantFactory analytic = [](const std::string& name, const config::Parameters& p) {
+    const PlantFactory analytic = [](const std::string& name, const parameters::Parameters& p) {
       return plant_kind("analytic").make(name, p);
     };
     register_plant_kind({.name = "pole", .description = "", .make = analytic});
@@ -463,7 +463,7 @@ TEST_F(WeightsFile, WeightsLoadOnlyOntoTheRobotTheyWereLearntOn) {
   const LearntWeights weights = default_layout_weights();
   config::Config config;
   config.set("plant.kind=analytic");
-  const ClosedLoop layout = build_preset("bg_only", config::read_parameters(config));
+  const ClosedLoop layout = build_preset("bg_only", parameters::read_parameters(config));
   ASSERT_EQ(layout.layout, default_layout());
   auto refusal = [&](const std::string& made, const std::string& loaded) {
     return "weights file 'w.txt' was made on plant kind '" + made +
@@ -489,7 +489,7 @@ TEST_F(WeightsFile, WeightsLoadOnlyOntoTheRobotTheyWereLearntOn) {
   }
   // The robot is checked first, then the layout.
   config.set("rbf.width=0.7");
-  const ClosedLoop other = build_preset("bg_only", config::read_parameters(config));
+  const ClosedLoop other = build_preset("bg_only", parameters::read_parameters(config));
   EXPECT_THAT([&] { check_weights(made_on(weights, "pole"), "simbody", other, "w.txt"); },
               ::testing::ThrowsMessage<config::ConfigError>(refusal("pole", "simbody")));
   EXPECT_THAT([&] { check_weights(made_on(weights, "simbody"), "analytic", other, "w.txt"); },
@@ -502,7 +502,7 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
   config::Config config;
   config.set("plant.kind=analytic");
   config.set("rbf.centres=[-1, 0, 1]");
-  const ClosedLoop learner = build_preset("bg_only", config::read_parameters(config));
+  const ClosedLoop learner = build_preset("bg_only", parameters::read_parameters(config));
   auto learnt = learner.diagram->create_context(1);
   for (int k = 0; k < 9; ++k) {
     learner.learner.actor->mutable_learnt(*learnt, "weights")[k] = 0.5 * k;
@@ -516,14 +516,14 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
   EXPECT_EQ(weights.critic.weights("critic")[8], -8.0);
   EXPECT_EQ(weights.provenance.trials, 9);
 
-  const ClosedLoop policy = build_preset(kLearntActor, config::read_parameters(config));
+  const ClosedLoop policy = build_preset(kLearntActor, parameters::read_parameters(config));
   auto evaluated = policy.diagram->create_context(1);
   load_learnt_weights(policy, *evaluated, weights);
   EXPECT_EQ(policy.learner.actor->learnt(*evaluated, "weights")[4], 2.0);
 
   config::Config grid_of_49;
   grid_of_49.set("plant.kind=analytic");
-  const ClosedLoop other = build_preset("cbbg", config::read_parameters(grid_of_49));
+  const ClosedLoop other = build_preset("cbbg", parameters::read_parameters(grid_of_49));
   auto other_context = other.diagram->create_context(1);
   try {
     load_learnt_weights(other, *other_context, weights);
@@ -533,7 +533,7 @@ TEST(LearntWeights, MoveFromALearningDiagramIntoTheLearntActor) {
               "the weights were made for rbf.centres [-1, 0, 1]; diagram 'cbbg' has rbf.centres "
               "[-3, -2, -1, 0, 1, 2, 3]");
   }
-  const ClosedLoop supervisor = build_preset("pd_only", config::read_parameters(config));
+  const ClosedLoop supervisor = build_preset("pd_only", parameters::read_parameters(config));
   auto supervisor_context = supervisor.diagram->create_context(1);
   EXPECT_THAT(([&] { learnt_weights(supervisor, *supervisor_context, {}); }),
               ::testing::ThrowsMessage<std::invalid_argument>(

@@ -1,9 +1,11 @@
 #pragma once
-// The parameter tree of a cbbg run: every section, in the order config.yaml and `cbbg list`
-// show them. Each section's struct declares its own keys once (framework/parameters.h); the
-// blocks' and the plant's are theirs, the run's and the protocols' are here. The config layer
-// makes its keys from these declarations (config/config.h) and reads them back into the
-// typed tree (read_parameters).
+// The parameter tree of a cbbg run: the run's own keys and the sections of the blocks and
+// plants it is made of, in the order config.yaml and `cbbg list` show them. Each section's
+// struct declares its own keys once (framework/parameters.h); the blocks' and the plant's are
+// theirs, the run's are here. This tree registers their keys with the config engine
+// (config/declared_keys.h), which knows none of them, before main; a protocol registers its
+// own sections with itself (experiments/protocols.h), a user's block or plant the same way,
+// and their values travel in `own`.
 
 #include <numbers>
 #include <string>
@@ -24,11 +26,16 @@
 #include "cbbg/blocks/sensors.h"
 #include "cbbg/blocks/tropism.h"
 #include "cbbg/config/config.h"
+#include "cbbg/config/declared_keys.h"
 #include "cbbg/config/own_sections.h"
 #include "cbbg/framework/parameters.h"
 #include "cbbg/plant/robot_params.h"
 
-namespace cbbg::config {
+namespace cbbg::parameters {
+
+using config::kMaxSeed;
+using config::kMaxSeeds;
+using config::kMaxTrials;
 
 // What runs, how often: the keys without a section.
 struct RunParams {
@@ -59,11 +66,6 @@ struct RunParams {
   }
 };
 
-// `words` and the words registered for the text key `key` since (register_choice,
-// config/declared_keys.h): what a key open to a user's words declares it allows.
-std::vector<std::string> with_registered_words(std::string_view key,
-                                               std::vector<std::string> words);
-
 // plant.*: which plant, and the robot's physical parameters.
 struct PlantSection {
   std::string kind = "simbody";
@@ -72,7 +74,7 @@ struct PlantSection {
   template <class Archive>
   void describe(Archive& a) {
     a.text("kind", kind, "simbody (3-D multibody, reference) | analytic (fast)",
-           with_registered_words("plant.kind", {"simbody", "analytic"}));
+           config::with_registered_words("plant.kind", {"simbody", "analytic"}));
     robot.describe(a);
   }
 };
@@ -109,16 +111,6 @@ struct SupervisorSection {
            {"pd", "lqr"});
     pd.describe(a);
     lqr.describe(a);
-  }
-};
-
-struct Exp2Params {
-  long long trials = 30;
-
-  template <class Archive>
-  void describe(Archive& a) {
-    a.integer("trials", trials, "exp2: trials in all, the CB-coordinated one included",
-              interval(2, kMaxTrials));
   }
 };
 
@@ -174,41 +166,6 @@ struct EvaluationParams {
   }
 };
 
-struct Exp3Params {
-  std::vector<double> angles{0.05, 0.1744, 0.25};
-
-  template <class Archive>
-  void describe(Archive& a) {
-    a.numbers("angles", angles, "exp3: the learnt actor alone must balance from each of these, rad",
-              kFinite);
-  }
-};
-
-// How transfer trains each arm and seed: as exp3 does, until its actor alone balances, or as
-// exp1 does, until its first success.
-enum class TransferTraining { kUntilSkill, kUntilSuccess };
-
-// transfer.*: train once, evaluate under many conditions (experiments/transfer.h).
-struct TransferParams {
-  TransferTraining training = TransferTraining::kUntilSkill;
-  std::vector<std::string> conditions{
-      "evaluation.body_mass_scale=1", "evaluation.body_mass_scale=1.3",
-      "evaluation.com_height_scale=1.3", "evaluation.noise_std=0.05", "evaluation.push_torque=5"};
-
-  template <class Archive>
-  void describe(Archive& a) {
-    a.choice("training", training,
-             "transfer: each arm and seed trains once as exp3 does (until its actor alone "
-             "balances) or as exp1 does (until its first success)",
-             Choices<TransferTraining>{{"exp3", TransferTraining::kUntilSkill},
-                                       {"exp1", TransferTraining::kUntilSuccess}});
-    a.settings("conditions", conditions,
-               "transfer: what was learnt is evaluated from evaluation.angles under each of these "
-               "conditions, a column each; keys of evaluation.*, plant.* (not plant.kind), "
-               "sensors.*, push.* or a registered section");
-  }
-};
-
 // The whole tree, in the order of config.yaml.
 struct Parameters {
   RunParams run;
@@ -226,19 +183,18 @@ struct Parameters {
   blocks::RewardParams reward;
   blocks::SensorsParams sensors;
   blocks::PushParams push;
-  std::vector<AnnealingStep> annealing{{1, 10}, {11, 5}, {16, 1}, {21, 0.5}, {23, 0.1}};
-  Exp2Params exp2;
   LogParams log;
   EvaluationParams evaluation;
-  Exp3Params exp3;
-  TransferParams transfer;
-  // The sections users registered (config/declared_keys.h), by full key; not declared here.
-  OwnSections own;
+  // The registered sections' values (a protocol's, a user's), by full key; not declared here.
+  config::OwnSections own;
 
   // The rules across sections: trial.duration >= trial.period; trial.theta0 and every
-  // evaluation.angles and exp3.angles entry strictly inside trial.failure_angle. Throws
-  // ConfigError naming both keys and their values.
+  // evaluation.angles entry strictly inside trial.failure_angle (check_inside_failure_angle).
+  // Throws config::ConfigError naming both keys and their values.
   void check_across_sections() const;
+  // Throws config::ConfigError unless `angle`, the value of `key`, lies strictly inside
+  // trial.failure_angle: a trial from there would fail at once.
+  void check_inside_failure_angle(const std::string& key, double angle) const;
 
   template <class Archive>
   void describe(Archive& a) {
@@ -257,22 +213,23 @@ struct Parameters {
     a.section(blocks::RewardParams::kSection, reward);
     a.section(blocks::SensorsParams::kSection, sensors);
     a.section(blocks::PushParams::kSection, push);
-    a.annealing("annealing", annealing,
-                "exp2: k1 from a trial on (trial 1 is the CB-coordinated one)");
-    a.section("exp2", exp2);
     a.section("log", log);
     a.section("evaluation", evaluation);
-    a.section("exp3", exp3);
-    a.section("transfer", transfer);
   }
 };
+
+// Registers the tree's keys first among the config's, once; what kTreeRegistered does.
+bool register_tree();
+// Every program that includes this header has the tree's keys before main, whatever it
+// makes first (a Config, a protocol, a section of its own).
+[[maybe_unused]] inline const bool kTreeRegistered = register_tree();
 
 // The typed tree of `config`, whose every value was checked against its declaration as it
 // arrived, the registered sections' values in `own`. Cross-key rules and a block's own
 // invariants are checked by diagrams::validated_parameters, the edge of a run.
-Parameters read_parameters(const Config& config);
+Parameters read_parameters(const config::Config& config);
 // Writes `parameters` into `config`, the registered sections too. Throws ConfigError naming
 // the first value outside its declaration.
-void write_parameters(const Parameters& parameters, Config& config);
+void write_parameters(const Parameters& parameters, config::Config& config);
 
-}  // namespace cbbg::config
+}  // namespace cbbg::parameters

@@ -1,0 +1,64 @@
+// The config engine alone (config/key_registry.cc), in a program without the run's tree: it
+// has exactly the keys registered, in the places their registrations asked for.
+
+#include <string>
+#include <vector>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "cbbg/config/declared_keys.h"
+
+namespace cbbg::config {
+namespace {
+
+using ::testing::ThrowsMessage;
+
+struct Gains {
+  double k = 1.0;
+  long long n = 3;
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.number("k", k, "a gain", kPositive);
+    a.integer("n", n, "a count", interval(1, 10));
+  }
+};
+
+std::vector<std::string> paths() {
+  std::vector<std::string> all;
+  for (const KeySpec& key : schema()) all.push_back(key.path);
+  return all;
+}
+
+TEST(KeyRegistry, HoldsTheKeysRegisteredWhereTheyAskedAndNoneOfItsOwn) {
+  EXPECT_TRUE(schema().empty());  // no block, plant or protocol is linked into this program
+  EXPECT_THAT([] { Config().set("critic.gamma=0.5"); },
+              ThrowsMessage<ConfigError>("--set critic.gamma=0.5: unknown key 'critic.gamma'; "
+                                         "`cbbg list` shows every key"));
+
+  register_keys(declared_keys(Gains{}, "outer"));
+  register_keys(declared_keys(Gains{}, "last"));
+  register_keys(declared_keys(Gains{}, "inner"), "outer");
+  register_leading_keys(declared_keys(Gains{}, "first"));
+  EXPECT_EQ(paths(), (std::vector<std::string>{"first.k", "first.n", "outer.k", "outer.n",
+                                               "inner.k", "inner.n", "last.k", "last.n"}));
+
+  Config config;
+  config.set("inner.n=7");
+  EXPECT_EQ(config.integer("inner.n"), 7);
+  EXPECT_EQ(read_section<Gains>(config, "inner").n, 7);
+  EXPECT_EQ(config.to_yaml(),
+            "first:\n  k: 1\n  n: 3\nouter:\n  k: 1\n  n: 3\ninner:\n  k: 1\n  n: 7\n"
+            "last:\n  k: 1\n  n: 3\n");
+
+  EXPECT_THAT([] { register_keys(declared_keys(Gains{}, "more"), "nowhere"); },
+              ThrowsMessage<std::invalid_argument>(
+                  "config keys cannot follow 'nowhere': no key or section has that name yet"));
+  EXPECT_THAT([] { register_keys(declared_keys(Gains{}, "outer")); },
+              ThrowsMessage<std::invalid_argument>("config key 'outer.k' is declared twice"));
+  EXPECT_EQ(schema().size(), 8U);  // a refused registration adds nothing
+}
+
+}  // namespace
+}  // namespace cbbg::config
