@@ -75,6 +75,8 @@ class LayoutCollector {
   template <typename... Ignored>
   void names(Ignored&&...) {}
   template <typename... Ignored>
+  void file(Ignored&&...) {}
+  template <typename... Ignored>
   void annealing(Ignored&&...) {}
   template <typename... Ignored>
   void settings(Ignored&&...) {}

@@ -33,6 +33,8 @@ install(PROGRAMS scripts/robustness_study.sh scripts/robustness_report.py
         DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
 install(FILES scripts/study_kit.sh scripts/study_stats.py DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
 install(DIRECTORY configs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/configs)
+# The paper's two-wheeler as an MJCF model (plant.kind mujoco), to copy and change.
+install(FILES plant/mujoco/two_wheeler.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/models)
 # The Slurm batch scripts of a sweep (README: Sweeps).
 install(PROGRAMS scripts/slurm/sweep.sbatch scripts/slurm/merge.sbatch scripts/slurm/submit_sweep.sh
         DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/slurm)

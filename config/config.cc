@@ -77,7 +77,8 @@ YAML::Node load_yaml(const std::string& text, const std::string& source);
 
 class Parser {
  public:
-  explicit Parser(std::string source) : source_(std::move(source)) {}
+  explicit Parser(std::string source, std::filesystem::path relative_to = {})
+      : source_(std::move(source)), relative_to_(std::move(relative_to)) {}
 
   [[noreturn]] void fail(const std::string& message) const {
     throw ConfigError(source_ + ": " + message);
@@ -130,6 +131,21 @@ class Parser {
     return value;
   }
 
+  // A path: one line of text, no control character.
+  std::string parse_file(const std::string& key, const YAML::Node& node) const {
+    if (node.IsNull()) return "";
+    const bool one_line =
+        node.IsScalar() && std::none_of(node.Scalar().begin(), node.Scalar().end(), [](char c) {
+          return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+        });
+    if (!one_line) fail(key + " must be a file's path on one line; got " + shown(node));
+    const std::filesystem::path path(node.Scalar());
+    if (path.empty() || path.is_absolute()) return path.string();
+    const std::filesystem::path folder =
+        relative_to_.empty() ? std::filesystem::current_path() : relative_to_;
+    return (folder / path).lexically_normal().string();
+  }
+
   Value parse(const KeySpec& spec, const YAML::Node& node) const {
     const std::string& key = spec.path;
     switch (spec.kind) {
@@ -172,6 +188,8 @@ class Parser {
         return parse_annealing(key, node);
       case Kind::kSettings:
         return parse_settings(key, node);
+      case Kind::kFile:
+        return parse_file(key, node);
     }
     fail(key + ": unknown kind");
   }
@@ -295,6 +313,7 @@ class Parser {
 
  private:
   std::string source_;
+  std::filesystem::path relative_to_;  // empty: the working directory
 };
 
 YAML::Node load_yaml(const std::string& text, const std::string& source) {
@@ -390,6 +409,8 @@ std::string allowed_values(const KeySpec& spec) {
       return "a list of {from_trial, k1}";
     case Kind::kSettings:
       return "a list of key=value (several joined by ';')";
+    case Kind::kFile:
+      return "a file's path (empty: none)";
   }
   return "";
 }
@@ -422,10 +443,11 @@ Config::Config() {
   for (const auto& spec : schema()) values_[spec.path] = spec.default_value;
 }
 
-void Config::merge_yaml(const std::string& text, const std::string& source) {
+void Config::merge_yaml(const std::string& text, const std::string& source,
+                        const std::filesystem::path& relative_to) {
   YAML::Node document = load_yaml(text, source);
   if (!document.IsDefined() || document.IsNull()) return;  // an empty file changes nothing
-  const Parser parser(source);
+  const Parser parser(source, relative_to);
   if (!document.IsMap()) parser.fail("a config is a map of keys; got " + shown(document));
   if (document["sweep"]) {  // a sweep's grid, which config::Sweep reads (config/sweep.h)
     document = YAML::Clone(document);
@@ -453,7 +475,7 @@ void Config::merge_file(const std::filesystem::path& path) {
   }
   std::stringstream text;
   text << in.rdbuf();
-  merge_yaml(text.str(), path.string());
+  merge_yaml(text.str(), path.string(), std::filesystem::absolute(path).parent_path());
 }
 
 void Config::set(std::string_view assignment, std::string source) {

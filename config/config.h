@@ -45,7 +45,8 @@ using Value = std::variant<double, long long, std::string, std::vector<double>,
 
 // kSettings: a list of texts, each "key=value" (several joined by ';'), every key another of
 // the tree and every value one that key allows: a list of conditions (transfer.conditions).
-enum class Kind { kNumber, kInteger, kText, kNumbers, kNames, kAnnealing, kSettings };
+// kFile: a path to a file, any text on one line (empty: none), not a name.
+enum class Kind { kNumber, kInteger, kText, kNumbers, kNames, kAnnealing, kSettings, kFile };
 
 // One key of the tree.
 struct KeySpec {
@@ -77,8 +78,11 @@ class Config {
   // The defaults of every key registered so far.
   Config();
 
-  // Merges a YAML document; `source` names it in error messages (a file name).
-  void merge_yaml(const std::string& text, const std::string& source);
+  // Merges a YAML document; `source` names it in error messages (a file name). A file's path
+  // (a key of kind kFile) is kept absolute: a relative one is read from `relative_to`, by
+  // default the working directory; merge_file reads it from the config file's folder.
+  void merge_yaml(const std::string& text, const std::string& source,
+                  const std::filesystem::path& relative_to = {});
   void merge_file(const std::filesystem::path& path);
   // Applies one "key.path=value" override (value in YAML syntax: 3, [1, 2], {a: 1}).
   // Errors start with `source`, by default "--set key.path=value".

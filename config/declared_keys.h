@@ -69,6 +69,9 @@ class KeyCollector {
              std::vector<std::string> words) {
     add(key, Kind::kNames, values, meaning, std::move(words), {}, 0);
   }
+  void file(std::string_view key, std::string& path, std::string_view meaning) {
+    add(key, Kind::kFile, path, meaning, {}, {}, 0);
+  }
   void annealing(std::string_view key, std::vector<AnnealingStep>& steps,
                  std::string_view meaning) {
     add(key, Kind::kAnnealing, steps, meaning, {}, {}, 0);
@@ -133,6 +136,9 @@ class KeyReader {
              const std::vector<std::string>&) {
     values = read<std::vector<std::string>>(key);
   }
+  void file(std::string_view key, std::string& path, std::string_view) {
+    path = read<std::string>(key);
+  }
   void annealing(std::string_view key, std::vector<AnnealingStep>& steps, std::string_view) {
     steps = read<std::vector<AnnealingStep>>(key);
   }
@@ -170,6 +176,9 @@ class KeyWriter {
   }
   void numbers(std::string_view key, std::vector<double>& values, std::string_view, const Bounds&) {
     config_.assign(path(key), values);
+  }
+  void file(std::string_view key, std::string& value, std::string_view) {
+    config_.assign(path(key), value);
   }
   template <std::size_t N>
   void numbers(std::string_view key, std::array<double, N>& values, std::string_view,

@@ -7,6 +7,10 @@
 #include "cbbg/framework/number_text.h"
 #include "cbbg/plant/analytic_plant.h"
 #include "cbbg/plant/simbody_plant.h"
+#ifdef CBBG_WITH_MUJOCO
+#include "cbbg/plant/mujoco/mujoco_params.h"
+#include "cbbg/plant/mujoco/mujoco_plant.h"
+#endif
 
 namespace cbbg::diagrams {
 namespace {
@@ -68,6 +72,39 @@ std::vector<PlantKind>& kinds() {
   return all;
 }
 
+#ifdef CBBG_WITH_MUJOCO
+plant::MujocoParams mujoco_params(const parameters::Parameters& p) {
+  return config::read_section<plant::MujocoParams>(p.own, "mujoco");
+}
+
+// The two-wheeler of plant.* changes as the other two-wheelers do; a model file through the
+// scales of mujoco.*, applied to mujoco.body when the plant loads it.
+bool change_mujoco(parameters::Parameters& p, RobotChange change, double factor) {
+  if (mujoco_params(p).model.empty()) return change_two_wheeler(p, change, factor);
+  const char* key =
+      change == RobotChange::kBodyMass ? "mujoco.body_mass_scale" : "mujoco.com_height_scale";
+  p.own.values[key] = scaled(std::get<double>(p.own.value(key)), factor, key, change);
+  return true;
+}
+
+PlantKind mujoco_kind() {
+  return {"mujoco", "MuJoCo: mujoco.model's MJCF or URDF, or the two-wheeler with ground contact",
+          [](const std::string& name, const parameters::Parameters& p) {
+            return std::make_unique<plant::MujocoPlant>(name, mujoco_params(p), p.plant.robot,
+                                                        p.trial.theta0, disturbance_input(p));
+          },
+          change_mujoco,
+          [](const parameters::Parameters& p) {
+            if (!mujoco_params(p).model.empty()) {
+              throw std::invalid_argument(
+                  "plant.kind 'mujoco' offers a linearisation of its own two-wheeler only; "
+                  "mujoco.model names a model file");
+            }
+            return linearize_two_wheeler(p);
+          }};
+}
+#endif
+
 // The registered kind named `name`, or null.
 const PlantKind* find_kind(std::string_view name) {
   for (const PlantKind& kind : kinds()) {
@@ -83,6 +120,14 @@ std::vector<std::string> kind_names() {
 }
 
 }  // namespace
+
+bool register_library_plant_kinds() {
+#ifdef CBBG_WITH_MUJOCO
+  config::register_section<plant::MujocoParams>("mujoco");
+  register_plant_kind(mujoco_kind());
+#endif
+  return true;
+}
 
 const char* change_key(RobotChange change) {
   return change == RobotChange::kBodyMass ? "evaluation.body_mass_scale"

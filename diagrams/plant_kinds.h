@@ -61,6 +61,11 @@ struct PlantKind {
 // for a section: plant.kind allows its name from then on. Throws std::invalid_argument.
 void register_plant_kind(PlantKind kind);
 
+// The library's kinds beyond simbody and analytic: mujoco, in a build with MuJoCo (its section
+// mujoco.* with it). Run once before main by kLibraryPlantKindsRegistered.
+bool register_library_plant_kinds();
+[[maybe_unused]] inline const bool kLibraryPlantKindsRegistered = register_library_plant_kinds();
+
 // simbody, analytic, then the registered kinds.
 const std::vector<PlantKind>& plant_kinds();
 // The kind named `name`; std::invalid_argument listing the kinds for another name.

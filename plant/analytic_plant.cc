@@ -63,11 +63,7 @@ AnalyticPlant::AnalyticPlant(std::string name, const RobotParams& params, double
   params_.validate();
   const InputPort& torque = declare_input_port(
       "torque", kTorqueSize, "tau_l, tau_r: motor torques body -> wheel, N m (saturated here)");
-  const InputPort* pushed = disturbance == DisturbanceInput::kDeclared
-                                ? &declare_input_port("disturbance", kDisturbanceSize,
-                                                      "F at the centre of mass along the "
-                                                      "heading, N; pitch torque, N m")
-                                : nullptr;
+  const InputPort* pushed = declare_disturbance_input(disturbance);
   declare_output_port(
       "state", kStateSize,
       [this](const BlockContext& context, VectorRef y) {

@@ -59,6 +59,13 @@ class RobotPlant : public Block {
 
  protected:
   explicit RobotPlant(std::string name) : Block(std::move(name)) {}
+
+  // Declares the input "disturbance" when `disturbance` asks for it; null when it does not.
+  const InputPort* declare_disturbance_input(DisturbanceInput disturbance) {
+    if (disturbance != DisturbanceInput::kDeclared) return nullptr;
+    return &declare_input_port("disturbance", kDisturbanceSize,
+                               "F at the centre of mass along the heading, N; pitch torque, N m");
+  }
 };
 
 }  // namespace cbbg::plant

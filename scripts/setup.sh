@@ -15,6 +15,8 @@ packages=(
   libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   graphviz python3 python3-dev python3-matplotlib python3-numpy pybind11-dev
+  # plant.kind mujoco; MuJoCo's CMake package names libqhull_r's headers
+  libmujoco-dev libqhull-dev
 )
 # The tests' own tools and services.
 test_packages=(

@@ -10,6 +10,7 @@
 #include <iterator>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "bench/ratio_reporter.h"
@@ -18,10 +19,14 @@
 #include "cbbg/framework/primitives/zero_order_hold.h"
 #include "cbbg/framework/simulator.h"
 #include "cbbg/plant/analytic_plant.h"
+#include "cbbg/plant/mujoco/mujoco_params.h"
 #include "cbbg/plant/multibody_robot.h"
 #include "cbbg/plant/plant_ports.h"
 #include "cbbg/plant/robot_dynamics.h"
 #include "cbbg/plant/simbody_plant.h"
+#ifdef CBBG_WITH_MUJOCO
+#include "cbbg/plant/mujoco/mujoco_plant.h"
+#endif
 #include "tests/support/allocation_counter.h"
 
 namespace cbbg::plant::bench {
@@ -53,7 +58,12 @@ class DiagramLoop {
  public:
   explicit DiagramLoop(const RobotParams& params = {}) {
     DiagramBuilder builder("robot");
-    plant_ = &builder.emplace<Plant>("plant", params);
+    if constexpr (std::is_constructible_v<Plant, std::string, RobotParams>) {
+      plant_ = &builder.emplace<Plant>("plant", params);
+    } else {  // the MuJoCo plant: the two-wheeler of `params` at its own step
+      const MujocoParams mujoco;
+      plant_ = &builder.emplace<Plant>("plant", mujoco, params);
+    }
     auto& law = builder.emplace<PdLaw>("law");
     auto& hold = builder.emplace<ZeroOrderHold>("hold", kTorqueSize, kPeriod);
     builder.connect(*plant_, "state", law, "state");
@@ -264,6 +274,50 @@ void BM_SimbodyConfigurations(benchmark::State& state) {
   }
 }
 
+#ifdef CBBG_WITH_MUJOCO
+void BM_MujocoPlantStep(benchmark::State& state) {
+  DiagramLoop<MujocoPlant> loop;
+  run_steps(state, loop);
+}
+
+// The three two-wheelers in alternating slices of 100 ticks within one benchmark, so that
+// they see the same machine load: CPU per 10 ms tick of each, and MuJoCo's (2 ms steps, the
+// step the agreement tests hold) over Simbody's (the rolling model, Runge-Kutta-Merson) and
+// over the analytic plant's.
+void BM_PlantsPerTick(benchmark::State& state) {
+  DiagramLoop<AnalyticPlant> analytic;
+  DiagramLoop<SimbodyPlant> simbody;
+  DiagramLoop<MujocoPlant> mujoco;
+  constexpr int kSlice = 100;
+  double seconds[3] = {};
+  long slices = 0;
+  for (auto _ : state) {
+    double start = thread_cpu_seconds();
+    for (int i = 0; i < kSlice; ++i) analytic.step();
+    double end = thread_cpu_seconds();
+    seconds[0] += end - start;
+    start = end;
+    for (int i = 0; i < kSlice; ++i) simbody.step();
+    end = thread_cpu_seconds();
+    seconds[1] += end - start;
+    start = end;
+    for (int i = 0; i < kSlice; ++i) mujoco.step();
+    seconds[2] += thread_cpu_seconds() - start;
+    ++slices;
+  }
+  benchmark::DoNotOptimize(analytic.pitch() + simbody.pitch() + mujoco.pitch());
+  const double ticks = static_cast<double>(slices * kSlice);
+  state.counters["analytic_us_per_tick"] = 1e6 * seconds[0] / ticks;
+  state.counters["simbody_us_per_tick"] = 1e6 * seconds[1] / ticks;
+  state.counters["mujoco_us_per_tick"] = 1e6 * seconds[2] / ticks;
+  state.counters["mujoco_over_simbody"] = seconds[2] / seconds[1];
+  state.counters["mujoco_over_analytic"] = seconds[2] / seconds[0];
+}
+
+BENCHMARK(BM_MujocoPlantStep)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PlantsPerTick)->Unit(benchmark::kMillisecond)->MinTime(5.0);
+#endif
+
 BENCHMARK(BM_AnalyticPlantStep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SimbodyConfigurations)->Unit(benchmark::kMillisecond)->MinTime(5.0);
 BENCHMARK(BM_SimbodyPlantStep)->Unit(benchmark::kMicrosecond);
@@ -277,6 +331,8 @@ BENCHMARK(BM_SimbodyNewContextAndFirstStep)->Unit(benchmark::kMicrosecond);
 
 int main(int argc, char** argv) {
   return cbbg::bench::run_benchmarks_with_ratios(argc, argv, [](const std::string& name) {
-    return name == "BM_SimbodyPlantStep" ? std::string("BM_SimbodyPlainLoop") : std::string();
+    if (name == "BM_SimbodyPlantStep") return std::string("BM_SimbodyPlainLoop");
+    if (name == "BM_MujocoPlantStep") return std::string("BM_SimbodyPlantStep");
+    return std::string();
   });
 }

@@ -103,7 +103,8 @@ void bind_key_specs(py::module_& m) {
       .value("NUMBERS", config::Kind::kNumbers)
       .value("NAMES", config::Kind::kNames)
       .value("ANNEALING", config::Kind::kAnnealing)
-      .value("SETTINGS", config::Kind::kSettings);
+      .value("SETTINGS", config::Kind::kSettings)
+      .value("FILE", config::Kind::kFile);
   py::class_<config::KeySpec>(m, "KeySpec", "One key of the config tree: kind, default, checks.")
       .def_readonly("path", &config::KeySpec::path)
       .def_readonly("kind", &config::KeySpec::kind)
@@ -169,7 +170,12 @@ void bind_config(py::module_& m) {
   py::class_<config::Config>(m, "Config",
                              "The configuration tree: defaults, then YAML files and settings.")
       .def(py::init<>())
-      .def("merge_yaml", &config::Config::merge_yaml, py::arg("text"), py::arg("source"))
+      .def(
+          "merge_yaml",
+          [](config::Config& config, const std::string& text, const std::string& source) {
+            config.merge_yaml(text, source);  // a file's path: from the working directory
+          },
+          py::arg("text"), py::arg("source"))
       .def("merge_file", &config::Config::merge_file, py::arg("path"))
       .def("set_assignment", &config::Config::set, py::arg("assignment"), py::arg("source") = "",
            "Applies one \"key.path=value\" (value in YAML syntax); errors start with `source`.")

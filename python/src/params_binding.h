@@ -107,6 +107,9 @@ class KeyCollector {
     add(key, "list of str" + (words.empty() ? "" : ", each one of " + joined(words)) + ": " +
                  std::string(meaning));
   }
+  void file(std::string_view key, std::string&, std::string_view meaning) {
+    add(key, "str, a file's path: " + std::string(meaning));
+  }
   void settings(std::string_view key, std::vector<std::string>&, std::string_view meaning) {
     add(key, "list of str, \"other.key=value\" entries: " + std::string(meaning));
   }
@@ -170,6 +173,9 @@ class KeyReader {
   void names(std::string_view key, std::vector<std::string>& values, std::string_view,
              const std::vector<std::string>&) {
     if (key == key_) value_ = py::cast(values);
+  }
+  void file(std::string_view key, std::string& value, std::string_view) {
+    if (key == key_) value_ = py::str(value);
   }
   void settings(std::string_view key, std::vector<std::string>& values, std::string_view) {
     if (key == key_) value_ = py::cast(values);
@@ -246,6 +252,9 @@ class KeyWriter {
   void names(std::string_view key, std::vector<std::string>& values, std::string_view,
              const std::vector<std::string>&) {
     if (key == key_) values = as<std::vector<std::string>>("a list of str");
+  }
+  void file(std::string_view key, std::string& value, std::string_view) {
+    if (key == key_) value = as<std::string>("a str");
   }
   void settings(std::string_view key, std::vector<std::string>& values, std::string_view) {
     if (key == key_) values = as<std::vector<std::string>>("a list of str");

@@ -1,6 +1,7 @@
 """The Gymnasium-style environment: its rollouts are the library's trials."""
 
 from fractions import Fraction
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -126,3 +127,34 @@ def test_the_same_seed_gives_the_same_episode():
     other, _, _ = supervised_rollout(env, seed=6, theta0=0.1)
     np.testing.assert_array_equal(first, second)
     assert not np.array_equal(first, other)
+
+
+def mujoco_parameters(settings):
+    """cbbg.parameters on the MuJoCo plant; skipped in a build without MuJoCo."""
+    try:
+        return cbbg.parameters({"plant.kind": "mujoco", **settings})
+    except ValueError as error:
+        if "plant.kind must be one of" not in str(error):
+            raise
+        pytest.skip(f"a build without MuJoCo: {error}")
+
+
+def test_the_mujoco_robot_is_the_closed_loops_trial():
+    parameters = mujoco_parameters({"trial.duration": 2.0})
+    env = cbbg.BalanceEnv(parameters)
+    pitch, terminated, truncated = supervised_rollout(env, seed=2, theta0=0.15)
+    assert truncated and not terminated
+    expected = closed_loop_pitch(parameters, 0.15, seed=2, ticks=200)
+    assert np.max(np.abs(pitch - expected)) <= 1e-12
+
+
+def test_a_model_files_robot_steps_with_its_own_signals():
+    model = Path(__file__).resolve().parents[2] / "examples" / "mujoco" / "reaction_wheel.xml"
+    parameters = mujoco_parameters({"mujoco.model": str(model), "mujoco.actuators": ["motor"],
+                                    "mujoco.body": "rod", "trial.duration": 0.5})
+    env = cbbg.BalanceEnv(parameters)
+    observation, info = env.reset(seed=1)
+    assert info["signal_names"] == ["pitch", "pitch_rate", "wheel", "wheel_rate"]
+    pitch, terminated, truncated = supervised_rollout(env, seed=1, theta0=0.1)
+    assert truncated and not terminated
+    assert abs(pitch[-1]) < abs(pitch[0])  # the paper's PD law holds it up

@@ -1,6 +1,8 @@
 // The config engine alone (config/key_registry.cc), in a program without the run's tree: it
 // has exactly the keys registered, in the places their registrations asked for.
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -58,6 +60,44 @@ TEST(KeyRegistry, HoldsTheKeysRegisteredWhereTheyAskedAndNoneOfItsOwn) {
   EXPECT_THAT([] { register_keys(declared_keys(Gains{}, "outer")); },
               ThrowsMessage<std::invalid_argument>("config key 'outer.k' is declared twice"));
   EXPECT_EQ(schema().size(), 8U);  // a refused registration adds nothing
+}
+
+struct Model {
+  std::string file{};
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.file("file", file, "a model file");
+  }
+};
+
+// A file's path is kept absolute, read from where it was written: a config file's folder, or
+// the working directory for --set; empty is none, and a path on more than one line is refused.
+TEST(KeyRegistry, AFilesPathIsReadFromWhereItWasWritten) {
+  register_keys(declared_keys(Model{}, "robot"));
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / "cbbg_key_registry_file_test";
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder / "run.yaml") << "robot:\n  file: models/arm.xml\n";
+  Config from_file;
+  from_file.merge_file(folder / "run.yaml");
+  EXPECT_EQ(from_file.text("robot.file"), (folder / "models" / "arm.xml").string());
+  std::filesystem::remove_all(folder);
+
+  Config from_flag;
+  from_flag.set("robot.file=arm.xml");
+  EXPECT_EQ(from_flag.text("robot.file"), (std::filesystem::current_path() / "arm.xml").string());
+  from_flag.set("robot.file=/models/arm.xml");
+  EXPECT_EQ(from_flag.text("robot.file"), "/models/arm.xml");
+  from_flag.set("robot.file=''");
+  EXPECT_EQ(from_flag.text("robot.file"), "");
+  Config reloaded;  // config.yaml reads back the same path
+  reloaded.merge_yaml(from_flag.to_yaml(), "config.yaml");
+  EXPECT_EQ(reloaded, from_flag);
+  EXPECT_THAT([] { Config().set("robot.file=[a, b]"); },
+              ThrowsMessage<ConfigError>(
+                  "--set robot.file=[a, b]: robot.file must be a file's path on one line; got "
+                  "[a, b]"));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -19,6 +20,9 @@
 #include "cbbg/plant/plant_ports.h"
 #include "cbbg/plant/robot_params.h"
 #include "cbbg/plant/simbody_plant.h"
+#ifdef CBBG_WITH_MUJOCO
+#include "cbbg/plant/mujoco/mujoco_plant.h"
+#endif
 
 namespace cbbg::plant::testing {
 
@@ -44,34 +48,40 @@ class PdLaw final : public Block {
   }
 };
 
-// The PD action plus a random differential torque that makes the robot turn: every period,
-// delta ~ N(0, sigma^2) and the held torques become (a + delta, a - delta).
-class TurningPdLaw final : public Block {
+// The PD action plus noise drawn every period, e ~ N(0, sigma^2) from the context's
+// generator: kDifferential makes the robot turn, the held torques (a + e, a - e);
+// kCommon explores as a learner's sampler does, (a + e, a + e).
+enum class Noise { kDifferential, kCommon };
+
+class NoisyPdLaw final : public Block {
  public:
-  TurningPdLaw(std::string name, double sigma) : Block(std::move(name)) {
+  NoisyPdLaw(std::string name, double sigma, Noise noise) : Block(std::move(name)) {
     const InputPort& state = declare_input_port("state", kStateSize);
     declare_discrete_state("state", Vector::Zero(kTorqueSize), StateLifetime::kPersistent);
     declare_output_port(
         "torque", kTorqueSize,
         [](const BlockContext& context, VectorRef torque) { torque = context.discrete_state(); },
         {});
-    declare_periodic_update(kPeriod, 0.0, [&state, sigma](BlockContext& context, VectorRef next) {
-      const double a = pd_action(context.input(state), 1.0);
-      const double delta = sigma * draw_standard_normal(context.random_generator());
-      next[kTauLeft] = a + delta;
-      next[kTauRight] = a - delta;
-      return EventStatus::succeeded();
-    });
+    declare_periodic_update(
+        kPeriod, 0.0, [&state, sigma, noise](BlockContext& context, VectorRef next) {
+          const double a = pd_action(context.input(state), 1.0);
+          const double e = sigma * draw_standard_normal(context.random_generator());
+          next[kTauLeft] = a + e;
+          next[kTauRight] = noise == Noise::kCommon ? a + e : a - e;
+          return EventStatus::succeeded();
+        });
   }
 };
 
-enum class PlantKind { kAnalytic, kSimbody };
+enum class PlantKind { kAnalytic, kSimbody, kMujoco };
 
 inline std::string plant_name(PlantKind kind) {
-  return kind == PlantKind::kAnalytic ? "Analytic" : "Simbody";
+  return kind == PlantKind::kAnalytic  ? "Analytic"
+         : kind == PlantKind::kSimbody ? "Simbody"
+                                       : "Mujoco";
 }
 
-enum class Control { kFixedTorque, kPd, kPdFlipped, kTurningPd };
+enum class Control { kFixedTorque, kPd, kPdFlipped, kTurningPd, kExploringPd };
 
 // A diagram "robot" with the plant "plant" behind the chosen control.
 struct Rig {
@@ -82,11 +92,7 @@ struct Rig {
 
   const OutputPort& state() const { return plant->output_port("state"); }
   void reset(Context& context, double pitch) const {
-    if (kind == PlantKind::kAnalytic) {
-      static_cast<const AnalyticPlant&>(*plant).reset(context, pitch);
-    } else {
-      static_cast<const SimbodyPlant&>(*plant).reset(context, pitch);
-    }
+    static_cast<const RobotPlant&>(*plant).reset(context, pitch);
   }
   void set_state(Context& context, const Vector& state) const {
     if (kind == PlantKind::kAnalytic) {
@@ -99,8 +105,10 @@ struct Rig {
 
 // With `disturbance` (force N, pitch torque N m), the plant declares its input "disturbance"
 // and it is fixed to that value.
+// kMujoco: the two-wheeler of `params` at MuJoCo's step `mujoco_step` (0: the model's).
 inline Rig make_rig(PlantKind kind, const RobotParams& params, double pitch, Control control,
-                    double sigma = 1.0, const std::optional<Vector>& disturbance = std::nullopt) {
+                    double sigma = 1.0, const std::optional<Vector>& disturbance = std::nullopt,
+                    [[maybe_unused]] double mujoco_step = 0.0) {
   DiagramBuilder builder("robot");
   Rig rig;
   rig.kind = kind;
@@ -109,15 +117,24 @@ inline Rig make_rig(PlantKind kind, const RobotParams& params, double pitch, Con
   RobotPlant* plant = nullptr;
   if (kind == PlantKind::kAnalytic) {
     plant = &builder.emplace<AnalyticPlant>("plant", params, pitch, pushed);
-  } else {
+  } else if (kind == PlantKind::kSimbody) {
     plant = &builder.emplace<SimbodyPlant>("plant", params, pitch, pushed);
+  } else {
+#ifdef CBBG_WITH_MUJOCO
+    MujocoParams mujoco;
+    mujoco.timestep = mujoco_step;
+    plant = &builder.emplace<MujocoPlant>("plant", mujoco, params, pitch, pushed);
+#else
+    throw std::invalid_argument("a build without MuJoCo has no MuJoCo plant");
+#endif
   }
   if (disturbance) builder.fix_input(*plant->disturbance_input(), *disturbance);
   rig.plant = plant;
   if (control == Control::kFixedTorque) {
     builder.export_input(plant->input_port("torque"), "torque");
-  } else if (control == Control::kTurningPd) {
-    auto& law = builder.emplace<TurningPdLaw>("law", sigma);
+  } else if (control == Control::kTurningPd || control == Control::kExploringPd) {
+    auto& law = builder.emplace<NoisyPdLaw>(
+        "law", sigma, control == Control::kTurningPd ? Noise::kDifferential : Noise::kCommon);
     builder.connect(*plant, "state", law, "state");
     builder.connect(law, "torque", *plant, "torque");
   } else {
