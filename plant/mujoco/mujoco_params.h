@@ -19,7 +19,9 @@ struct MujocoParams {
   std::string model{};
   double timestep = 0.0;  // s; 0: the model file's own
   MujocoIntegrator integrator = MujocoIntegrator::kModel;
-  // The actuators the torque input drives: two take tau_l and tau_r, one takes their sum.
+  // The actuators the torque input drives: two take tau_l and tau_r, one takes their sum. A
+  // hinge or slide joint may stand for an actuator (a URDF file has none): it takes the torque
+  // between its body and the parent.
   std::vector<std::string> actuators{"left_motor", "right_motor"};
   // The 1-dof joint a trial starts at trial.theta0 (every other joint at the model's qpos0).
   std::string pitch_joint = "pitch";
@@ -43,7 +45,8 @@ struct MujocoParams {
                                        {"rk4", MujocoIntegrator::kRungeKutta4},
                                        {"implicit", MujocoIntegrator::kImplicit}});
     a.names("actuators", actuators,
-            "the model's actuators the wheel torques drive: two (tau_l, tau_r) or one (their sum)",
+            "the model's actuators (or 1-dof joints) the wheel torques drive: two (tau_l, tau_r) "
+            "or one (their sum)",
             {});
     a.text("pitch_joint", pitch_joint, "the model's 1-dof joint set to trial.theta0 at a reset",
            {});

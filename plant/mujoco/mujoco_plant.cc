@@ -96,13 +96,33 @@ struct MujocoPlant::Model {
   Model(const Model&) = delete;
   Model& operator=(const Model&) = delete;
 
+  // Where a signal is read in MuJoCo's data.
+  struct Signal {
+    enum Source { kSensor, kPosition, kVelocity } source;
+    int index;  // into sensordata, qpos or qvel
+  };
+  // Where a torque goes: an actuator's control, or a joint's applied force.
+  struct Drive {
+    bool joint;
+    int index;  // into ctrl or qfrc_applied
+
+    // `torque` held for the tick.
+    void apply(mjData* data, double torque) const {
+      (joint ? data->qfrc_applied : data->ctrl)[index] = torque;
+    }
+  };
+
   int id(mjtObj type, const std::string& name, const char* key, const char* what) const;
   void scale_body(const MujocoParams& p);
-  void check_sensors() const;
+  void read_sensors();
+  void read_joints();
+  Drive drive(const std::string& name) const;
 
   std::string source;  // for messages: the file, or "the two-wheeler"
   mjModel* m = nullptr;
-  std::vector<int> actuators;
+  std::vector<Drive> drives;
+  std::vector<std::string> signal_names;
+  std::vector<Signal> signal_sources;
   int pitch_qpos = -1;
   bool sensors_need_acceleration = false;  // an accelerometer, a force or touch sensor
   int body = -1;  // -1: the model has no mujoco.body, and nothing asked for it
@@ -124,9 +144,7 @@ MujocoPlant::Model::Model(const MujocoParams& p, const RobotParams& robot, bool 
       throw std::invalid_argument("mujoco.actuators names one or two actuators; got " +
                                   std::to_string(p.actuators.size()));
     }
-    for (const std::string& name : p.actuators) {
-      actuators.push_back(id(mjOBJ_ACTUATOR, name, "mujoco.actuators", "actuator"));
-    }
+    for (const std::string& name : p.actuators) drives.push_back(drive(name));
     const int pitch = id(mjOBJ_JOINT, p.pitch_joint, "mujoco.pitch_joint", "joint");
     if (m->jnt_type[pitch] != mjJNT_HINGE && m->jnt_type[pitch] != mjJNT_SLIDE) {
       throw std::invalid_argument("mujoco.pitch_joint '" + p.pitch_joint + "' of model " + source +
@@ -137,7 +155,11 @@ MujocoPlant::Model::Model(const MujocoParams& p, const RobotParams& robot, bool 
     body = pushed || changed ? id(mjOBJ_BODY, p.body, "mujoco.body", "body")
                              : mj_name2id(m, mjOBJ_BODY, p.body.c_str());
     if (changed) scale_body(p);
-    check_sensors();
+    if (m->nsensor > 0) {
+      read_sensors();
+    } else {
+      read_joints();
+    }
   } catch (...) {
     mj_deleteModel(m);
     throw;
@@ -145,7 +167,7 @@ MujocoPlant::Model::Model(const MujocoParams& p, const RobotParams& robot, bool 
   for (int s = 0; s < m->nsensor; ++s) {
     sensors_need_acceleration |= m->sensor_needstage[s] == mjSTAGE_ACC;
   }
-  signals = m->nsensor;
+  signals = static_cast<int>(signal_names.size());
   qpos = signals;
   qvel = qpos + m->nq;
   act = qvel + m->nv;
@@ -157,13 +179,13 @@ int MujocoPlant::Model::id(mjtObj type, const std::string& name, const char* key
                            const char* what) const {
   const int found = mj_name2id(m, type, name.c_str());
   if (found >= 0) return found;
-  const int count = type == mjOBJ_ACTUATOR ? m->nu : type == mjOBJ_JOINT ? m->njnt : m->nbody;
+  const int count = type == mjOBJ_JOINT ? m->njnt : m->nbody;
   throw std::invalid_argument(std::string(key) + " '" + name + "': model " + source + " has no " +
                               what + " of that name (it has: " + names_of(m, type, count) + ")");
 }
 
 // Each sensor is one named signal of one number.
-void MujocoPlant::Model::check_sensors() const {
+void MujocoPlant::Model::read_sensors() {
   for (int s = 0; s < m->nsensor; ++s) {
     const std::string name = name_of(m, mjOBJ_SENSOR, s);
     if (name.empty()) {
@@ -175,7 +197,39 @@ void MujocoPlant::Model::check_sensors() const {
                                   std::to_string(m->sensor_dim[s]) +
                                   " numbers; each sensor is one signal of one number");
     }
+    signal_names.push_back(name);
+    signal_sources.push_back({Signal::kSensor, m->sensor_adr[s]});
   }
+}
+
+// A model without sensors (a URDF file has none): each hinge or slide joint is two signals,
+// its angle or position under its name and its rate as NAME_rate.
+void MujocoPlant::Model::read_joints() {
+  for (int j = 0; j < m->njnt; ++j) {
+    const std::string name = name_of(m, mjOBJ_JOINT, j);
+    if (name.empty() || (m->jnt_type[j] != mjJNT_HINGE && m->jnt_type[j] != mjJNT_SLIDE)) continue;
+    signal_names.push_back(name);
+    signal_sources.push_back({Signal::kPosition, m->jnt_qposadr[j]});
+    signal_names.push_back(name + "_rate");
+    signal_sources.push_back({Signal::kVelocity, m->jnt_dofadr[j]});
+  }
+}
+
+// An actuator of that name takes the torque as its control; else a hinge or slide joint of
+// that name takes it as a force between its body and the parent (a URDF file has no
+// actuators).
+MujocoPlant::Model::Drive MujocoPlant::Model::drive(const std::string& name) const {
+  const int actuator = mj_name2id(m, mjOBJ_ACTUATOR, name.c_str());
+  if (actuator >= 0) return {false, actuator};
+  const int joint = mj_name2id(m, mjOBJ_JOINT, name.c_str());
+  if (joint >= 0 && (m->jnt_type[joint] == mjJNT_HINGE || m->jnt_type[joint] == mjJNT_SLIDE)) {
+    return {true, m->jnt_dofadr[joint]};
+  }
+  throw std::invalid_argument("mujoco.actuators '" + name + "': model " + source +
+                              " has no actuator or hinge or slide joint of that name (it has "
+                              "actuators: " +
+                              names_of(m, mjOBJ_ACTUATOR, m->nu) +
+                              "; joints: " + names_of(m, mjOBJ_JOINT, m->njnt) + ")");
 }
 
 // evaluation's changes of the body, on a model file: its mass and inertia, and its centre of
@@ -249,7 +303,12 @@ class MujocoPlant::Scratch final : public BlockScratch {
   // The data's state in the layout of the continuous state.
   void pack(VectorRef state) const {
     const mjModel* m = model_->m;
-    std::copy_n(data_->sensordata, model_->signals, state.data());
+    for (int i = 0; i < model_->signals; ++i) {
+      const Model::Signal& signal = model_->signal_sources[static_cast<std::size_t>(i)];
+      state[i] = signal.source == Model::Signal::kSensor     ? data_->sensordata[signal.index]
+                 : signal.source == Model::Signal::kPosition ? data_->qpos[signal.index]
+                                                             : data_->qvel[signal.index];
+    }
     std::copy_n(data_->qpos, m->nq, state.data() + model_->qpos);
     std::copy_n(data_->qvel, m->nv, state.data() + model_->qvel);
     std::copy_n(data_->act, m->na, state.data() + model_->act);
@@ -302,9 +361,7 @@ MujocoPlant::MujocoPlant(std::string name, const MujocoParams& params, const Rob
                                               : std::numeric_limits<double>::quiet_NaN()),
       drawing_(params.model.empty() ? two_wheeler_drawing(robot) : PlantDrawing{}) {
   check_initial_pitch(initial_pitch);
-  for (int s = 0; s < model_->signals; ++s) {
-    signals_.push_back(name_of(model_->m, mjOBJ_SENSOR, s));
-  }
+  signals_ = model_->signal_names;
   const InputPort& torque = declare_input_port(
       "torque", kTorqueSize, "tau_l, tau_r: motor torques, N m, to mujoco.actuators");
   const InputPort* pushed = declare_disturbance_input(disturbance);
@@ -314,7 +371,7 @@ MujocoPlant::MujocoPlant(std::string name, const MujocoParams& params, const Rob
       [signal_count](const BlockContext& context, VectorRef y) {
         y = context.continuous_state().head(signal_count);
       },
-      {}, "the model's sensors, by name");
+      {}, "the model's sensors (or joints), by name");
   Scratch scratch(model_);
   scratch.rest(initial_pitch);
   Vector initial(model_->size);
@@ -387,11 +444,12 @@ void MujocoPlant::advance(BlockContext& context, double end_time, const InputPor
   const double start_time = context.time();
   scratch.sync(start_time, state);
   mjData* data = scratch.data();
-  if (model_->actuators.size() == 2) {
-    data->ctrl[model_->actuators[0]] = tau[kTauLeft];
-    data->ctrl[model_->actuators[1]] = tau[kTauRight];
+  const std::vector<Model::Drive>& drives = model_->drives;
+  if (drives.size() == 2) {
+    drives[0].apply(data, tau[kTauLeft]);
+    drives[1].apply(data, tau[kTauRight]);
   } else {
-    data->ctrl[model_->actuators[0]] = tau[kTauLeft] + tau[kTauRight];
+    drives[0].apply(data, tau[kTauLeft] + tau[kTauRight]);
   }
   if (disturbance != nullptr) {
     const ConstVectorView push = context.input(*disturbance);

@@ -27,7 +27,9 @@ namespace cbbg::plant {
 ///
 /// Signals: every sensor of the model must be one number (jointpos, jointvel, ...), and the
 /// names must include what the loop reads (plant/plant_signals.h): the two-wheeler's sensors
-/// are pitch, pitch_rate, wheel_left, ... yaw_rate.
+/// are pitch, pitch_rate, wheel_left, ... yaw_rate. A model with no sensor (a URDF file)
+/// gives each hinge or slide joint as two signals, NAME and NAME_rate; a joint named in
+/// mujoco.actuators takes its torque as a force between its body and the parent.
 /// Continuous state: the signals, then MuJoCo's qpos, qvel, act and its solver's warm start,
 /// so a context copied or restored mid-run continues as the original does (to rounding: MuJoCo
 /// keeps a few internals of its own) and every copy alike. Each context's

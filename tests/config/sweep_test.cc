@@ -114,8 +114,12 @@ TEST(SweepGrid, HostileValuesAreRefusedOrReadBackUnchanged) {
   auto angles = [](const std::string& got) {
     return "evaluation.angles must be a non-empty list of numbers; got " + got;
   };
-  auto kind = [](const std::string& got) {
-    return "plant.kind must be one of simbody, analytic; got " + got;
+  std::string kinds;  // simbody, analytic and the kinds this build has (mujoco)
+  for (const KeySpec& spec : schema()) {
+    if (spec.path == "plant.kind") kinds = join(spec.choices);
+  }
+  auto kind = [&kinds](const std::string& got) {
+    return "plant.kind must be one of " + kinds + "; got " + got;
   };
   // Each key's answer: "" where it takes the value, else its refusal after "--grid key=value: ".
   auto every = [&](const std::string& got) -> std::vector<std::string> {

@@ -10,6 +10,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -89,8 +90,9 @@ TEST(MujocoPlant, WhatAModelLacksIsRefusedNamingTheKeyAndTheModelsElements) {
   p.actuators = {"left_motor", "right_motr"};
   EXPECT_THAT([&] { MujocoPlant("plant", p, robot); },
               ThrowsMessage<std::invalid_argument>(
-                  "mujoco.actuators 'right_motr': model the two-wheeler has no actuator of that "
-                  "name (it has: left_motor, right_motor)"));
+                  "mujoco.actuators 'right_motr': model the two-wheeler has no actuator or hinge "
+                  "or slide joint of that name (it has actuators: left_motor, right_motor; "
+                  "joints: x, y, z, yaw, pitch, left_wheel, right_wheel)"));
   p = MujocoParams{};
   p.pitch_joint = "tilt";
   EXPECT_THAT([&] { MujocoPlant("plant", p, robot); },
@@ -203,6 +205,47 @@ TEST(MujocoPlant, TheWheelsRollWhileFrictionHoldsAndSlipOnIce) {
   MujocoParams icy;
   icy.model = edited_model(scratch.path() / "ice.xml", "friction=\"1 ", "friction=\"0.02 ");
   EXPECT_GT(slip(run_alone(icy, 0.0, 2.0, 0.3)), 0.05);
+}
+
+// A reaction-wheel pendulum as URDF, which has no sensors and no actuators: its joints are its
+// signals (NAME and NAME_rate), and a joint named in mujoco.actuators takes the torque between
+// its two links.
+constexpr const char* kPendulumUrdf = R"(<robot name="pendulum">
+  <link name="base"/>
+  <joint name="pitch" type="continuous">
+    <parent link="base"/><child link="rod"/><origin xyz="0 0 0.05"/><axis xyz="0 1 0"/>
+  </joint>
+  <link name="rod">
+    <inertial><origin xyz="0 0 0.15"/><mass value="0.5"/>
+      <inertia ixx="0.004" iyy="0.004" izz="0.0002" ixy="0" ixz="0" iyz="0"/></inertial>
+  </link>
+  <joint name="wheel" type="continuous">
+    <parent link="rod"/><child link="flywheel"/><origin xyz="0 0 0.3"/><axis xyz="0 1 0"/>
+  </joint>
+  <link name="flywheel">
+    <inertial><mass value="1"/>
+      <inertia ixx="0.01" iyy="0.02" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+  </link>
+</robot>
+)";
+
+TEST(MujocoPlant, AUrdfRobotsJointsAreItsSignalsAndItsDrives) {
+  const cbbg::testing::ScratchDirectory scratch;
+  MujocoParams p;
+  p.model = (scratch.path() / "pendulum.urdf").string();
+  std::ofstream(p.model) << kPendulumUrdf;
+  p.actuators = {"wheel"};
+  p.body = "rod";
+  const MujocoPlant plant("plant", p, RobotParams{});
+  EXPECT_EQ(plant.signals(),
+            (std::vector<std::string>{"pitch", "pitch_rate", "wheel", "wheel_rate"}));
+  // Let go at 0.1 rad with no torque, it falls; upright with the torques' sum (1 N m) on the
+  // flywheel, the flywheel spins one way and the rod turns the other.
+  const Eigen::MatrixXd falling = run_alone(p, 0.1, 0.0, 0.5);
+  EXPECT_GT(falling(0, falling.cols() - 1), 0.5);
+  const Eigen::MatrixXd driven = run_alone(p, 0.0, 0.5, 0.05);
+  EXPECT_GT(driven(3, driven.cols() - 1), 0.0);
+  EXPECT_LT(driven(1, driven.cols() - 1), 0.0);
 }
 
 }  // namespace
