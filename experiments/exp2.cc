@@ -45,7 +45,7 @@ void run_annealing(const parameters::Parameters& p, const diagrams::Arm& coordin
                    const LearntWeights* initial_weights, SeedRun& run) {
   const double theta0 = p.trial.theta0;
   const double duration = p.trial.duration;
-  const Exp2Params own = config::read_section<Exp2Params>(p.own, "");
+  const Exp2Params own = config::read_section<Exp2Params>(p.own, Exp2Params::kSection);
   const std::vector<config::AnnealingStep>& schedule = own.annealing;
   SeedLoop first(p, coordinated, telemetry, initial_weights, run.seed);
   set_k1(first.loop, first.runner.context(), annealed_k1(schedule, 1));
@@ -118,8 +118,8 @@ Protocol exp2_protocol() {
             return run_exp2(p, arms.front(), diagrams::named_arm("bg_only"), options);
           },
       .schema = exp2_schema,
-      .keys = config::declared_keys(Exp2Params{}, ""),
-      .keys_after = "push"};
+      .keys = config::declared_keys(Exp2Params{}, Exp2Params::kSection),
+      .keys_after = Exp2Params::kKeysAfter};
 }
 
 }  // namespace cbbg::experiments

@@ -21,6 +21,10 @@ struct Exp2Trials {
 
 // exp2's keys: the annealing schedule (a key of its own, before the exp2 section).
 struct Exp2Params {
+  // Keys of its own at the top level (annealing, exp2.*), in config.yaml after push.*.
+  static constexpr const char* kSection = "";
+  static constexpr const char* kKeysAfter = "push";
+
   std::vector<config::AnnealingStep> annealing{{1, 10}, {11, 5}, {16, 1}, {21, 0.5}, {23, 0.1}};
   Exp2Trials exp2;
 

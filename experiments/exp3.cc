@@ -12,7 +12,7 @@ namespace cbbg::experiments {
 namespace {
 
 std::vector<double> skill_angles(const parameters::Parameters& p) {
-  return config::read_section<Exp3Params>(p.own, "exp3").angles;
+  return config::read_section<Exp3Params>(p.own, Exp3Params::kSection).angles;
 }
 
 // The test after a trial: the weights learnt so far, frozen, with the actor alone, from each of
@@ -126,8 +126,8 @@ Protocol exp3_protocol() {
                 .plots = {"pitch", "failures", "skill"}};
           },
       .check = [](const parameters::Parameters& p, const LearntWeights*) { check_skill_angles(p); },
-      .keys = config::declared_keys(Exp3Params{}, "exp3"),
-      .keys_after = "evaluation"};
+      .keys = config::declared_keys(Exp3Params{}, Exp3Params::kSection),
+      .keys_after = Exp3Params::kKeysAfter};
 }
 
 }  // namespace cbbg::experiments

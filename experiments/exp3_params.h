@@ -10,6 +10,9 @@ namespace cbbg::experiments {
 
 // exp3.*: the angles of the skill test.
 struct Exp3Params {
+  static constexpr const char* kSection = "exp3";
+  static constexpr const char* kKeysAfter = "evaluation";  // its place in config.yaml
+
   std::vector<double> angles{0.05, 0.1744, 0.25};
 
   template <class Archive>

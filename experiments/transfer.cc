@@ -16,7 +16,7 @@ namespace cbbg::experiments {
 namespace {
 
 TransferParams transfer_params(const parameters::Parameters& p) {
-  return config::read_section<TransferParams>(p.own, "transfer");
+  return config::read_section<TransferParams>(p.own, TransferParams::kSection);
 }
 
 // What a condition may change: what the evaluation sees, never what is learnt or how.
@@ -176,8 +176,8 @@ Protocol transfer_protocol() {
       .schema = transfer_schema,
       .check = [](const parameters::Parameters& p,
                   const LearntWeights*) { check_transfer(p, diagrams::named_arms(p.run.arms)); },
-      .keys = config::declared_keys(TransferParams{}, "transfer"),
-      .keys_after = "exp3"};
+      .keys = config::declared_keys(TransferParams{}, TransferParams::kSection),
+      .keys_after = TransferParams::kKeysAfter};
 }
 
 }  // namespace cbbg::experiments

@@ -15,6 +15,9 @@ enum class TransferTraining { kUntilSkill, kUntilSuccess };
 
 // transfer.*: train once, evaluate under many conditions.
 struct TransferParams {
+  static constexpr const char* kSection = "transfer";
+  static constexpr const char* kKeysAfter = "exp3";  // its place in config.yaml
+
   TransferTraining training = TransferTraining::kUntilSkill;
   std::vector<std::string> conditions{
       "evaluation.body_mass_scale=1", "evaluation.body_mass_scale=1.3",

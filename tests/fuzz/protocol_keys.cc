@@ -11,11 +11,16 @@
 namespace cbbg::fuzz {
 namespace {
 
+template <class Params>
+void register_like_its_protocol() {
+  config::register_keys(config::declared_keys(Params{}, Params::kSection), Params::kKeysAfter);
+}
+
 bool register_protocol_keys() {
   using namespace cbbg::experiments;
-  config::register_keys(config::declared_keys(Exp2Params{}, ""), "push");
-  config::register_keys(config::declared_keys(Exp3Params{}, "exp3"), "evaluation");
-  config::register_keys(config::declared_keys(TransferParams{}, "transfer"), "exp3");
+  register_like_its_protocol<Exp2Params>();
+  register_like_its_protocol<Exp3Params>();
+  register_like_its_protocol<TransferParams>();
   return true;
 }
 
