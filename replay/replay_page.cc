@@ -1,7 +1,10 @@
 #include "cbbg/replay/replay_page.h"
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <vector>
 
 #include "cbbg/config/config.h"
 #include "cbbg/diagrams/plant_kinds.h"
@@ -76,6 +79,86 @@ std::string trial_json(const TrialLog& log) {
   return json + "}";
 }
 
+template <std::size_t N>
+std::string json_numbers(const std::array<double, N>& values) {
+  std::string json = "[";
+  for (std::size_t i = 0; i < N; ++i) {
+    if (i > 0) json += ',';
+    json += format_number(values[i]);
+  }
+  return json + "]";
+}
+
+// A JSON array of `items`, each written by `to_json`.
+template <class Item, class ToJson>
+std::string json_array(const std::vector<Item>& items, ToJson to_json) {
+  std::string json = "[";
+  for (const Item& item : items) {
+    if (json.size() > 1) json += ',';
+    json += to_json(item);
+  }
+  return json + "]";
+}
+
+// The page's column (TrialLog::kColumnNames) that a plant signal is logged in, or null for
+// a signal steps.csv does not keep: its joint is drawn at rest.
+std::string column_of(const std::string& signal) {
+  static const std::map<std::string, std::string> columns = {{"pitch", "theta_b"},
+                                                             {"wheel_left", "phi_l"},
+                                                             {"wheel_right", "phi_r"},
+                                                             {"wheel", "phi_l"},
+                                                             {"x", "x"},
+                                                             {"y", "y"},
+                                                             {"yaw", "yaw"}};
+  const auto found = columns.find(signal);
+  return found == columns.end() ? "null" : json_string(found->second);
+}
+
+std::string joint_json(const plant::DrawnJoint& joint) {
+  std::string json = "{";
+  append_member(json, "kind",
+                json_string(joint.kind == plant::DrawnJoint::Kind::kHinge ? "hinge" : "slide"));
+  append_member(json, "axis", json_numbers(joint.axis));
+  append_member(json, "anchor", json_numbers(joint.anchor));
+  append_member(json, "column", column_of(joint.signal));
+  append_member(json, "rest", format_number(joint.rest));
+  return json + "}";
+}
+
+std::string body_json(const plant::DrawnBody& body) {
+  std::string json = "{";
+  append_member(json, "parent", std::to_string(body.parent));
+  append_member(json, "position", json_numbers(body.position));
+  append_member(json, "orientation", json_numbers(body.orientation));
+  append_member(json, "joints", json_array(body.joints, joint_json));
+  return json + "}";
+}
+
+std::string shape_json(const plant::DrawnShape& shape) {
+  static const std::map<plant::DrawnShape::Kind, const char*> kinds = {
+      {plant::DrawnShape::Kind::kBox, "box"},
+      {plant::DrawnShape::Kind::kSphere, "sphere"},
+      {plant::DrawnShape::Kind::kCapsule, "capsule"},
+      {plant::DrawnShape::Kind::kCylinder, "cylinder"},
+      {plant::DrawnShape::Kind::kEllipsoid, "ellipsoid"}};
+  std::string json = "{";
+  append_member(json, "kind", json_string(kinds.at(shape.kind)));
+  append_member(json, "body", std::to_string(shape.body));
+  append_member(json, "size", json_numbers(shape.size));
+  append_member(json, "position", json_numbers(shape.position));
+  append_member(json, "orientation", json_numbers(shape.orientation));
+  append_member(json, "colour", json_numbers(shape.colour));
+  return json + "}";
+}
+
+// A model's own drawing: {"bodies": [...], "shapes": [...]}.
+std::string model_json(const plant::ModelDrawing& model) {
+  std::string json = "{";
+  append_member(json, "bodies", json_array(model.bodies, body_json));
+  append_member(json, "shapes", json_array(model.shapes, shape_json));
+  return json + "}";
+}
+
 std::string robot_json(const ReplayRobot& robot) {
   const plant::PlantDrawing& drawing = robot.drawing;
   std::string json = "{";
@@ -89,6 +172,7 @@ std::string robot_json(const ReplayRobot& robot) {
   append_member(json, "com_height", format_number(drawing.com_height));
   append_member(json, "failure_angle", format_number(robot.failure_angle));
   append_member(json, "torque_limit", format_number(robot.torque_limit));
+  if (!drawing.model.empty()) append_member(json, "model", model_json(drawing.model));
   return json + "}";
 }
 

@@ -7,7 +7,7 @@
 #   - exp3: trials until the actor alone balances (the skill).
 # Then ablation_report.py's table, each variant paired with the paper's learner seed by seed.
 #
-#   scripts/ablation_study.sh --out DIR [--plant analytic|simbody] [--seeds N] [--jobs J]
+#   scripts/ablation_study.sh --out DIR [--plant analytic|simbody|mujoco] [--seeds N] [--jobs J]
 #                             [--variants paper,gaussian_exploration,...,path/to/mine.yaml]
 #
 # A variant is a config of configs/ by name, or a user's own YAML config by path (named
@@ -26,7 +26,7 @@ study=ablation_study.sh
 # The variants by name: paper, and the configs of configs/ (installed beside this script).
 all_variants="paper,gaussian_exploration,annealed_gaussian_exploration,ou_exploration"
 all_variants+=",quadratic_reward,td0_critic,fixed_temperature"
-usage() { echo "$study: $1 (usage: --out DIR [--plant analytic|simbody] [--seeds N] [--jobs J] [--variants A,B,...])" >&2; exit 2; }
+usage() { echo "$study: $1 (usage: --out DIR [--plant analytic|simbody|mujoco] [--seeds N] [--jobs J] [--variants A,B,...])" >&2; exit 2; }
 # shellcheck source=study_kit.sh
 source "$here/study_kit.sh"
 study_variant_options "$@"

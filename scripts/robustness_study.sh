@@ -5,7 +5,7 @@
 # perturbation's values (transfer.conditions); then the table and the figure of
 # robustness_report.py.
 #
-#   scripts/robustness_study.sh --out DIR [--plant analytic|simbody] [--seeds N] [--jobs J]
+#   scripts/robustness_study.sh --out DIR [--plant analytic|simbody|mujoco] [--seeds N] [--jobs J]
 #
 # DIR/transfer/ is the run's results directory, DIR/robustness.md the table and
 # DIR/robustness.png the figure. Run again after a kill, it resumes: an interrupted run
@@ -18,7 +18,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 study=robustness_study.sh
 plant=analytic seeds=20 jobs="$(nproc)" out=""
-usage() { echo "$study: $1 (usage: --out DIR [--plant analytic|simbody] [--seeds N] [--jobs J])" >&2; exit 2; }
+usage() { echo "$study: $1 (usage: --out DIR [--plant analytic|simbody|mujoco] [--seeds N] [--jobs J])" >&2; exit 2; }
 while [[ $# -gt 0 ]]; do
   [[ $# -ge 2 ]] || usage "$1 needs a value"
   case "$1" in

@@ -25,8 +25,8 @@
 
 study_check_options() {
   [[ -n "$out" ]] || usage "--out DIR is required"
-  [[ "$plant" == analytic || "$plant" == simbody ]] ||
-    usage "--plant must be analytic or simbody; got '$plant'"
+  [[ "$plant" == analytic || "$plant" == simbody || "$plant" == mujoco ]] ||
+    usage "--plant must be analytic, simbody or mujoco; got '$plant'"
   # cbbg's own limits (config `seeds`, --jobs), checked here so that a refusal leaves nothing.
   in_range() { [[ "$1" =~ ^[1-9][0-9]{0,5}$ ]] && (( $1 <= $2 )); }
   in_range "$seeds" 10000 || usage "--seeds must be a whole number from 1 to 10000; got '$seeds'"

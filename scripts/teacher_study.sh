@@ -7,7 +7,7 @@
 #   - exp2: the late trials' drift speed and pitch RMS.
 # Then teacher_report.py's table, each variant paired with the paper's learner seed by seed.
 #
-#   scripts/teacher_study.sh --out DIR [--plant analytic|simbody] [--seeds N] [--jobs J]
+#   scripts/teacher_study.sh --out DIR [--plant analytic|simbody|mujoco] [--seeds N] [--jobs J]
 #                            [--variants paper,wheel_rate_features,...,path/to/mine.yaml]
 #
 # A variant is a config of configs/ by name, or a user's own YAML config by path (named
@@ -24,7 +24,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 study=teacher_study.sh
 # The variants by name: paper, and the configs of configs/ (installed beside this script).
 all_variants="paper,wheel_rate_features,wheel_features,wide_pitch,wheel_rate_reward,outgrow"
-usage() { echo "$study: $1 (usage: --out DIR [--plant analytic|simbody] [--seeds N] [--jobs J] [--variants A,B,...])" >&2; exit 2; }
+usage() { echo "$study: $1 (usage: --out DIR [--plant analytic|simbody|mujoco] [--seeds N] [--jobs J] [--variants A,B,...])" >&2; exit 2; }
 # shellcheck source=study_kit.sh
 source "$here/study_kit.sh"
 study_variant_options "$@"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A user's robot with no C++: the reaction-wheel pendulum of examples/mujoco/ (an MJCF model
 # and a YAML that maps it), copied elsewhere, through every command that runs a plant: exp1,
-# exp3, transfer, eval of saved weights, a sweep in two shards and its merge, plot and replay.
+# exp3, transfer, eval of saved weights, a sweep in two shards and its merge, plot and replay
+# (the model drawn from its own shapes); and a MuJoCo error while stepping.
 #   test_mujoco_robot.sh CBBG SCRATCH_DIR
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -46,7 +47,19 @@ done
 "$cbbg" plot exp1 >/dev/null || fail "plot failed"
 "$cbbg" replay exp1 --out replay.html >/dev/null
 grep -q 'cbbg-replay-data' replay.html || fail "the replay page holds no trials"
+grep -q '"model":{"bodies"' replay.html || fail "the replay page does not draw the model's shapes"
+
+# MuJoCo's own errors while stepping (here a two-wheeler whose <size> leaves its solver too
+# little memory) end the run in one line of cbbg's, exit 1, and the run can be resumed.
+sed 's/nstack="100000"/nstack="200"/' "$root/plant/mujoco/two_wheeler.xml" >../robot/cramped.xml
+status=0
+"$cbbg" run --set plant.kind=mujoco --set mujoco.model=../robot/cramped.xml --seeds 1 \
+  --no-figures --out cramped >/dev/null 2>cramped.err || status=$?
+[ "$status" = 1 ] || fail "a MuJoCo error while stepping exits $status, not 1"
+[ "$(wc -l <cramped.err)" = 1 ] && grep -q '^cbbg: MuJoCo stopped the run: Stack overflow' cramped.err ||
+  fail "a MuJoCo error while stepping says: $(cat cramped.err)"
+[ -d cramped.partial ] || fail "the stopped run left nothing to resume"
 
 # MuJoCo's own log file would land in the working directory: the plant keeps it quiet.
 [ ! -e MUJOCO_LOG.TXT ] || fail "MuJoCo wrote MUJOCO_LOG.TXT"
-echo "mujoco robot: exp1, exp3, transfer, eval, a sharded sweep, plot and replay ran"
+echo "mujoco robot: exp1, exp3, transfer, eval, a sharded sweep, plot and replay ran; a MuJoCo error stopped a run in one line"

@@ -37,7 +37,7 @@ struct MujocoParams {
   void describe(Archive& a) {
     a.file("model", model,
            "an MJCF or URDF file; empty: the two-wheeler of plant.* (MJCF written by the plant)");
-    a.number("timestep", timestep, "MuJoCo's step, s; 0: the model's (the two-wheeler's: 0.002)",
+    a.number("timestep", timestep, "MuJoCo's step, s; 0: the model's (the two-wheeler's: 0.005)",
              interval(0.0, 0.01));
     a.choice("integrator", integrator, "model (the file's own) | euler | rk4 | implicit",
              Choices<MujocoIntegrator>{{"model", MujocoIntegrator::kModel},

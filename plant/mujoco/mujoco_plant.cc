@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <initializer_list>
 #include <limits>
@@ -15,6 +17,7 @@
 #include "cbbg/framework/diagram.h"
 #include "cbbg/framework/number_text.h"
 #include "cbbg/framework/simulator.h"
+#include "cbbg/plant/mujoco/model_drawing.h"
 #include "cbbg/plant/mujoco/two_wheeler_mjcf.h"
 #include "cbbg/plant/plant_ports.h"
 #include "cbbg/plant/plant_state.h"
@@ -25,6 +28,19 @@ namespace {
 // MuJoCo's default warning handler writes MUJOCO_LOG.TXT into the working directory: a file
 // this program did not ask for. Its warnings are read from mjData's counters instead.
 void quiet_warning(const char*) {}
+
+// MuJoCo's default error handler writes MUJOCO_LOG.TXT and exits. Its errors while stepping
+// (a model whose <size> leaves its solver too little memory) cannot be turned into an
+// exception through its C frames, so this one says so in one line and ends the process as a
+// kill would: every finished task is kept, and the run resumes.
+[[noreturn]] void fatal_error(const char* message) {
+  std::fprintf(stderr,
+               "cbbg: MuJoCo stopped the run: %s (for a model file, its <size> may be too "
+               "small; the finished seeds are kept, and cbbg run --resume continues the run)\n",
+               message);
+  std::fflush(stderr);
+  std::_Exit(1);
+}
 
 // The name the built-in two-wheeler has in MuJoCo's virtual file system.
 constexpr const char* kTwoWheelerFile = "two_wheeler.xml";
@@ -52,8 +68,9 @@ mjModel* load_two_wheeler(const RobotParams& robot, char* error, int error_size)
 
 mjModel* load(const MujocoParams& p, const RobotParams& robot) {
   static std::once_flag quieted;  // plants may be made on several threads at once
-  std::call_once(quieted, [] {
-    if (mju_user_warning == nullptr) mju_user_warning = quiet_warning;  // unless the user's own
+  std::call_once(quieted, [] {    // unless the user set handlers of their own
+    if (mju_user_warning == nullptr) mju_user_warning = quiet_warning;
+    if (mju_user_error == nullptr) mju_user_error = fatal_error;
   });
   char error[1024] = "";
   if (p.model.empty()) {
@@ -123,8 +140,12 @@ struct MujocoPlant::Model {
   std::vector<Drive> drives;
   std::vector<std::string> signal_names;
   std::vector<Signal> signal_sources;
+  int pitch_joint = -1;
   int pitch_qpos = -1;
   bool sensors_need_acceleration = false;  // an accelerometer, a force or touch sensor
+  // Whether a step can be split in MuJoCo's two halves (mj_step2, then mj_step1 at the new
+  // state, which gives the sensors): not with Runge-Kutta, nor for sensors of accelerations.
+  bool split_steps = false;
   int body = -1;  // -1: the model has no mujoco.body, and nothing asked for it
   // The continuous state's layout: signals, qpos, qvel, act, warm start.
   int signals = 0;
@@ -150,6 +171,7 @@ MujocoPlant::Model::Model(const MujocoParams& p, const RobotParams& robot, bool 
       throw std::invalid_argument("mujoco.pitch_joint '" + p.pitch_joint + "' of model " + source +
                                   " is no hinge or slide joint");
     }
+    pitch_joint = pitch;
     pitch_qpos = m->jnt_qposadr[pitch];
     const bool changed = p.body_mass_scale != 1.0 || p.com_height_scale != 1.0;
     body = pushed || changed ? id(mjOBJ_BODY, p.body, "mujoco.body", "body")
@@ -167,6 +189,7 @@ MujocoPlant::Model::Model(const MujocoParams& p, const RobotParams& robot, bool 
   for (int s = 0; s < m->nsensor; ++s) {
     sensors_need_acceleration |= m->sensor_needstage[s] == mjSTAGE_ACC;
   }
+  split_steps = !sensors_need_acceleration && m->opt.integrator != mjINT_RK4;
   signals = static_cast<int>(signal_names.size());
   qpos = signals;
   qvel = qpos + m->nq;
@@ -290,14 +313,14 @@ class MujocoPlant::Scratch final : public BlockScratch {
   void step_through(double duration) {
     const double step = model_->m->opt.timestep;
     const auto whole = static_cast<long long>(std::floor(duration / step + 1e-9));
-    for (long long i = 0; i < whole; ++i) mj_step(own_, data_);
+    for (long long i = 0; i < whole; ++i) one_step();
     const double rest = duration - static_cast<double>(whole) * step;
     if (rest > 1e-9 * step) {
       own_->opt.timestep = rest;
-      mj_step(own_, data_);
+      one_step();
       own_->opt.timestep = step;
     }
-    compute_signals();
+    if (!model_->split_steps) compute_signals();
   }
 
   // The data's state in the layout of the continuous state.
@@ -332,18 +355,33 @@ class MujocoPlant::Scratch final : public BlockScratch {
     compute_signals();  // and the body frames a push is applied in
   }
 
+  // One step of MuJoCo. Split, the data holds its position and velocity stages (mj_step1,
+  // which computes the sensors) at its state between steps, and the inputs, which only the
+  // second half reads, may change there: a step is that half (mj_step2) and mj_step1 at the
+  // new state, the same numbers as mj_step's with no pass of the sensors' own after it.
+  void one_step() {
+    if (model_->split_steps) {
+      mj_step2(own_, data_);
+      mj_step1(own_, data_);
+    } else {
+      mj_step(own_, data_);
+    }
+  }
+
   // The sensors (and the body frames) at the data's state: only as far as they need, for a
   // model's joint sensors not the contact forces and accelerations MuJoCo's next step
   // computes anew (a whole mj_forward costs about a step).
   void compute_signals() {
     if (model_->sensors_need_acceleration) {
       mj_forward(own_, data_);
-      return;
+    } else if (model_->split_steps) {
+      mj_step1(own_, data_);
+    } else {
+      mj_fwdPosition(own_, data_);
+      mj_sensorPos(own_, data_);
+      mj_fwdVelocity(own_, data_);
+      mj_sensorVel(own_, data_);
     }
-    mj_fwdPosition(own_, data_);
-    mj_sensorPos(own_, data_);
-    mj_fwdVelocity(own_, data_);
-    mj_sensorVel(own_, data_);
   }
 
   std::shared_ptr<const Model> model_;
@@ -360,6 +398,9 @@ MujocoPlant::MujocoPlant(std::string name, const MujocoParams& params, const Rob
                     : params.model.empty()    ? robot.wheel_radius
                                               : std::numeric_limits<double>::quiet_NaN()),
       drawing_(params.model.empty() ? two_wheeler_drawing(robot) : PlantDrawing{}) {
+  // A model file's robot is drawn from its own shapes; the built-in two-wheeler as the other
+  // plants' two-wheeler is.
+  if (!params.model.empty()) drawing_.model = model_drawing(model_->m, model_->pitch_joint);
   check_initial_pitch(initial_pitch);
   signals_ = model_->signal_names;
   const InputPort& torque = declare_input_port(

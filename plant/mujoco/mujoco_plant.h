@@ -36,6 +36,8 @@ namespace cbbg::plant {
 /// scratch holds its own mjData on the plant's one mjModel (read only while running).
 /// Between the simulator's instants the plant takes (end - start) / timestep steps of MuJoCo
 /// with the inputs held, then computes the sensors at the end.
+/// Drawing (the replay page's): a model file's own shapes (model_drawing.h); the built-in
+/// two-wheeler is drawn as the other plants' two-wheeler is.
 /// Errors: the constructor throws std::invalid_argument naming the mujoco.* key and the
 /// model's element it misses; a non-finite input or state, or MuJoCo resetting a diverged
 /// simulation, throws SimulationError naming the block.

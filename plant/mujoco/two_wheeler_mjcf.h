@@ -8,8 +8,9 @@
 // wheel's joint angle is its absolute angle. The motors are fixed tendons wheel - pitch (torque
 // +tau on the wheel, -tau on the body), saturated by their ctrlrange; the tendons' damping is
 // the axle friction, the wheel joints' damping the wheel-ground viscous friction. The wheels
-// are cylinders in contact with a plane (sliding friction 1): they roll while the friction
-// holds and slip where it does not. Roll is not a joint: both wheels stay on the ground.
+// touch a plane (sliding friction 1) as spheres of their radius, drawn as cylinders: they roll
+// while the friction holds and slip where it does not. Roll is not a joint: both wheels stay
+// on the ground, and a sphere touches it where the rim would.
 // Sensors carry the loop's signal names (plant/plant_signals.h).
 
 #include <string>
@@ -18,7 +19,7 @@
 
 namespace cbbg::plant {
 
-// The MJCF text of the two-wheeler of `robot`: MuJoCo's step 2 ms, Euler.
+// The MJCF text of the two-wheeler of `robot`: MuJoCo's step 5 ms, Euler.
 std::string two_wheeler_mjcf(const RobotParams& robot);
 
 }  // namespace cbbg::plant

@@ -71,7 +71,7 @@ TEST(MujocoPlant, ItsSignalsAreTheModelsSensorsByName) {
   EXPECT_EQ(plant.signals(), two_wheeler_signals());
   EXPECT_EQ(plant.state_output().size(), 10);
   EXPECT_EQ(plant.wheel_radius(), RobotParams{}.wheel_radius);
-  EXPECT_EQ(plant.timestep(), 0.002);
+  EXPECT_EQ(plant.timestep(), 0.005);
 }
 
 TEST(MujocoPlant, TheShippedFileLoadsToTheSameRobotAsTheBuiltInModel) {
@@ -159,8 +159,9 @@ TEST(MujocoPlant, APushAgreesWithTheAnalyticPlants) {
     logs[i++] = log.values();
   }
   EXPECT_GT(logs[1](kX, 300), 0.3);  // pushed forward, it drives forward to stay up
-  EXPECT_LT((logs[0].row(kThetaB) - logs[1].row(kThetaB)).cwiseAbs().maxCoeff(), 1e-3);
-  EXPECT_LT((logs[0].row(kX) - logs[1].row(kX)).cwiseAbs().maxCoeff(), 5e-3);
+  // Within the agreement test's tolerances (mujoco_agreement_test.cc; measured 1.1e-3 rad).
+  EXPECT_LT((logs[0].row(kThetaB) - logs[1].row(kThetaB)).cwiseAbs().maxCoeff(), 2.5e-3);
+  EXPECT_LT((logs[0].row(kX) - logs[1].row(kX)).cwiseAbs().maxCoeff(), 8e-3);
 }
 
 // On a model file, evaluation.body_mass_scale reaches the body as mujoco.body_mass_scale: the
@@ -193,15 +194,15 @@ TEST(MujocoPlant, AModelFilesBodyScalesAsPlantParametersDo) {
 }
 
 // The no-slip plants' assumption holds while the ground's friction can carry the wheels'
-// force: full torque on ground of friction 1 rolls (x = R phi to a millimetre), on ice
-// (friction 0.02) the wheels spin.
+// force: full torque on ground of friction 1 rolls (x = R phi to 3 mm; measured 1.5 mm over
+// 0.3 s, the soft contact's creep), on ice (friction 0.02) the wheels spin.
 TEST(MujocoPlant, TheWheelsRollWhileFrictionHoldsAndSlipOnIce) {
   const cbbg::testing::ScratchDirectory scratch;
   auto slip = [](const Eigen::MatrixXd& log) {
     const double radius = RobotParams{}.wheel_radius;
     return std::abs(radius * log(kPhiLeft, log.cols() - 1) - log(kX, log.cols() - 1));
   };
-  EXPECT_LT(slip(run_alone(MujocoParams{}, 0.0, 2.0, 0.3)), 1e-3);
+  EXPECT_LT(slip(run_alone(MujocoParams{}, 0.0, 2.0, 0.3)), 3e-3);
   MujocoParams icy;
   icy.model = edited_model(scratch.path() / "ice.xml", "friction=\"1 ", "friction=\"0.02 ");
   EXPECT_GT(slip(run_alone(icy, 0.0, 2.0, 0.3)), 0.05);
@@ -246,6 +247,78 @@ TEST(MujocoPlant, AUrdfRobotsJointsAreItsSignalsAndItsDrives) {
   const Eigen::MatrixXd driven = run_alone(p, 0.0, 0.5, 0.05);
   EXPECT_GT(driven(3, driven.cols() - 1), 0.0);
   EXPECT_LT(driven(1, driven.cols() - 1), 0.0);
+}
+
+// The drawing of the robot of model text `text`, written to `file`, whose rod is its body and
+// `actuator` its drive.
+ModelDrawing drawing_of(const std::filesystem::path& file, const std::string& text,
+                        const std::string& actuator) {
+  std::ofstream(file) << text;
+  MujocoParams p;
+  p.model = file.string();
+  p.actuators = {actuator};
+  p.body = "rod";
+  return MujocoPlant("plant", p, RobotParams{}).drawing().model;
+}
+
+// The replay draws a model file's own shapes: the reaction wheel's rod (a capsule) turning with
+// the pitch, and its flywheel (a cylinder) on the rod turning with the wheel; the floor (a
+// plane) and a collision-only shape (group 3) are not drawn.
+TEST(MujocoPlant, AModelFilesDrawingIsItsBodiesAndShapesMovedByTheLoggedJoints) {
+  const cbbg::testing::ScratchDirectory scratch;
+  std::string text =
+      read(std::filesystem::path(CBBG_SOURCE_DIR) / "examples" / "mujoco" / "reaction_wheel.xml");
+  const std::string flywheel_body = "<body name=\"flywheel\" pos=\"0 0 0.3\">";
+  ASSERT_NE(text.find(flywheel_body), std::string::npos);
+  text.insert(text.find(flywheel_body) + flywheel_body.size(),
+              "<geom type=\"sphere\" size=\"0.3\" group=\"3\"/>");
+  const ModelDrawing drawing = drawing_of(scratch.path() / "reaction_wheel.xml", text, "motor");
+
+  ASSERT_EQ(drawing.bodies.size(), 2u);
+  const DrawnBody& rod = drawing.bodies[0];
+  const DrawnBody& flywheel = drawing.bodies[1];
+  EXPECT_EQ(rod.parent, -1);
+  EXPECT_EQ(flywheel.parent, 0);
+  EXPECT_EQ(rod.position, (std::array<double, 3>{0.0, 0.0, 0.05}));
+  EXPECT_EQ(flywheel.position, (std::array<double, 3>{0.0, 0.0, 0.3}));
+  ASSERT_EQ(rod.joints.size(), 1u);
+  ASSERT_EQ(flywheel.joints.size(), 1u);
+  EXPECT_EQ(rod.joints[0].signal, "pitch");
+  EXPECT_EQ(flywheel.joints[0].signal, "wheel");
+  EXPECT_EQ(rod.joints[0].kind, DrawnJoint::Kind::kHinge);
+  EXPECT_EQ(rod.joints[0].axis, (std::array<double, 3>{0.0, 1.0, 0.0}));
+
+  ASSERT_EQ(drawing.shapes.size(), 2u);
+  EXPECT_EQ(drawing.shapes[0].kind, DrawnShape::Kind::kCapsule);
+  EXPECT_EQ(drawing.shapes[0].body, 0);
+  EXPECT_DOUBLE_EQ(drawing.shapes[0].size[0], 0.015);
+  EXPECT_DOUBLE_EQ(drawing.shapes[0].size[1], 0.15);  // half of the rod's 0.3 m
+  EXPECT_EQ(drawing.shapes[1].kind, DrawnShape::Kind::kCylinder);
+  EXPECT_EQ(drawing.shapes[1].body, 1);
+  EXPECT_DOUBLE_EQ(drawing.shapes[1].size[0], 0.2);
+
+  // The built-in two-wheeler is drawn as the other plants' two-wheeler.
+  EXPECT_TRUE(MujocoPlant("plant", MujocoParams{}, RobotParams{}).drawing().model.empty());
+}
+
+// In a model without sensors (a URDF file), a joint moves with the signal of its own name; a
+// link's collision shape is drawn.
+TEST(MujocoPlant, AUrdfRobotsJointsAreDrawnMovingWithTheirOwnSignals) {
+  const cbbg::testing::ScratchDirectory scratch;
+  std::string urdf = kPendulumUrdf;
+  const std::string flywheel = "<link name=\"flywheel\">";
+  urdf.insert(urdf.find(flywheel) + flywheel.size(),
+              "<collision><geometry><cylinder radius=\"0.2\" length=\"0.02\"/></geometry>"
+              "</collision>");
+  const ModelDrawing drawing = drawing_of(scratch.path() / "pendulum.urdf", urdf, "wheel");
+  std::vector<std::string> signals;
+  for (const DrawnBody& body : drawing.bodies) {
+    for (const DrawnJoint& joint : body.joints) signals.push_back(joint.signal);
+  }
+  EXPECT_EQ(signals, (std::vector<std::string>{"pitch", "wheel"}));
+  ASSERT_EQ(drawing.shapes.size(), 1u);
+  EXPECT_EQ(drawing.shapes[0].kind, DrawnShape::Kind::kCylinder);
+  EXPECT_EQ(drawing.shapes[0].body, 1);
 }
 
 }  // namespace

@@ -3,8 +3,9 @@
 // look different; the pitch the page shows at a logged time is the log's. In a Chromium
 // without WebGL the page says so in one line and keeps its plots, readouts and trial list.
 // A diverged trial's page (null torques from a tick on, null pitches for a while) shows
-// "—" and gaps there and plays on past them.
-//   node tests/replay/replay_in_chromium.mjs BUILD_DIR
+// "—" and gaps there and plays on past them. With --mujoco, a robot from its model file (the
+// reaction-wheel example) is drawn from the model's own shapes, moving as its log says.
+//   node tests/replay/replay_in_chromium.mjs BUILD_DIR [--mujoco]
 // It starts each browser itself and stops it by its pid, whatever happens (withChromium).
 import { execFileSync } from "node:child_process";
 import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
@@ -16,6 +17,7 @@ import { withChromium, WITHOUT_WEBGL } from "../../replay/page/chromium.mjs";
 const root = resolve(dirname(fileURLToPath(import.meta.url)), "..", "..");
 
 const build = resolve(process.argv[2] || join(root, "build"));
+const withMujoco = process.argv[3] === "--mujoco";
 const cbbg = join(build, "apps", "cbbg");
 const scratch = mkdtempSync(join(tmpdir(), "cbbg-replay-"));
 const failures = [];
@@ -163,10 +165,13 @@ async function playsTo(page, from, to) {
     .then(() => true, () => false);
 }
 
-// Opens `file` at trial `trial` (from 1), checks it, and returns the two screenshots' difference.
-async function checkReplay(browser, file, label, trial, log) {
+// Opens `file` at trial `trial` (from 1), checks it (a model's drawing: that it draws `shapes`
+// of the model's shapes), and returns the two screenshots' difference.
+async function checkReplay(browser, file, label, trial, log, shapes = 0) {
   const { page, problems } = await openPage(browser, file, `pause&trial=${trial}`);
   check(await page.isHidden("#no-webgl"), `${label}: the page says it has no WebGL in a browser that has it`);
+  const drawn = (await page.evaluate(() => window.cbbgReplay.state())).shapes;
+  check(drawn === shapes, `${label}: the scene draws ${drawn} of a model's shapes; ${shapes} expected`);
   await checkLoggedPitch(page, label, log);
 
   const view = page.locator("#scene");
@@ -263,6 +268,17 @@ try {
     await attempt("diverged trial", () => checkDiverged(browser, divergedPage, "diverged trial",
                                                         exp2Log, diverged, hole, holeEnd)),
   ]);
+  if (withMujoco) {
+    // The reaction wheel's rod (a capsule) and flywheel (a cylinder); its floor is not drawn.
+    const examples = join(root, "examples", "mujoco");
+    run(["run", "--config", join(examples, "reaction_wheel.yaml"), "--seeds", "1", "--no-figures",
+         "--out", join(scratch, "reaction_wheel")]);
+    const modelPage = join(scratch, "reaction_wheel.html");
+    run(["replay", join(scratch, "reaction_wheel"), "--arm", "bg_only", "-o", modelPage]);
+    const modelLog = logged(join(scratch, "reaction_wheel"), "bg_only", 1, 1);
+    await withChromium((browser) => attempt("reaction wheel", () =>
+      checkReplay(browser, modelPage, "reaction wheel bg_only", 1, modelLog, 2)));
+  }
   await withChromium(async (browser) => {
     await attempt("exp1 bg_only, without WebGL",
                   () => checkWithoutWebgl(browser, exp1Page, "exp1 bg_only", 1, exp1Log));

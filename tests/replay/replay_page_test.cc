@@ -52,6 +52,42 @@ TEST(ReplayPage, WritesTheTrialsInPlaceOfTheDataMarker) {
                               "\"x\":[0,1e-07],\"y\":[0,0],\"yaw\":[0,0.5],\"a\":[8.72,null]}]}"));
 }
 
+// A plant's model drawing (a MuJoCo plant's, or a user's) goes to the page with each joint's
+// signal turned into the page's column: the pitch is theta_b, one wheel phi_l, a signal
+// steps.csv does not keep is null (its joint stays at rest).
+TEST(ReplayPage, AModelDrawingCarriesItsBodiesShapesAndTheColumnsItsJointsFollow) {
+  ReplayRobot robot;
+  plant::DrawnBody rod;
+  rod.joints = {{plant::DrawnJoint::Kind::kHinge, {0, 1, 0}, {0, 0, 0.1}, "pitch", 0.0}};
+  plant::DrawnBody flywheel;
+  flywheel.parent = 0;
+  flywheel.position = {0, 0, 0.3};
+  flywheel.joints = {{plant::DrawnJoint::Kind::kHinge, {0, 1, 0}, {0, 0, 0}, "wheel", 0.0},
+                     {plant::DrawnJoint::Kind::kSlide, {1, 0, 0}, {0, 0, 0}, "extension", 0.5}};
+  plant::DrawnShape disc;
+  disc.kind = plant::DrawnShape::Kind::kCylinder;
+  disc.body = 1;
+  disc.size = {0.2, 0.01, 0};
+  robot.drawing.model = {{rod, flywheel}, {disc}};
+  const std::string page = replay_page(kTemplate, "exp1", robot, {one_tick("cbbg")});
+  EXPECT_THAT(
+      page,
+      HasSubstr("\"torque_limit\":5,\"model\":{\"bodies\":["
+                "{\"parent\":-1,\"position\":[0,0,0],\"orientation\":[1,0,0,0],\"joints\":["
+                "{\"kind\":\"hinge\",\"axis\":[0,1,0],\"anchor\":[0,0,0.1],\"column\":\"theta_b\","
+                "\"rest\":0}]},"
+                "{\"parent\":0,\"position\":[0,0,0.3],\"orientation\":[1,0,0,0],\"joints\":["
+                "{\"kind\":\"hinge\",\"axis\":[0,1,0],\"anchor\":[0,0,0],\"column\":\"phi_l\","
+                "\"rest\":0},"
+                "{\"kind\":\"slide\",\"axis\":[1,0,0],\"anchor\":[0,0,0],\"column\":null,\"rest\":"
+                "0.5}]}],"
+                "\"shapes\":[{\"kind\":\"cylinder\",\"body\":1,\"size\":[0.2,0.01,0],"
+                "\"position\":[0,0,0],\"orientation\":[1,0,0,0],\"colour\":[0.5,0.5,0.5,1]}]}},"));
+  // A plant without a model drawing sends none.
+  EXPECT_THAT(replay_page(kTemplate, "exp1", ReplayRobot{}, {one_tick("cbbg")}),
+              ::testing::Not(HasSubstr("\"model\"")));
+}
+
 TEST(ReplayPage, ALongTrialIsShownEveryNthTickAndItsLast) {
   TrialLog log;
   log.entry = {"cbbg", 1, 1, "success"};

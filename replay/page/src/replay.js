@@ -201,6 +201,8 @@ window.cbbgReplay = {
   seek: (time) => { replay.seek(time); replay.scene?.render(); },
   play: () => replay.play(),
   pause: () => replay.pause(),
-  state: () => ({ trial: replay.index, time: replay.time, playing: replay.playing }),
+  // shapes: how many of a model file's shapes the scene draws (0: the plant's own drawing).
+  state: () => ({ trial: replay.index, time: replay.time, playing: replay.playing,
+                  shapes: replay.scene ? replay.scene.shapeCount : 0 }),
 };
 document.body.dataset.ready = "true";

@@ -1,6 +1,7 @@
 // The 3-D scene of a replay: the ground with a metre grid and the path so far, the robot as
 // its plant draws itself (plant/plant_drawing.h: two wheels, a cart if it has one, a body that
-// pitches about the axle or the cart's top), lights, and a camera that follows the robot. It
+// pitches about the axle or the cart's top; or a model file's own shapes, model_robot.js),
+// lights, and a camera that follows the robot. It
 // needs WebGL 2 (three.js's renderer does); openRobotScene says when the browser cannot give it.
 //
 // cbbg's frame is x forward, y left, z up; three.js's is y up. A point (x, y, z) of cbbg is
@@ -8,6 +9,7 @@
 
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
+import { ModelRobot } from "./model_robot.js";
 
 // The ground is a square of GROUND_SIZE about the robot, moved under it in steps of
 // GROUND_STEP so that its lines stay where they are on the ground. Its lines are drawn in
@@ -135,6 +137,28 @@ class RobotScene {
     this.path.position.y = 0.015;
     this.scene.add(this.path);
 
+    this.anchor = new THREE.Vector3(); // the pose's point on the ground, which the camera follows
+    this.camera = new THREE.PerspectiveCamera(45, 1, 0.1, 500);
+    const target = new THREE.Vector3(0, robot.wheel_radius + robot.cart_height + robot.com_height, 0);
+    if (robot.model) {
+      this.model = new ModelRobot(robot.model);
+      this.scene.add(this.model.group);
+      // The camera as far from the robot as its size asks, looking at its middle.
+      const bounds = this.model.bounds();
+      bounds.getCenter(target);
+      const scale = Math.min(4, Math.max(0.4, bounds.getSize(new THREE.Vector3()).length() / 1.2));
+      this.camera.position.copy(CAMERA_OFFSET).multiplyScalar(scale).add(target);
+    } else {
+      this.addTwoWheeler(robot);
+      this.camera.position.copy(CAMERA_OFFSET).add(new THREE.Vector3(0, robot.wheel_radius, 0));
+    }
+    this.shapeCount = this.model ? this.model.shapeCount : 0;
+    this.controls = new OrbitControls(this.camera, canvas);
+    this.controls.target.copy(target);
+    this.controls.update();
+  }
+
+  addTwoWheeler(robot) {
     this.base = new THREE.Group(); // at the axle, turned by the heading
     this.body = body(robot);
     const tyre = new THREE.MeshStandardMaterial({ color: 0x2b2f33 });
@@ -145,12 +169,6 @@ class RobotScene {
     const carried = cart(robot);
     if (carried) this.base.add(carried);
     this.scene.add(this.base);
-
-    this.camera = new THREE.PerspectiveCamera(45, 1, 0.1, 500);
-    this.camera.position.copy(CAMERA_OFFSET).add(new THREE.Vector3(0, robot.wheel_radius, 0));
-    this.controls = new OrbitControls(this.camera, canvas);
-    this.controls.target.set(0, robot.wheel_radius + robot.cart_height + robot.com_height, 0);
-    this.controls.update();
   }
 
   // The path the axle takes over a trial, drawn on the ground as the segments between
@@ -168,15 +186,20 @@ class RobotScene {
 
   // pose: {x, y, yaw, theta_b, phi_l, phi_r}; the camera moves with the robot.
   show(pose) {
-    const before = this.base.position.clone();
-    this.base.position.set(pose.x, this.robot.wheel_radius, -pose.y);
-    this.base.rotation.y = pose.yaw;
-    this.body.rotation.z = -pose.theta_b; // > 0 leans forward
-    this.left.rotation.z = -pose.phi_l;   // rolling forward turns the top forward
-    this.right.rotation.z = -pose.phi_r;
+    const before = this.anchor.clone();
+    this.anchor.set(pose.x, 0, -pose.y);
+    if (this.model) {
+      this.model.show(pose);
+    } else {
+      this.base.position.set(pose.x, this.robot.wheel_radius, -pose.y);
+      this.base.rotation.y = pose.yaw;
+      this.body.rotation.z = -pose.theta_b; // > 0 leans forward
+      this.left.rotation.z = -pose.phi_l;   // rolling forward turns the top forward
+      this.right.rotation.z = -pose.phi_r;
+    }
     this.ground.position.set(Math.round(pose.x / GROUND_STEP) * GROUND_STEP, 0,
                              -Math.round(pose.y / GROUND_STEP) * GROUND_STEP);
-    const moved = this.base.position.clone().sub(before);
+    const moved = this.anchor.clone().sub(before);
     this.camera.position.add(moved);
     this.controls.target.add(moved);
     this.controls.update();
