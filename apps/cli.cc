@@ -13,6 +13,7 @@
 #include "cbbg/apps/commands.h"
 #include "cbbg/apps/errors.h"
 #include "cbbg/apps/eval_command.h"
+#include "cbbg/apps/export_command.h"
 #include "cbbg/apps/figures.h"
 #include "cbbg/diagrams/presets.h"
 #include "cbbg/experiments/run_names.h"
@@ -197,6 +198,21 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
                      "also print the actor's slopes at rest and the closed loop's modes");
   eval_app->add_option("--out,-o", eval.out, "write DIR/evaluation.csv");
 
+  ExportOptions export_options;
+  CLI::App* export_app = app.add_subcommand(
+      "export", "write learnt weights' policy as dependency-free C99: DIR/NAME.h, DIR/NAME.c");
+  export_app
+      ->add_option("--load-weights", export_options.weights_file,
+                   "a weights file (cbbg run --save-weights)")
+      ->required();
+  export_app->add_option("--config", export_options.config_file,
+                         "a YAML config (keys: `cbbg list`)");
+  export_app->add_option("--set", export_options.sets, "override one key (repeatable)");
+  export_app->add_option("--out,-o", export_options.out, "the directory to write into")->required();
+  export_app->add_option("--name", export_options.name,
+                         "prefix of the files and of the C identifiers (default: cbbg_policy)");
+  export_app->add_option("--scalar", export_options.scalar, "double (default) or float");
+
   CLI::App* list_app =
       app.add_subcommand("list", "list the diagrams, the blocks and every config key");
   bool keys_markdown = false;
@@ -234,6 +250,7 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
   // in std::terminate.
   try {
     if (eval_app->parsed()) return eval_command(eval);
+    if (export_app->parsed()) return export_command(export_options);
     if (graph_app->parsed()) return graph_command(graph);
     if (plot_app->parsed()) return plot_command(plot_directory);
     if (replay_app->parsed()) return replay_command(replay);

@@ -3,6 +3,7 @@
 
 #include "cbbg/apps/eval_command.h"
 #include "cbbg/apps/errors.h"
+#include "cbbg/apps/learnt_policy.h"
 
 #include <algorithm>
 #include <charconv>
@@ -97,25 +98,11 @@ std::vector<double> parse_angles(const std::string& text) {
   }
 }
 
-// plant.kind: the plant the weights were learnt on, where this program has its kind (else
-// check_weights refuses them on the default); a config file or --set that names one wins.
-void set_plant_of(const experiments::LearntWeights& weights, config::Config& config) {
-  const std::vector<diagrams::PlantKind>& kinds = diagrams::plant_kinds();
-  const std::string& kind = weights.provenance.plant;
-  if (std::any_of(kinds.begin(), kinds.end(),
-                  [&kind](const diagrams::PlantKind& known) { return known.name == kind; })) {
-    config.set("plant.kind=" + kind);
-  }
-}
-
 // The evaluation's parameters: the weights' plant, the file, the overrides and --angles,
 // validated, with the evaluation.* conditions applied.
 parameters::Parameters resolve(const EvalOptions& options,
                                const experiments::LearntWeights& weights) {
-  config::Config config;
-  set_plant_of(weights, config);
-  if (!options.config_file.empty()) config.merge_file(options.config_file);
-  for (const auto& assignment : options.sets) config.set(assignment);
+  config::Config config = weights_config(weights, options.config_file, options.sets);
   if (!options.angles.empty()) {
     std::string list = "[";
     for (const double angle : parse_angles(options.angles)) {
@@ -209,19 +196,6 @@ void print_linearisation(const experiments::ActorLinearisation& linear, double p
     std::printf("%10.5f %22s %10s%s\n", size, s,
                 experiments::kLinearisedStates[static_cast<size_t>(mode.leans_on)], fate);
   }
-}
-
-// The learnt actor alone of the arm that learnt the weights (a preset's, or one the program
-// registered, with its own features and controller); learnt_actor for an arm it does not know.
-diagrams::ClosedLoopFactory policy_of(const std::string& arm,
-                                      const diagrams::ClosedLoopOptions& loop) {
-  const std::vector<std::string> arms = diagrams::arm_names();
-  if (std::find(arms.begin(), arms.end(), arm) != arms.end()) {
-    diagrams::Arm named = diagrams::named_arm(arm, loop);
-    if (named.policy) return named.policy;
-  }
-  return diagrams::closed_loop_factory(diagrams::kLearntActor,
-                                       diagrams::preset(diagrams::kLearntActor).options, loop);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "cbbg/blocks/actor.h"
 
 #include <stdexcept>
+#include <vector>
 
 #include "cbbg/blocks/parameter_checks.h"
 #include "cbbg/framework/block_context.h"
@@ -89,6 +90,14 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
         return EventStatus::succeeded();
       },
       UpdateWrites::kInPlace);  // every part is read before it is written
+}
+
+codegen::CCalculation Actor::c_calculation(int, const Context& context) const {
+  const ConstVectorView theta = weights(context);
+  codegen::CCalculation c;
+  c.constants = {{"theta", std::vector<double>(theta.begin(), theta.end()), true}};
+  c.body = codegen::c_dot("out[0]", "$theta", "in0", num_features_);
+  return c;
 }
 
 ConstVectorView Actor::weights(const Context& context) const {

@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "cbbg/blocks/learner.h"
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/parameters.h"
@@ -68,9 +69,12 @@ struct ActorParams {
 ///
 /// Discrete state: weights theta (n, persistent); per trial: previous_features phi(s_{t-1})
 /// (n), previous_actions (a_S, a_E, a_A, omega at t-1), has_previous (1).
-class Actor final : public Block, public Learner {
+class Actor final : public Block, public Learner, public codegen::EmitsC {
  public:
   Actor(std::string name, int num_features, const ActorParams& params, double period);
+
+  // "actor_action" as C (cbbg export): the weights of `context` as constants.
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
   Role learner_role() const override { return Role::kActor; }
   const Block& learner_block() const override { return *this; }

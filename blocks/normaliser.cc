@@ -38,6 +38,32 @@ Normaliser::Normaliser(std::string name, const NormaliserParams& params)
       {&measured}, "normalised (theta_b, theta_b'[, phi][, phi']), saturated to the grid");
 }
 
+codegen::CCalculation Normaliser::c_calculation(int, const Context&) const {
+  const auto scalar = [](const char* name, double value) {
+    return codegen::CConstant{name, {value}, false};
+  };
+  codegen::CCalculation c;
+  c.constants = {scalar("limit", params_.saturation), scalar("scale_theta", params_.scale_theta),
+                 scalar("scale_dtheta", params_.scale_dtheta)};
+  // Each value saturated as std::clamp does, from the same quotient.
+  const auto saturated = [](int index, const std::string& quotient) {
+    return "  v = " + quotient + ";\n  out[" + std::to_string(index) +
+           "] = " + codegen::c_clamp("v", "-$limit", "$limit") + ";\n";
+  };
+  c.body = "  real v;\n" + saturated(0, "in0[0] / $scale_theta") +
+           saturated(1, "in0[1] / $scale_dtheta");
+  int next = 2;
+  if (params_.sees_wheel_angle()) {
+    c.constants.push_back(scalar("scale_phi", params_.scale_phi));
+    c.body += saturated(next++, "((in0[2] + in0[3]) / (real)2) / $scale_phi");
+  }
+  if (params_.sees_wheel_rate()) {
+    c.constants.push_back(scalar("scale_dphi", params_.scale_dphi));
+    c.body += saturated(next, "((in0[4] + in0[5]) / (real)2) / $scale_dphi");
+  }
+  return c;
+}
+
 FeatureLayout Normaliser::layout() const {
   FeatureLayout layout = declared_layout(params_);
   // The scale of an input it does not see gives the weights no meaning: left out.

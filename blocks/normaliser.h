@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cbbg/blocks/feature_layout.h"
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/parameters.h"
 
@@ -65,11 +66,13 @@ struct NormaliserParams {
 /// normaliser.scale_phi, n_dphi = normaliser.scale_dphi.
 /// Its layout (feature_layout.h): the scales of what it sees and S, as normaliser.* (the
 /// paper's inputs: n_theta, n_dtheta and S only, so its weights files keep their layout).
-class Normaliser final : public Block, public DescribesLayout {
+class Normaliser final : public Block, public DescribesLayout, public codegen::EmitsC {
  public:
   Normaliser(std::string name, const NormaliserParams& params);
 
   FeatureLayout layout() const override;
+  // "x" as C (cbbg export).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
  private:
   NormaliserParams params_;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "cbbg/blocks/parameter_checks.h"
@@ -79,6 +80,32 @@ void RbfFeatures::grid_features(const ConstVectorView& point, VectorRef features
     }
     if (axis >= 0) refresh_from(axis);
   }
+}
+
+codegen::CCalculation RbfFeatures::c_calculation(int, const Context&) const {
+  codegen::CCalculation c;
+  c.constants = {{"centres", params_.centres, true},
+                 {"inverse_two_width_squared", {inverse_two_width_squared_}, false}};
+  const std::size_t m = params_.centres.size();
+  // One loop per axis, the first the outermost: the unit index runs as k = sum k_a m^(d-1-a).
+  // Each axis adds its squared distance to the sum of the axes before it, as the C++ does.
+  std::ostringstream body;
+  body << "  int k = 0;\n";
+  for (int a = 0; a < dimensions_; ++a) {
+    const std::string indent(static_cast<std::size_t>(2 * a + 2), ' ');
+    body << indent << "for (int i" << a << " = 0; i" << a << " < " << m << "; ++i" << a << ") {\n";
+    body << indent << "  const real d" << a << " = in0[" << a << "] - $centres[i" << a << "];\n";
+    body << indent << "  const real p" << a << " = ";
+    if (a > 0) body << "p" << a - 1 << " + ";
+    body << "d" << a << " * d" << a << ";\n";
+  }
+  body << std::string(static_cast<std::size_t>(2 * dimensions_ + 2), ' ')
+       << "out[k++] = CBBG_EXP(-p" << dimensions_ - 1 << " * $inverse_two_width_squared);\n";
+  for (int a = dimensions_ - 1; a >= 0; --a) {
+    body << std::string(static_cast<std::size_t>(2 * a + 2), ' ') << "}\n";
+  }
+  c.body = body.str();
+  return c;
 }
 
 int RbfFeatures::num_features() const {

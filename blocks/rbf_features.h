@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "cbbg/blocks/feature_layout.h"
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/parameters.h"
 
@@ -42,7 +43,7 @@ struct RbfParams {
 /// slowest: phi_k(x) = exp(-sum_a (x_a - c_{k_a})^2 / (2 b^2)), k = sum_a k_a m^(d-1-a).
 /// Parameters: c = rbf.centres (m of them), b = rbf.width. Its layout (feature_layout.h):
 /// rbf.centres and rbf.width.
-class RbfFeatures final : public Block, public DescribesLayout {
+class RbfFeatures final : public Block, public DescribesLayout, public codegen::EmitsC {
  public:
   // `dimensions`, d: the size of x, from 1 to kMaxDimensions (NormaliserParams::size()).
   RbfFeatures(std::string name, const RbfParams& params, int dimensions = 2);
@@ -54,6 +55,8 @@ class RbfFeatures final : public Block, public DescribesLayout {
 
   FeatureLayout layout() const override;
   std::string layout_note() const override;
+  // "features" as C (cbbg export): the same sums in the same order.
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
  private:
   // The grid of d > 2 axes, an odometer over the units that keeps each axis's partial sum.

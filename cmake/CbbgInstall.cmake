@@ -1,5 +1,5 @@
 # Install rules and a CMake package: find_package(cbbg) gives every library as a target
-# (cbbg::framework, plant, blocks, config, parameters, diagrams, records, experiments, environment, store,
+# (cbbg::framework, codegen, plant, blocks, config, parameters, diagrams, records, experiments, environment, store,
 # replay, and cli: the command line a user's program runs with its own registrations), the `cbbg`
 # command, its plotting script and its replay page; find_package(cbbg COMPONENTS framework)
 # gives the framework alone, needing Eigen only. Headers install under include/cbbg/ with
@@ -9,13 +9,13 @@
 # (component python) where the Python it was built for finds it (python/CMakeLists.txt).
 include(CMakePackageConfigHelpers)
 
-set(CBBG_LIBRARIES cbbg_framework cbbg_plant cbbg_blocks cbbg_config cbbg_parameters cbbg_diagrams
+set(CBBG_LIBRARIES cbbg_framework cbbg_codegen cbbg_plant cbbg_blocks cbbg_config cbbg_parameters cbbg_diagrams
                    cbbg_records cbbg_experiments cbbg_environment cbbg_store cbbg_replay
                    cbbg_cli)
 install(TARGETS ${CBBG_LIBRARIES} EXPORT cbbgTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(folder framework plant blocks config parameters diagrams records experiments environment store
+foreach(folder framework codegen plant blocks config parameters diagrams records experiments environment store
                replay)
   install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/${folder}
           FILES_MATCHING PATTERN "*.h" PATTERN "simbody" EXCLUDE PATTERN "node_modules" EXCLUDE)

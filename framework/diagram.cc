@@ -124,6 +124,20 @@ Diagram::InputSource Diagram::resolve_input(const InputPort& port) const {
   return resolve_input(owner.input_port(exported->second));
 }
 
+Diagram::InputOrigin Diagram::origin_of(const InputPort& port) const {
+  const InputSource source = resolve_input(port);
+  InputOrigin origin;
+  if (source.fixed != nullptr) {
+    origin.fixed = &source.fixed->value;
+  } else if (source.root_input >= 0) {
+    origin.diagram_input = source.root_input;
+  } else {
+    origin.output =
+        &leaves_[static_cast<size_t>(source.output.leaf)].block->output_port(source.output.port);
+  }
+  return origin;
+}
+
 void Diagram::assign_signal_offsets() {
   int size = 0;
   first_node_.assign(leaves_.size(), 0);

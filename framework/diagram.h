@@ -47,6 +47,15 @@ class Diagram : public Block {
   const std::vector<const OutputPort*>& exported_outputs() const { return exported_outputs_; }
   const std::vector<FixedInput>& fixed_inputs() const { return fixed_inputs_; }
 
+  // Where an input of a block inside gets its values: a leaf's output, an input of this
+  // diagram (its index), or a value fixed at build. Exactly one is set.
+  struct InputOrigin {
+    const OutputPort* output = nullptr;
+    int diagram_input = -1;
+    const Vector* fixed = nullptr;
+  };
+  InputOrigin origin_of(const InputPort& port) const;
+
   // A fresh context: initial state, default parameters, generators seeded from `root_seed`.
   std::unique_ptr<Context> create_context(std::uint64_t root_seed = 0) const;
   // Computes every output, in dependency order, into the context's signals.

@@ -48,6 +48,7 @@ bench framework "$b/framework/bench_framework" --benchmark_repetitions=5
 bench diagrams "$b/diagrams/bench_diagrams" --benchmark_repetitions=5
 bench plant "$b/plant/bench_plant" --benchmark_repetitions=3 \
   --benchmark_filter='Configurations|DiagramOverPlainLoop|AnalyticPlantStep'
+bench policy_export "$b/codegen/bench_policy_export" --benchmark_repetitions=3
 if [[ -n "$baseline" ]]; then
   bench baseline_framework "$baseline/build/bench/framework/bench_framework" \
     --benchmark_repetitions=5 --benchmark_filter='/1$'

@@ -1,0 +1,105 @@
+#include "cbbg/apps/export_command.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "cbbg/apps/errors.h"
+#include "cbbg/apps/learnt_policy.h"
+#include "cbbg/config/config.h"
+#include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/policy_export.h"
+#include "cbbg/framework/number_text.h"
+#include "cbbg/store/files.h"
+#include "cbbg/store/output_guard.h"
+#include "cbbg/store/weights_file.h"
+
+namespace cbbg::app {
+namespace {
+
+// What the head comment of an exported file carries, and what marks it as cbbg's to replace.
+constexpr const char* kExportTag = "written by cbbg export";
+
+codegen::Scalar scalar_of(const std::string& text) {
+  if (text == "double") return codegen::Scalar::kDouble;
+  if (text == "float") return codegen::Scalar::kFloat;
+  throw config::ConfigError("--scalar must be double or float; got '" + text + "'");
+}
+
+// The weights' plant, the config file and the overrides, validated.
+parameters::Parameters parameters_of(const ExportOptions& options,
+                                     const experiments::LearntWeights& weights) {
+  return diagrams::validated_parameters(weights_config(weights, options.config_file, options.sets));
+}
+
+// Where the code comes from: the weights file (its hash), who learnt them, and the keys that
+// give the weights their meaning.
+std::vector<std::string> provenance(const ExportOptions& options,
+                                    const experiments::LearntWeights& weights) {
+  const experiments::WeightsProvenance& from = weights.provenance;
+  std::vector<std::string> lines = {
+      "The learnt policy of weights file '" + options.weights_file.filename().string() +
+          "' (FNV-1a 64 of its bytes: " + store::text_hash(store::read_text(options.weights_file)) +
+          "),",
+      "learnt by arm " + from.arm + ", seed " + std::to_string(from.seed) + ", over " +
+          std::to_string(from.trials) + " trials on plant kind " + from.plant + ".",
+      "Scalar: " + options.scalar + ". Made with these keys:"};
+  for (const blocks::LayoutEntry& entry : weights.layout) {
+    std::string values;
+    for (const double value : entry.values)
+      values += (values.empty() ? "" : ", ") + format_number(value);
+    lines.push_back("  " + entry.key + " = " +
+                    (entry.values.size() == 1 ? values : "[" + values + "]"));
+  }
+  return lines;
+}
+
+}  // namespace
+
+int export_command(const ExportOptions& options) {
+  codegen::CSources sources;
+  std::filesystem::path header, source;
+  try {
+    if (options.weights_file.empty()) throw config::ConfigError("--load-weights FILE is required");
+    if (options.out.empty()) throw config::ConfigError("--out DIR is required");
+    if (!codegen::is_c_identifier(options.name)) {
+      throw config::ConfigError(
+          "--name must be a C identifier (letters, digits and '_', not "
+          "first a digit); got '" +
+          options.name + "'");
+    }
+    codegen::CExportOptions c;
+    c.name = options.name;
+    c.scalar = scalar_of(options.scalar);
+    check_output_directory(options.out, "--out");
+    header = options.out / (options.name + ".h");
+    source = options.out / (options.name + ".c");
+    for (const auto& file : {header, source})
+      store::check_replaceable_file(file, "--out", kExportTag);
+    const experiments::LearntWeights weights = store::load_weights(options.weights_file);
+    const parameters::Parameters parameters = parameters_of(options, weights);
+    const diagrams::ClosedLoopFactory policy = policy_of(weights.provenance.arm);
+    experiments::check_weights(weights, parameters.plant.kind, policy(parameters),
+                               options.weights_file);
+    c.provenance = provenance(options, weights);
+    try {
+      sources = experiments::export_policy(parameters, policy, weights, c);
+    } catch (const std::invalid_argument& error) {
+      throw config::ConfigError(std::string("cannot export the policy: ") + error.what());
+    }
+  } catch (const config::ConfigError& error) {
+    return report_error(kUserError, error.what());
+  } catch (const std::exception& error) {
+    return report_error(kMachineError, describe(error));
+  }
+  try {
+    std::filesystem::create_directories(options.out);
+    store::write_atomically(header, sources.header);
+    store::write_atomically(source, sources.source);
+  } catch (const std::exception& error) {
+    return report_error(kMachineError, describe(error));
+  }
+  std::printf("wrote %s and %s\n", header.string().c_str(), source.string().c_str());
+  return 0;
+}
+
+}  // namespace cbbg::app

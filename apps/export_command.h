@@ -1,0 +1,26 @@
+#pragma once
+// cbbg export: a weights file's learnt policy as dependency-free C99, DIR/NAME.h and
+// DIR/NAME.c (experiments/policy_export.h): the normaliser, the features and the actor of the
+// arm that learnt them, with the weights as constants; `double` or `float`.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace cbbg::app {
+
+struct ExportOptions {
+  std::filesystem::path weights_file;  // --load-weights (required)
+  std::filesystem::path config_file;   // --config; empty: defaults only
+  std::vector<std::string> sets;       // --set key.path=value overrides, in order
+  std::filesystem::path out;           // --out DIR (required), made with its parents if missing
+  std::string name = "cbbg_policy";    // --name: the files' and identifiers' prefix
+  std::string scalar = "double";       // --scalar double | float
+};
+
+// Returns 0 when the files were written, 2 for bad input (options, config, weights file, a
+// block that cannot be written as C, a file there that cbbg export did not write), 1 when the
+// machine refused (writing). Errors go to stderr as one line "cbbg: error: ...".
+int export_command(const ExportOptions& options);
+
+}  // namespace cbbg::app

@@ -1,0 +1,60 @@
+#pragma once
+// What a block writes of one of its calculations as C99, for the exported controller
+// (c_export.h, `cbbg export`): the statements that compute an output from the inputs it
+// reads, and the constants they name (parameters and learnt weights). A block opts in by
+// implementing EmitsC; a user's block does the same, and a diagram with a block that does
+// not is refused, naming it.
+
+#include <string>
+#include <vector>
+
+namespace cbbg {
+class Context;
+}
+
+namespace cbbg::codegen {
+
+// The number type of the exported code.
+enum class Scalar { kDouble, kFloat };
+
+// A constant the calculation names: its values, written as a `static const` array, or as one
+// number when `array` is false.
+struct CConstant {
+  std::string name;  // a C identifier
+  std::vector<double> values;
+  bool array = true;
+};
+
+// One output's calculation. `body` is C99 statements (they may declare locals) over:
+//   in0, in1, ...  the inputs the output reads (Block::output_reads order), `const real *`
+//   out            the output, `real *`
+//   $NAME          the constant NAME of `constants`
+//   real           the scalar type; CBBG_EXP and CBBG_SQRT: <math.h>'s exp and sqrt for it
+// The statements must compute in the order the block's C++ does: then the double export
+// reproduces it to the bit.
+struct CCalculation {
+  std::vector<CConstant> constants;
+  std::string body;
+};
+
+class EmitsC {
+ public:
+  virtual ~EmitsC() = default;
+  // The calculation of output `output` (its index) with the state `context` holds of the
+  // block. Throws std::invalid_argument naming the port for an output it cannot write.
+  virtual CCalculation c_calculation(int output, const Context& context) const = 0;
+};
+
+// `value` as a C literal of `scalar`: the 17 digits a double needs to come back the same, or
+// the value rounded to float in 9 digits with an `f` suffix.
+std::string c_literal(double value, Scalar scalar);
+
+// libstdc++'s std::clamp(value, low, high) as a C expression: (v < lo ? lo : hi < v ? hi : v).
+std::string c_clamp(const std::string& value, const std::string& low, const std::string& high);
+
+// C statements that set `target` to the dot product of the arrays `a` and `b` of `n` values
+// in the order Eigen's a.dot(b) sums them (the blocks' C++ does): pairs of values in two
+// accumulators of pairs (SSE2's two lanes), a last pair, the lanes added, the odd value last.
+std::string c_dot(const std::string& target, const std::string& a, const std::string& b, int n);
+
+}  // namespace cbbg::codegen

@@ -1,0 +1,24 @@
+#pragma once
+// A learnt policy as dependency-free C99 (`cbbg export`): the actor of the arm that learnt the
+// weights, with the features and the normaliser it reads, from the measured signals
+// (blocks/measured_signals.h) to the action a_A; every block on the way writes its own C
+// (codegen::EmitsC).
+
+#include "cbbg/codegen/c_export.h"
+#include "cbbg/diagrams/closed_loop.h"
+#include "cbbg/experiments/learnt_weights.h"
+#include "cbbg/parameters/parameters.h"
+
+namespace cbbg::experiments {
+
+// The C of `policy`'s actor output "actor_action" with `weights` loaded, as a function of the
+// controller's inputs it reads (the measured signals):
+//   NAME_real NAME_step(const NAME_real measured[NAME_MEASURED_SIZE]);
+// Throws std::invalid_argument when the loop has no actor or a block on the way cannot be
+// written as C (naming it), and what load_learnt_weights throws.
+codegen::CSources export_policy(const parameters::Parameters& parameters,
+                                const diagrams::ClosedLoopFactory& policy,
+                                const LearntWeights& weights,
+                                const codegen::CExportOptions& options);
+
+}  // namespace cbbg::experiments
