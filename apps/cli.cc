@@ -212,6 +212,10 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
   export_app->add_option("--name", export_options.name,
                          "prefix of the files and of the C identifiers (default: cbbg_policy)");
   export_app->add_option("--scalar", export_options.scalar, "double (default) or float");
+  export_app
+      ->add_option("--omega", export_options.omega,
+                   "with the supervisor and the mixer at this omega, 0 to 1, no exploration")
+      ->check(kDecimal);
 
   CLI::App* list_app =
       app.add_subcommand("list", "list the diagrams, the blocks and every config key");

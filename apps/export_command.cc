@@ -6,6 +6,7 @@
 #include "cbbg/apps/errors.h"
 #include "cbbg/apps/learnt_policy.h"
 #include "cbbg/config/config.h"
+#include "cbbg/diagrams/arms.h"
 #include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/experiments/policy_export.h"
 #include "cbbg/framework/number_text.h"
@@ -18,6 +19,28 @@ namespace {
 
 // What the head comment of an exported file carries, and what marks it as cbbg's to replace.
 constexpr const char* kExportTag = "written by cbbg export";
+
+double omega_of(double omega) {
+  if (!(omega >= 0.0 && omega <= 1.0)) {
+    throw config::ConfigError("--omega must be a number from 0 to 1; got " + format_number(omega));
+  }
+  return omega;
+}
+
+// The C of the weights' policy: the actor alone, or with --omega the arm's whole controller.
+codegen::CSources policy_sources(const ExportOptions& options,
+                                 const parameters::Parameters& parameters,
+                                 const experiments::LearntWeights& weights,
+                                 const diagrams::ClosedLoopFactory& policy,
+                                 const codegen::CExportOptions& c) {
+  try {
+    if (!options.omega) return experiments::export_policy(parameters, policy, weights, c);
+    const diagrams::Arm arm = diagrams::named_arm(weights.provenance.arm);
+    return experiments::export_mixed_policy(parameters, arm.learner, weights, *options.omega, c);
+  } catch (const std::invalid_argument& error) {
+    throw config::ConfigError(std::string("cannot export the policy: ") + error.what());
+  }
+}
 
 codegen::Scalar scalar_of(const std::string& text) {
   if (text == "double") return codegen::Scalar::kDouble;
@@ -42,7 +65,11 @@ std::vector<std::string> provenance(const ExportOptions& options,
           "),",
       "learnt by arm " + from.arm + ", seed " + std::to_string(from.seed) + ", over " +
           std::to_string(from.trials) + " trials on plant kind " + from.plant + ".",
-      "Scalar: " + options.scalar + ". Made with these keys:"};
+      "Scalar: " + options.scalar +
+          (options.omega ? "; the whole controller at omega " + format_number(*options.omega) +
+                               ", no exploration"
+                         : "; the actor alone") +
+          ". Made with these keys:"};
   for (const blocks::LayoutEntry& entry : weights.layout) {
     std::string values;
     for (const double value : entry.values)
@@ -70,6 +97,7 @@ int export_command(const ExportOptions& options) {
     codegen::CExportOptions c;
     c.name = options.name;
     c.scalar = scalar_of(options.scalar);
+    if (options.omega) omega_of(*options.omega);
     check_output_directory(options.out, "--out");
     header = options.out / (options.name + ".h");
     source = options.out / (options.name + ".c");
@@ -81,11 +109,7 @@ int export_command(const ExportOptions& options) {
     experiments::check_weights(weights, parameters.plant.kind, policy(parameters),
                                options.weights_file);
     c.provenance = provenance(options, weights);
-    try {
-      sources = experiments::export_policy(parameters, policy, weights, c);
-    } catch (const std::invalid_argument& error) {
-      throw config::ConfigError(std::string("cannot export the policy: ") + error.what());
-    }
+    sources = policy_sources(options, parameters, weights, policy, c);
   } catch (const config::ConfigError& error) {
     return report_error(kUserError, error.what());
   } catch (const std::exception& error) {

@@ -1,9 +1,11 @@
 #pragma once
 // cbbg export: a weights file's learnt policy as dependency-free C99, DIR/NAME.h and
 // DIR/NAME.c (experiments/policy_export.h): the normaliser, the features and the actor of the
-// arm that learnt them, with the weights as constants; `double` or `float`.
+// arm that learnt them, with the weights as constants (with --omega, also the supervisor and
+// the mixer at that omega); `double` or `float`.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,9 @@ struct ExportOptions {
   std::filesystem::path out;           // --out DIR (required), made with its parents if missing
   std::string name = "cbbg_policy";    // --name: the files' and identifiers' prefix
   std::string scalar = "double";       // --scalar double | float
+  // --omega: the arm's whole controller at this omega, from 0 to 1, without exploration
+  // (a = omega a_A + (1 - omega) a_S); none: the actor alone.
+  std::optional<double> omega;
 };
 
 // Returns 0 when the files were written, 2 for bad input (options, config, weights file, a

@@ -17,4 +17,9 @@ Mixer::Mixer(std::string name) : Block(std::move(name)) {
       {&exploration, &supervisor, &omega}, "a = omega a_E + (1 - omega) a_S");
 }
 
+codegen::CCalculation Mixer::c_calculation(int, const Context&) const {
+  // in0: a_E, in1: a_S, in2: omega, as the output reads them.
+  return {{}, "  out[0] = in2[0] * in0[0] + ((real)1 - in2[0]) * in1[0];\n"};
+}
+
 }  // namespace cbbg::blocks

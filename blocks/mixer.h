@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 
 namespace cbbg::blocks {
@@ -17,9 +18,12 @@ namespace cbbg::blocks {
 ///
 /// Equation: a = omega a_E + (1 - omega) a_S. The plant saturates the torque, not the mixer.
 /// No parameters.
-class Mixer final : public Block {
+class Mixer final : public Block, public codegen::EmitsC {
  public:
   explicit Mixer(std::string name);
+
+  // "action" as C (cbbg export --omega).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
 };
 
 }  // namespace cbbg::blocks

@@ -24,4 +24,17 @@ PdSupervisor::PdSupervisor(std::string name, const PdSupervisorParams& params)
       {&measured}, "a_S, the supervisor's torque");
 }
 
+codegen::CCalculation PdSupervisor::c_calculation(int, const Context&) const {
+  const auto gain = [](const char* name, double value) {
+    return codegen::CConstant{name, {value}, false};
+  };
+  codegen::CCalculation c;
+  c.constants = {gain("k_theta", params_.k_theta), gain("k_dtheta", params_.k_dtheta),
+                 gain("k_phi", params_.k_phi), gain("k_dphi", params_.k_dphi)};
+  c.body =
+      "  out[0] = $k_theta * in0[0] + $k_dtheta * in0[1] + $k_phi * (in0[2] + in0[3]) / "
+      "(real)2 +\n           $k_dphi * (in0[4] + in0[5]) / (real)2;\n";
+  return c;
+}
+
 }  // namespace cbbg::blocks

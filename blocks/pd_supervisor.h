@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/parameters.h"
 
@@ -37,9 +38,12 @@ struct PdSupervisorParams {
 /// Equation: a_S = k_theta theta_b + k_dtheta theta_b' + k_phi (phi_l + phi_r) / 2
 ///                 + k_dphi (phi_l' + phi_r') / 2.
 /// Parameters: supervisor.k_theta, supervisor.k_dtheta, supervisor.k_phi, supervisor.k_dphi.
-class PdSupervisor final : public Block {
+class PdSupervisor final : public Block, public codegen::EmitsC {
  public:
   PdSupervisor(std::string name, const PdSupervisorParams& params);
+
+  // "action" as C (cbbg export --omega).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
  private:
   PdSupervisorParams params_;

@@ -9,6 +9,7 @@
 
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/diagram.h"
+#include "cbbg/framework/primitives/constant_source.h"
 
 namespace cbbg::codegen {
 namespace {
@@ -25,12 +26,25 @@ struct Step {
 // The steps `output` needs, in the order they must run, found through direct feedthrough.
 class Walk {
  public:
-  Walk(const Diagram& root, const Context& context) : root_(root), context_(context) {}
+  Walk(const Diagram& root, const Context& context, const CExportOptions& options)
+      : root_(root), context_(context), options_(options) {}
 
   // The name of the array that holds `port`'s values once its step has run.
   std::string visit(const OutputPort& port) {
     if (const auto found = visited_.find(&port); found != visited_.end()) return found->second;
+    if (const auto other = options_.read_as.find(&port); other != options_.read_as.end()) {
+      return visited_[&port] = visit(*other->second);
+    }
+    if (const auto value = options_.held.find(&port); value != options_.held.end()) {
+      fixed.push_back({"held" + std::to_string(fixed.size()), {value->second}});
+      return visited_[&port] = "$" + fixed.back().name;
+    }
     const Block& block = port.block();
+    if (const auto* source = dynamic_cast<const ConstantSource*>(&block)) {
+      fixed.push_back({"constant" + std::to_string(fixed.size()),
+                       std::vector<double>(source->value().begin(), source->value().end())});
+      return visited_[&port] = "$" + fixed.back().name;
+    }
     const auto* emitter = dynamic_cast<const EmitsC*>(&block);
     if (emitter == nullptr) {
       throw std::invalid_argument("block '" + block.path() +
@@ -78,6 +92,7 @@ class Walk {
 
   const Diagram& root_;
   const Context& context_;
+  const CExportOptions& options_;
   std::map<const OutputPort*, std::string> visited_;
 };
 
@@ -178,7 +193,7 @@ CSources export_c(const Diagram& root, const OutputPort& output, const Context& 
                                 std::to_string(output.size()) +
                                 " values; the export writes one action");
   }
-  Walk walk(root, context);
+  Walk walk(root, context, options);
   const std::string result = walk.visit(output);
   const std::string macro = upper(name);
   const bool single = options.scalar == Scalar::kFloat;

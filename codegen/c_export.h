@@ -1,15 +1,18 @@
 #pragma once
 // The C99 of one output of a diagram, as a function of the diagram's inputs it reads: what
 // `cbbg export` writes of a learnt policy. Each block the output needs (through direct
-// feedthrough) writes its own calculation (c_calculation.h's EmitsC); the exporter orders
-// them, gives each its constants and one C function, and calls them in turn from
+// feedthrough) writes its own calculation (c_calculation.h's EmitsC; the framework's
+// ConstantSource is written as its constant); the exporter orders them, gives each its
+// constants and one C function, and calls them in turn from
 //
 //   NAME_real NAME_step(const NAME_real IN[IN_SIZE], ...);   /* one array per input read */
 //
 // The code needs no heap, keeps no state (every constant is `static const`; the signals
 // between blocks are locals of NAME_step), uses only <math.h>'s exp and sqrt, and no stdio.
 
+#include <map>
 #include <string>
+#include <vector>
 
 #include "cbbg/codegen/c_calculation.h"
 
@@ -29,6 +32,10 @@ struct CExportOptions {
   Scalar scalar = Scalar::kDouble;
   // Lines of the head comment of both files: where the code comes from (weights, keys).
   std::vector<std::string> provenance;
+  // Outputs the export reads as another output (the exploration's read as the actor's: no
+  // exploration), and outputs it holds at a value (omega held).
+  std::map<const OutputPort*, const OutputPort*> read_as{};
+  std::map<const OutputPort*, double> held{};
 };
 
 struct CSources {

@@ -21,4 +21,14 @@ codegen::CSources export_policy(const parameters::Parameters& parameters,
                                 const LearntWeights& weights,
                                 const codegen::CExportOptions& options);
 
+// The same for the controller of `learner` (an arm's loop that learns) as it acts with omega
+// held at `omega` and no exploration: its output "action", a = omega a_A + (1 - omega) a_S
+// for the CB-BG controller, with the supervisor and the mixer written by their blocks. Throws
+// std::invalid_argument naming what the controller lacks (an output "action",
+// "actor_action", "exploration_action" or "omega") or a block that cannot be written as C.
+codegen::CSources export_mixed_policy(const parameters::Parameters& parameters,
+                                      const diagrams::ClosedLoopFactory& learner,
+                                      const LearntWeights& weights, double omega,
+                                      codegen::CExportOptions options);
+
 }  // namespace cbbg::experiments

@@ -13,6 +13,8 @@ class ConstantSource final : public Block {
  public:
   ConstantSource(std::string name, Vector value);
 
+  const Vector& value() const { return value_; }
+
  private:
   Vector value_;
 };

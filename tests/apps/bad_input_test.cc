@@ -205,6 +205,8 @@ std::vector<BadInput> bad_inputs() {
       {"export --load-weights {S}/w.txt --out {S}/gen --name 9lives",
        "--name must be a C identifier (letters, digits and '_', not first a digit); got '9lives'"},
       {"export --load-weights {S}/w.txt --out {S}/file", "--out '{S}/file' is a file"},
+      {"export --load-weights {S}/w.txt --out {S}/gen --omega 1.5",
+       "--omega must be a number from 0 to 1; got 1.5"},
       {"export --load-weights {S}/w.txt --out {S}/mine --name policy",
        "--out '{S}/mine/policy.c' exists and cbbg did not write it"},
       {eval + "--push-time 0x10 --push-torque 2 --push-duration 1",
@@ -277,7 +279,7 @@ TEST(BadInput, EveryCaseExitsTwoWithOneLineAndLeavesEverythingAsItWas) {
   const auto before = cbbg::testing::tree_of(scratch);
 
   const std::vector<BadInput> cases = bad_inputs();
-  ASSERT_EQ(cases.size(), 141u);  // the README counts them: a case dropped shows here
+  ASSERT_EQ(cases.size(), 142u);  // the README counts them: a case dropped shows here
   for (const BadInput& input : cases) {
     const std::string arguments = expand(input.arguments, scratch.string());
     SCOPED_TRACE(arguments);

@@ -14,6 +14,7 @@
 
 #include "cbbg/framework/block_context.h"
 #include "cbbg/framework/diagram_builder.h"
+#include "cbbg/framework/primitives/constant_source.h"
 #include "cbbg/framework/primitives/gain.h"
 #include "tests/support/scratch_directory.h"
 
@@ -112,6 +113,32 @@ TEST(CExport, TheCodeCompilesAsC99AndComputesWhatTheDiagramDoes) {
   double got = 0.0;
   std::ifstream(scratch.path() / "out.txt") >> got;
   EXPECT_EQ(got, expected);  // 0.25 * 9 + 0.5
+}
+
+// What the export is told to read otherwise: an output held at a value, another read as a
+// third; and a ConstantSource, written as its constant.
+TEST(CExport, HeldOutputsOutputsReadAsOthersAndConstantSourcesAreConstants) {
+  DiagramBuilder builder("user");
+  auto& constant = builder.emplace<ConstantSource>("constant", (Vector(2) << 1.5, 2.5).finished());
+  auto& shape = builder.emplace<Shape>("shape");
+  auto& blend = builder.emplace<Blend>("blend", 0.25);
+  builder.connect(constant, "y", shape, "u");
+  builder.connect(shape, "y", blend, "u");
+  const auto diagram = builder.build();
+  const auto context = diagram->create_context();
+  const CSources alone = export_c(*diagram, blend.output_port("y"), *context, {});
+  EXPECT_THAT(alone.source,
+              HasSubstr("static const real cbbg_policy_constant0[2] = {\n    1.5, 2.5\n};"));
+  EXPECT_THAT(alone.header, HasSubstr("cbbg_policy_step(void);"));
+  CExportOptions held;
+  held.held[&shape.output_port("y")] = 7.0;
+  const CSources with_held = export_c(*diagram, blend.output_port("y"), *context, held);
+  EXPECT_THAT(with_held.source, HasSubstr("cbbg_policy_s0(cbbg_policy_held0, s0);"));
+  EXPECT_THAT(with_held.source, ::testing::Not(HasSubstr("block 'user/shape'")));
+  CExportOptions read_as;
+  read_as.read_as[&shape.output_port("y")] = &constant.output_port("y");
+  const CSources with_read_as = export_c(*diagram, blend.output_port("y"), *context, read_as);
+  EXPECT_THAT(with_read_as.source, HasSubstr("cbbg_policy_s0(cbbg_policy_constant0, s0);"));
 }
 
 TEST(CExport, ABlockThatCannotBeWrittenAsCIsRefusedByName) {
