@@ -20,11 +20,10 @@ namespace {
 // What the head comment of an exported file carries, and what marks it as cbbg's to replace.
 constexpr const char* kExportTag = "written by cbbg export";
 
-double omega_of(double omega) {
+void check_omega(double omega) {
   if (!(omega >= 0.0 && omega <= 1.0)) {
     throw config::ConfigError("--omega must be a number from 0 to 1; got " + format_number(omega));
   }
-  return omega;
 }
 
 // The C of the weights' policy: the actor alone, or with --omega the arm's whole controller.
@@ -97,7 +96,7 @@ int export_command(const ExportOptions& options) {
     codegen::CExportOptions c;
     c.name = options.name;
     c.scalar = scalar_of(options.scalar);
-    if (options.omega) omega_of(*options.omega);
+    if (options.omega) check_omega(*options.omega);
     check_output_directory(options.out, "--out");
     header = options.out / (options.name + ".h");
     source = options.out / (options.name + ".c");
