@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
-#include <regex>
 #include <stdexcept>
 #include <vector>
 
@@ -108,16 +107,25 @@ std::string head_comment(const std::string& file, const CExportOptions& options)
   return text + " */\n";
 }
 
+bool is_identifier_character(char c, bool first) {
+  const auto u = static_cast<unsigned char>(c);
+  return std::isalpha(u) != 0 || c == '_' || (!first && std::isdigit(u) != 0);
+}
+
 // `body` with every $NAME replaced by `prefix`NAME; a name the constants lack, or a constant
 // the body never names (C warns of it), is the block's mistake.
 std::string with_constants(const std::string& body, const std::vector<CConstant>& constants,
                            const std::string& prefix, const Block& block) {
-  static const std::regex kNamed(R"(\$([A-Za-z_][A-Za-z0-9_]*))");
   std::string out;
   std::vector<std::string> named;
-  auto last = body.cbegin();
-  for (std::sregex_iterator it(body.begin(), body.end(), kNamed), end; it != end; ++it) {
-    const std::string name = (*it)[1];
+  for (std::size_t at = 0; at < body.size();) {
+    if (body[at] != '$') {
+      out += body[at++];
+      continue;
+    }
+    std::size_t end = at + 1;
+    while (end < body.size() && is_identifier_character(body[end], end == at + 1)) ++end;
+    const std::string name = body.substr(at + 1, end - at - 1);
     const bool known = std::any_of(constants.begin(), constants.end(),
                                    [&name](const CConstant& c) { return c.name == name; });
     if (!known) {
@@ -125,11 +133,10 @@ std::string with_constants(const std::string& body, const std::vector<CConstant>
                              "', which it does not declare");
     }
     named.push_back(name);
-    out.append(last, body.cbegin() + it->position());
-    out += prefix + name;
-    last = body.cbegin() + it->position() + it->length();
+    out += prefix;
+    out += name;
+    at = end;
   }
-  out.append(last, body.cend());
   for (const CConstant& constant : constants) {
     if (std::find(named.begin(), named.end(), constant.name) == named.end()) {
       throw std::logic_error("block '" + block.path() + "' declares constant '" + constant.name +
@@ -149,10 +156,14 @@ std::string constant_definition(const CConstant& constant, const std::string& pr
     }
     return text + " = " + c_literal(constant.values[0], scalar) + ";\n";
   }
-  text += "[" + std::to_string(constant.values.size()) + "] = {";
+  // Piece by piece: GCC 12 warns falsely (-Wrestrict) on chains of operator+ here.
+  text += '[';
+  text += std::to_string(constant.values.size());
+  text += "] = {";
   for (std::size_t i = 0; i < constant.values.size(); ++i) {
-    text += (i % 4 == 0 ? "\n    " : " ") + c_literal(constant.values[i], scalar) +
-            (i + 1 < constant.values.size() ? "," : "");
+    text += i % 4 == 0 ? "\n    " : " ";
+    text += c_literal(constant.values[i], scalar);
+    if (i + 1 < constant.values.size()) text += ',';
   }
   return text + "\n};\n";
 }
@@ -176,8 +187,11 @@ std::string step_function(const Step& step, int index, const std::string& name, 
 }  // namespace
 
 bool is_c_identifier(const std::string& name) {
-  static const std::regex kIdentifier("[A-Za-z_][A-Za-z0-9_]*");
-  return std::regex_match(name, kIdentifier);
+  if (name.empty()) return false;
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    if (!is_identifier_character(name[i], i == 0)) return false;
+  }
+  return true;
 }
 
 CSources export_c(const Diagram& root, const OutputPort& output, const Context& context,
