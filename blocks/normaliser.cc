@@ -39,12 +39,11 @@ Normaliser::Normaliser(std::string name, const NormaliserParams& params)
 }
 
 codegen::CCalculation Normaliser::c_calculation(int, const Context&) const {
-  const auto scalar = [](const char* name, double value) {
-    return codegen::CConstant{name, {value}, false};
-  };
+  using codegen::c_number;
   codegen::CCalculation c;
-  c.constants = {scalar("limit", params_.saturation), scalar("scale_theta", params_.scale_theta),
-                 scalar("scale_dtheta", params_.scale_dtheta)};
+  c.constants = {c_number("limit", params_.saturation),
+                 c_number("scale_theta", params_.scale_theta),
+                 c_number("scale_dtheta", params_.scale_dtheta)};
   // Each value saturated as std::clamp does, from the same quotient.
   const auto saturated = [](int index, const std::string& quotient) {
     return "  v = " + quotient + ";\n  out[" + std::to_string(index) +
@@ -54,11 +53,11 @@ codegen::CCalculation Normaliser::c_calculation(int, const Context&) const {
            saturated(1, "in0[1] / $scale_dtheta");
   int next = 2;
   if (params_.sees_wheel_angle()) {
-    c.constants.push_back(scalar("scale_phi", params_.scale_phi));
+    c.constants.push_back(c_number("scale_phi", params_.scale_phi));
     c.body += saturated(next++, "((in0[2] + in0[3]) / (real)2) / $scale_phi");
   }
   if (params_.sees_wheel_rate()) {
-    c.constants.push_back(scalar("scale_dphi", params_.scale_dphi));
+    c.constants.push_back(c_number("scale_dphi", params_.scale_dphi));
     c.body += saturated(next, "((in0[4] + in0[5]) / (real)2) / $scale_dphi");
   }
   return c;

@@ -25,12 +25,10 @@ PdSupervisor::PdSupervisor(std::string name, const PdSupervisorParams& params)
 }
 
 codegen::CCalculation PdSupervisor::c_calculation(int, const Context&) const {
-  const auto gain = [](const char* name, double value) {
-    return codegen::CConstant{name, {value}, false};
-  };
+  using codegen::c_number;
   codegen::CCalculation c;
-  c.constants = {gain("k_theta", params_.k_theta), gain("k_dtheta", params_.k_dtheta),
-                 gain("k_phi", params_.k_phi), gain("k_dphi", params_.k_dphi)};
+  c.constants = {c_number("k_theta", params_.k_theta), c_number("k_dtheta", params_.k_dtheta),
+                 c_number("k_phi", params_.k_phi), c_number("k_dphi", params_.k_dphi)};
   c.body =
       "  out[0] = $k_theta * in0[0] + $k_dtheta * in0[1] + $k_phi * (in0[2] + in0[3]) / "
       "(real)2 +\n           $k_dphi * (in0[4] + in0[5]) / (real)2;\n";

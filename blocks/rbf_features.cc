@@ -85,7 +85,7 @@ void RbfFeatures::grid_features(const ConstVectorView& point, VectorRef features
 codegen::CCalculation RbfFeatures::c_calculation(int, const Context&) const {
   codegen::CCalculation c;
   c.constants = {{"centres", params_.centres, true},
-                 {"inverse_two_width_squared", {inverse_two_width_squared_}, false}};
+                 codegen::c_number("inverse_two_width_squared", inverse_two_width_squared_)};
   const std::size_t m = params_.centres.size();
   // One loop per axis, the first the outermost: the unit index runs as k = sum k_a m^(d-1-a).
   // Each axis adds its squared distance to the sum of the axes before it, as the C++ does.

@@ -25,6 +25,11 @@ struct CConstant {
   bool array = true;
 };
 
+// The constant `name` of one number, written as a number.
+inline CConstant c_number(std::string name, double value) {
+  return {std::move(name), {value}, false};
+}
+
 // One output's calculation. `body` is C99 statements (they may declare locals) over:
 //   in0, in1, ...  the inputs the output reads (Block::output_reads order), `const real *`
 //   out            the output, `real *`

@@ -35,14 +35,11 @@ class Walk {
       return visited_[&port] = visit(*other->second);
     }
     if (const auto value = options_.held.find(&port); value != options_.held.end()) {
-      fixed.push_back({"held" + std::to_string(fixed.size()), {value->second}});
-      return visited_[&port] = "$" + fixed.back().name;
+      return visited_[&port] = constant("held", Vector::Constant(1, value->second));
     }
     const Block& block = port.block();
     if (const auto* source = dynamic_cast<const ConstantSource*>(&block)) {
-      fixed.push_back({"constant" + std::to_string(fixed.size()),
-                       std::vector<double>(source->value().begin(), source->value().end())});
-      return visited_[&port] = "$" + fixed.back().name;
+      return visited_[&port] = constant("constant", source->value());
     }
     const auto* emitter = dynamic_cast<const EmitsC*>(&block);
     if (emitter == nullptr) {
@@ -74,15 +71,20 @@ class Walk {
     const Diagram::InputOrigin origin = root_.origin_of(input);
     if (origin.output != nullptr) return visit(*origin.output);
     if (origin.fixed != nullptr) {
-      fixed.push_back({"fixed" + std::to_string(fixed.size()),
-                       std::vector<double>(origin.fixed->begin(), origin.fixed->end())});
-      return "$" + fixed.back().name;
+      return constant("fixed", *origin.fixed);
     }
     if (std::find(root_inputs.begin(), root_inputs.end(), origin.diagram_input) ==
         root_inputs.end()) {
       root_inputs.push_back(origin.diagram_input);
     }
     return root_input_name(root_.input_port(origin.diagram_input));
+  }
+
+  // A constant of the export's own (`kind`N), named as a block's body names its constants.
+  std::string constant(const char* kind, const Vector& values) {
+    fixed.push_back(
+        {kind + std::to_string(fixed.size()), std::vector<double>(values.begin(), values.end())});
+    return "$" + fixed.back().name;
   }
 
   static std::string root_input_name(const InputPort& port) {

@@ -141,7 +141,6 @@ struct MujocoPlant::Model {
   std::vector<std::string> signal_names;
   std::vector<Signal> signal_sources;
   int pitch_joint = -1;
-  int pitch_qpos = -1;
   bool sensors_need_acceleration = false;  // an accelerometer, a force or touch sensor
   // Whether a step can be split in MuJoCo's two halves (mj_step2, then mj_step1 at the new
   // state, which gives the sensors): not with Runge-Kutta, nor for sensors of accelerations.
@@ -172,7 +171,6 @@ MujocoPlant::Model::Model(const MujocoParams& p, const RobotParams& robot, bool 
                                   " is no hinge or slide joint");
     }
     pitch_joint = pitch;
-    pitch_qpos = m->jnt_qposadr[pitch];
     const bool changed = p.body_mass_scale != 1.0 || p.com_height_scale != 1.0;
     body = pushed || changed ? id(mjOBJ_BODY, p.body, "mujoco.body", "body")
                              : mj_name2id(m, mjOBJ_BODY, p.body.c_str());
@@ -304,7 +302,7 @@ class MujocoPlant::Scratch final : public BlockScratch {
   // Every joint at qpos0 but the pitch joint at `pitch`, at rest; the sensors computed.
   void rest(double pitch) {
     mj_resetData(own_, data_);
-    data_->qpos[model_->pitch_qpos] = pitch;
+    data_->qpos[own_->jnt_qposadr[model_->pitch_joint]] = pitch;
     compute_signals();
   }
 
