@@ -11,10 +11,12 @@
 #include <CLI/CLI.hpp>
 
 #include "cbbg/apps/commands.h"
+#include "cbbg/apps/drive_command.h"
 #include "cbbg/apps/errors.h"
 #include "cbbg/apps/eval_command.h"
 #include "cbbg/apps/export_command.h"
 #include "cbbg/apps/figures.h"
+#include "cbbg/apps/robot_command.h"
 #include "cbbg/diagrams/presets.h"
 #include "cbbg/experiments/run_names.h"
 
@@ -217,6 +219,47 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
                    "with the supervisor and the mixer at this omega, 0 to 1, no exploration")
       ->check(kDecimal);
 
+  DriveOptions drive;
+  CLI::App* drive_app = app.add_subcommand(
+      "drive", "drive a robot over UDP in real time (cbbg robot, or a real one): a run's results");
+  drive_app->add_option("--controller", drive.controller,
+                        "an arm: cbbg (learns on; default), pd_only, bg_only, a registered one");
+  drive_app->add_flag("--policy", drive.policy,
+                      "the arm's learnt actor alone, frozen, with the weights of --load-weights");
+  drive_app->add_option("--load-weights", drive.weights_file,
+                        "weights to start learning from, or (--policy) to run");
+  drive_app->add_option("--config", drive.config_file, "a YAML config (keys: `cbbg list`)");
+  drive_app->add_option("--set", drive.sets, "override one key (repeatable)");
+  drive_app->add_option("--robot", drive.robot,
+                        "the robot's HOST:PORT (default remote.host:remote.port, 127.0.0.1:5005)");
+  drive_app->add_option("--bind", drive.bind,
+                        "this end's HOST:PORT (default remote.bind_host:bind_port, 127.0.0.1:0)");
+  drive_app->add_option("--key-file", drive.key_file,
+                        "a file holding the key shared with the robot");
+  drive_app->add_option("--duration", drive.duration, "s per trial (trial.duration)")
+      ->check(kDecimal);
+  drive_app->add_option("--trials", drive.trials, "trials in all (realtime.trials; default 1)");
+  drive_app->add_option("--out,-o", drive.out, "results directory (default: drive)");
+  drive_app->add_flag("--replace", drive.replace, "replace an earlier run's results at --out");
+  drive_app->add_flag("!--no-figures", drive.figures, "skip the figures");
+
+  RobotOptions robot;
+  CLI::App* robot_app = app.add_subcommand(
+      "robot", "serve a simulated robot (plant.kind's) over UDP in real time, for cbbg drive");
+  robot_app->add_option("--config", robot.config_file, "a YAML config: plant.*, trial.period");
+  robot_app->add_option("--set", robot.sets, "override one key (repeatable)");
+  robot_app->add_option("--bind", robot.bind,
+                        "HOST:PORT to serve on (default 127.0.0.1:5005; port 0: any, printed)");
+  robot_app->add_option("--key-file", robot.key_file, "a file holding the key shared with drive");
+  robot_app
+      ->add_option("--deadline", robot.deadline,
+                   "a torque must come within this fraction of a period (default 0.5)")
+      ->check(kDecimal);
+  robot_app->add_option("--timeout-periods", robot.timeout_periods,
+                        "periods without a torque that end a session (default 10)");
+  robot_app->add_option("--sessions", robot.sessions,
+                        "sessions to serve, then exit (default 0: until SIGINT)");
+
   CLI::App* list_app =
       app.add_subcommand("list", "list the diagrams, the blocks and every config key");
   bool keys_markdown = false;
@@ -255,6 +298,8 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
   try {
     if (eval_app->parsed()) return eval_command(eval);
     if (export_app->parsed()) return export_command(export_options);
+    if (drive_app->parsed()) return drive_command(drive);
+    if (robot_app->parsed()) return robot_command(robot);
     if (graph_app->parsed()) return graph_command(graph);
     if (plot_app->parsed()) return plot_command(plot_directory);
     if (replay_app->parsed()) return replay_command(replay);

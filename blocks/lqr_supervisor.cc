@@ -57,4 +57,15 @@ LqrSupervisor::LqrSupervisor(std::string name, const plant::LinearModel& model,
       {&measured}, "a_S = -K x, the LQR torque");
 }
 
+codegen::CCalculation LqrSupervisor::c_calculation(int, const Context&) const {
+  codegen::CCalculation c;
+  c.constants = {{"gain", {gain_[0], gain_[1], gain_[2], gain_[3]}, true}};
+  // x as the C++ forms it, then -K x summed in the order of Eigen's fixed-size dot.
+  c.body =
+      "  real x[4], kx;\n  x[0] = in0[0];\n  x[1] = (in0[2] + in0[3]) / (real)2;\n"
+      "  x[2] = in0[1];\n  x[3] = (in0[4] + in0[5]) / (real)2;\n" +
+      codegen::c_dot("kx", "$gain", "x", 4) + "  out[0] = -kx;\n";
+  return c;
+}
+
 }  // namespace cbbg::blocks

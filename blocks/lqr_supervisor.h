@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/parameters.h"
 #include "cbbg/plant/linearization.h"
@@ -45,7 +46,7 @@ struct LqrSupervisorParams {
 /// input in that order), Q = diag(q), R = r.
 /// K is computed once, at construction.
 /// Parameters: the plant's linearisation, q = supervisor.lqr_q, r = supervisor.lqr_r.
-class LqrSupervisor final : public Block {
+class LqrSupervisor final : public Block, public codegen::EmitsC {
  public:
   // Designed for `planar`, a plant linearised as plant::linearize_planar_upright is
   // (x = (theta_b, phi, theta_b', phi'), u = the torque on both wheels): the plant in the loop's
@@ -58,6 +59,9 @@ class LqrSupervisor final : public Block {
 
   // K, 1 x 4, on (theta_b, phi, theta_b', phi').
   const Eigen::RowVector4d& gain() const { return gain_; }
+
+  // a_S = -K x as C, K a constant (cbbg export --omega with supervisor.kind: lqr).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
  private:
   Eigen::RowVector4d gain_;

@@ -1,6 +1,6 @@
 # Install rules and a CMake package: find_package(cbbg) gives every library as a target
 # (cbbg::framework, codegen, plant, blocks, config, parameters, diagrams, records, experiments, environment, store,
-# replay, and cli: the command line a user's program runs with its own registrations), the `cbbg`
+# realtime, replay, and cli: the command line a user's program runs with its own registrations), the `cbbg`
 # command, its plotting script and its replay page; find_package(cbbg COMPONENTS framework)
 # gives the framework alone, needing Eigen only. Headers install under include/cbbg/ with
 # their tree and are included as <cbbg/framework/...>, <cbbg/diagrams/...>, as the sources
@@ -10,13 +10,13 @@
 include(CMakePackageConfigHelpers)
 
 set(CBBG_LIBRARIES cbbg_framework cbbg_codegen cbbg_plant cbbg_blocks cbbg_config cbbg_parameters cbbg_diagrams
-                   cbbg_records cbbg_experiments cbbg_environment cbbg_store cbbg_replay
-                   cbbg_cli)
+                   cbbg_records cbbg_experiments cbbg_environment cbbg_store cbbg_realtime
+                   cbbg_replay cbbg_cli)
 install(TARGETS ${CBBG_LIBRARIES} EXPORT cbbgTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(folder framework codegen plant blocks config parameters diagrams records experiments environment store
-               replay)
+               realtime replay)
   install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/${folder}
           FILES_MATCHING PATTERN "*.h" PATTERN "simbody" EXCLUDE PATTERN "node_modules" EXCLUDE)
 endforeach()

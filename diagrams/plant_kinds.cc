@@ -7,6 +7,8 @@
 #include "cbbg/framework/number_text.h"
 #include "cbbg/plant/analytic_plant.h"
 #include "cbbg/plant/simbody_plant.h"
+#include "cbbg/realtime/remote_params.h"
+#include "cbbg/realtime/remote_plant.h"
 #ifdef CBBG_WITH_MUJOCO
 #include "cbbg/plant/mujoco/mujoco_params.h"
 #include "cbbg/plant/mujoco/mujoco_plant.h"
@@ -105,6 +107,41 @@ PlantKind mujoco_kind() {
 }
 #endif
 
+// remote.* as the link to the robot: its address, this end's, the key, the timeouts.
+realtime::LinkOptions link_options(const parameters::Parameters& p) {
+  const auto remote = config::read_section<realtime::RemoteParams>(p.own, "remote");
+  const auto address = [](std::string host, long long port) {
+    return realtime::Address{host == "localhost" ? "127.0.0.1" : std::move(host),
+                             static_cast<std::uint16_t>(port)};
+  };
+  realtime::LinkOptions link;
+  link.robot = address(remote.host, remote.port);
+  link.local = address(remote.bind_host, remote.bind_port);
+  if (!remote.key_file.empty())
+    link.key = realtime::read_key_file(remote.key_file, "remote.key_file");
+  link.period = p.trial.period;
+  link.timeout_periods = static_cast<int>(remote.timeout_periods);
+  link.connect_timeout = remote.connect_timeout;
+  link.controller = "cbbg " + p.run.experiment + " of";
+  for (const std::string& arm : p.run.arms) link.controller += " " + arm;
+  link.signals = plant::two_wheeler_signals();
+  return link;
+}
+
+// A two-wheeler at the other end of a link (cbbg drive), sized as plant.* says.
+PlantKind remote_kind() {
+  return {.name = "remote",
+          .description =
+              "a robot over UDP in real time: cbbg robot, or a real one speaking "
+              "docs/realtime.md (remote.*)",
+          .make =
+              [](const std::string& name, const parameters::Parameters& p) {
+                return std::make_unique<realtime::RemotePlant>(name, link_options(p),
+                                                               p.plant.robot);
+              },
+          .robot = kTwoWheeler};
+}
+
 // The registered kind named `name`, or null.
 const PlantKind* find_kind(std::string_view name) {
   for (const PlantKind& kind : kinds()) {
@@ -126,6 +163,8 @@ bool register_library_plant_kinds() {
   config::register_section<plant::MujocoParams>("mujoco");
   register_plant_kind(mujoco_kind());
 #endif
+  config::register_section<realtime::RemoteParams>("remote");
+  register_plant_kind(remote_kind());
   return true;
 }
 

@@ -62,7 +62,8 @@ struct PlantKind {
 void register_plant_kind(PlantKind kind);
 
 // The library's kinds beyond simbody and analytic: mujoco, in a build with MuJoCo (its section
-// mujoco.* with it). Run once before main by kLibraryPlantKindsRegistered.
+// mujoco.* with it), and remote, a robot over the real-time link (remote.*; cbbg drive). Run
+// once before main by kLibraryPlantKindsRegistered.
 bool register_library_plant_kinds();
 [[maybe_unused]] inline const bool kLibraryPlantKindsRegistered = register_library_plant_kinds();
 

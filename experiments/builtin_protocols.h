@@ -11,5 +11,6 @@ Protocol exp2_protocol();      // exp2.cc
 Protocol exp3_protocol();      // exp3.cc
 Protocol evaluate_protocol();  // evaluate.cc
 Protocol transfer_protocol();  // transfer.cc
+Protocol realtime_protocol();  // realtime.cc
 
 }  // namespace cbbg::experiments

@@ -12,8 +12,8 @@ namespace {
 
 std::vector<Protocol>& registry() {
   static std::vector<Protocol> all = [] {
-    std::vector<Protocol> library{exp1_protocol(), exp2_protocol(), exp3_protocol(),
-                                  evaluate_protocol(), transfer_protocol()};
+    std::vector<Protocol> library{exp1_protocol(),     exp2_protocol(),     exp3_protocol(),
+                                  evaluate_protocol(), transfer_protocol(), realtime_protocol()};
     for (const Protocol& protocol : library) {
       config::register_keys(protocol.keys, protocol.keys_after);
     }

@@ -137,7 +137,6 @@ void TrialRunner::check_learning_signals(double time, const double* values) cons
 
 TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
   Context& context = simulator_.context();
-  loop_->start_trial(context, theta0);
   telemetry_->clear();
   if (options_.keep_in_memory) {
     // Room for every tick before the trial starts: logging never allocates while ticking.
@@ -151,6 +150,7 @@ TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
 
   TrialOutcome outcome;
   try {
+    loop_->start_trial(context, theta0);  // a robot's link may be stopped already here
     simulator_.initialize();
     const SimulationStatus status = simulator_.advance_to(duration);
     outcome.status = status.terminated ? TrialStatus::kFailed : TrialStatus::kSuccess;
@@ -160,6 +160,13 @@ TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
     outcome.status = TrialStatus::kDiverged;
     outcome.message = error.what();
     outcome.final_theta = std::numeric_limits<double>::quiet_NaN();
+  } catch (const SimulationStopped& error) {
+    outcome.status = TrialStatus::kStopped;
+    outcome.message = error.what();
+    outcome.final_theta = ticks_ == 0
+                              ? std::numeric_limits<double>::quiet_NaN()
+                              : loop_->diagram->eval_output(
+                                    context, loop_->plant->state_output())[loop_->signals.pitch];
   }
   outcome.steps = ticks_;
   finish_oscillation(outcome);

@@ -46,7 +46,8 @@ class TrialRunner {
               TelemetryOptions telemetry = {});
 
   // Runs trial number `trial` from `theta0` until failure or `duration`. A non-finite state
-  // or an integrator failure ends the trial as diverged; the next trial starts clean.
+  // or an integrator failure ends the trial as diverged; the next trial starts clean. A
+  // SimulationStopped (a robot's link) ends it as stopped.
   TrialOutcome run_trial(double theta0, double duration, int trial = 1);
 
   Context& context() { return simulator_.context(); }

@@ -42,6 +42,14 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A simulation stopped from outside the model, which did nothing wrong: a block that drives a
+// robot over a link lost it, or was asked to stop (SIGINT). A trial so stopped is neither a
+// success nor a failure of what it tested.
+class SimulationStopped : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // How the simulator walks the diagram at each tick; both compute the same values, bit for bit.
 enum class Schedule {
   // A flat plan laid out at initialize() (compiled_schedule.h): the default.

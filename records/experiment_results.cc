@@ -20,6 +20,8 @@ const char* to_string(TrialStatus status) {
       return "failed";
     case TrialStatus::kDiverged:
       return "diverged";
+    case TrialStatus::kStopped:
+      return "stopped";
   }
   return "unknown";
 }

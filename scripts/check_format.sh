@@ -3,7 +3,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
-mapfile -t files < <(find framework plant blocks config parameters diagrams records experiments environment store replay apps python \
+mapfile -t files < <(find framework codegen plant realtime blocks config parameters diagrams records experiments environment store replay apps python \
   tests bench examples \
   \( -name '*.h' -o -name '*.cc' \) -type f 2>/dev/null | sort)
 unformatted=()

@@ -59,7 +59,7 @@ TRIALS_COLUMNS = ("arm", "seed", "trial", "failed", "steps", "mean_temperature",
                   "mean_entropy", "final_theta", "status")
 STEPS_KEY_COLUMNS = ("arm", "seed", "trial")
 STEPS_PITCH_COLUMNS = ("t", "theta_b")
-STATUSES = ("success", "failed", "diverged")
+STATUSES = ("success", "failed", "diverged", "stopped")
 
 FIGURE_SIZE = (8.0, 4.5)  # inches
 FIGURE_DPI = 100

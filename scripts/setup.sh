@@ -12,7 +12,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 packages=(
   build-essential cmake ninja-build pkg-config git
   libsimbody-dev libeigen3-dev libspdlog-dev libboost-dev
-  libcli11-dev libyaml-cpp-dev nlohmann-json3-dev
+  libcli11-dev libyaml-cpp-dev nlohmann-json3-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   graphviz python3 python3-dev python3-matplotlib python3-numpy pybind11-dev
   # plant.kind mujoco; MuJoCo's CMake package names libqhull_r's headers

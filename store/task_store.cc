@@ -39,8 +39,8 @@ double parse_double(const std::string& text, const std::string& source) {
 }
 
 TrialStatus parse_status(const std::string& text, const std::string& source) {
-  for (const TrialStatus status :
-       {TrialStatus::kSuccess, TrialStatus::kFailed, TrialStatus::kDiverged}) {
+  for (const TrialStatus status : {TrialStatus::kSuccess, TrialStatus::kFailed,
+                                   TrialStatus::kDiverged, TrialStatus::kStopped}) {
     if (text == to_string(status)) return status;
   }
   throw std::runtime_error(source + ": unknown trial status '" + text + "'");

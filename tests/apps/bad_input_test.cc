@@ -212,6 +212,30 @@ std::vector<BadInput> bad_inputs() {
       {eval + "--push-time 0x10 --push-torque 2 --push-duration 1",
        "--push-time: must be a decimal number; got '0x10'"},
       {eval + "--set rbf.centres=[-1,0,1]", "was made for rbf.centres"},
+      // drive and robot: refused before any datagram or file.
+      {"drive --controller nope --out {S}/d", "--controller: arms[0] must be one of"},
+      {"drive --robot 127.0.0.1 --out {S}/d",
+       "--robot must be HOST:PORT, HOST an IPv4 address or localhost and PORT 0..65535"},
+      {"drive --bind robot:1 --out {S}/d", "--bind must be HOST:PORT"},
+      {"drive --duration 0 --out {S}/d", "--duration must be a finite number > 0 (s); got 0"},
+      {"drive --trials 0 --out {S}/d", "--trials must be at least 1; got 0"},
+      {"drive --key-file {S}/missing.key --out {S}/d",
+       "--key-file: cannot read the key file '{S}/missing.key'"},
+      {"drive --policy --out {S}/d",
+       "realtime.loop policy (cbbg drive --policy) runs learnt weights: give --load-weights"},
+      {"drive --policy --controller pd_only --load-weights {S}/w.txt --out {S}/d",
+       "realtime.loop policy: arm 'pd_only' has no learnt actor to run alone"},
+      {"drive --set remote.host=robot --out {S}/d",
+       "remote.host must be an IPv4 address or localhost; got 'robot'"},
+      {"drive --set remote.port=70000 --out {S}/d", "remote.port"},
+      {"drive --out {S}/mine", "--out '{S}/mine'"},
+      {"robot --bind nope", "--bind must be HOST:PORT"},
+      {"robot --deadline 2", "--deadline must be a fraction of the period in (0, 1]; got 2"},
+      {"robot --timeout-periods 0", "--timeout-periods must be from 1 to 1000; got 0"},
+      {"robot --sessions -1", "--sessions must be 0 (until stopped) or more; got -1"},
+      {"robot --key-file {S}/missing.key", "--key-file: cannot read the key file"},
+      {"robot --set plant.kind=remote",
+       "cbbg robot serves a simulated plant; plant.kind remote is cbbg drive's side"},
       // Sweeps: run --grid / --shard, merge, status.
       {quick + "--grid actor.alpha", "--grid actor.alpha: give KEY=V1,V2,..."},
       {quick + "--grid actor.alpha=0.1,fast",
@@ -279,7 +303,7 @@ TEST(BadInput, EveryCaseExitsTwoWithOneLineAndLeavesEverythingAsItWas) {
   const auto before = cbbg::testing::tree_of(scratch);
 
   const std::vector<BadInput> cases = bad_inputs();
-  ASSERT_EQ(cases.size(), 142u);  // the README counts them: a case dropped shows here
+  ASSERT_EQ(cases.size(), 159u);  // the README counts them: a case dropped shows here
   for (const BadInput& input : cases) {
     const std::string arguments = expand(input.arguments, scratch.string());
     SCOPED_TRACE(arguments);

@@ -89,7 +89,7 @@ TEST_F(CbbgCommand, OutOfRangeAndNonFiniteValuesExitTwo) {
   EXPECT_EQ(outcome.exit_code, 2);
   EXPECT_EQ(outcome.output,
             "cbbg: error: --experiment exp4: experiment must be one of exp1, exp2, exp3, evaluate, "
-            "transfer, cbbg, cbbg_weighted, bg_only, cb_only, pd_only; got 'exp4'\n");
+            "transfer, realtime, cbbg, cbbg_weighted, bg_only, cb_only, pd_only; got 'exp4'\n");
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "cbbg/apps/learnt_policy.h"
+#include "cbbg/blocks/lqr_supervisor.h"
 #include "cbbg/blocks/pd_supervisor.h"
 #include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/framework/block_harness.h"
@@ -173,33 +174,55 @@ TEST_P(PolicyExport, TheFloatExportStaysWithinATenThousandthOfAPercent) {
 
 // With --omega, the export is the whole CB-BG controller at that omega without exploration:
 // a = omega a_A + (1 - omega) a_S, the supervisor and the mixer written by their blocks; the
-// same to the bit as the C++ blocks' a_A (the actor's, recorded) and a_S (the PD supervisor's).
-TEST(PolicyExportWithOmega, TheMixedPolicyGivesTheCppBlocksActionToTheBit) {
-  const ScratchDirectory scratch;
-  const fs::path weights_file = scratch.path() / "weights.txt";
-  const Outcome learnt = cbbg(
-      "run --experiment exp3 --seeds 1 --set 'arms=[cbbg]' --set plant.kind=analytic "
-      "--no-figures --no-replay --out " +
-      (scratch.path() / "run").string() + " --save-weights " + weights_file.string());
-  ASSERT_EQ(learnt.exit_code, 0) << learnt.output;
-  const Recording recording = record_trial(store::load_weights(weights_file), "pitch");
-  ASSERT_EQ(recording.action.size(), 2000u);
-  const fs::path out = scratch.path() / "mixed";
-  const Outcome exported = cbbg("export --load-weights " + weights_file.string() +
-                                " --omega 0.25 --out " + out.string());
-  ASSERT_EQ(exported.exit_code, 0) << exported.output;
-  const std::vector<double> actions = exported_actions(out, "cbbg_policy", recording);
-  ASSERT_EQ(actions.size(), recording.action.size());
-  BlockHarness<blocks::PdSupervisor> supervisor("supervisor", blocks::PdSupervisorParams{});
-  const double w = 0.25;
-  int differing = 0;
-  for (std::size_t t = 0; t < actions.size(); ++t) {
-    supervisor.set_input("measured", Eigen::Map<const Vector>(recording.measured[t].data(), 6));
-    const double expected =
-        w * recording.action[t] + (1.0 - w) * supervisor.scalar_output("action");
-    differing += actions[t] != expected;
+// same to the bit as the C++ blocks' a_A (the actor's, recorded) and a_S (the supervisor's:
+// the PD's, or with supervisor.kind: lqr the LQR's, its gains designed on the same robot).
+class PolicyExportWithOmega : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const Outcome learnt = cbbg(
+        "run --experiment exp3 --seeds 1 --set 'arms=[cbbg]' --set plant.kind=analytic "
+        "--no-figures --no-replay --out " +
+        (scratch_.path() / "run").string() + " --save-weights " + weights_file().string());
+    ASSERT_EQ(learnt.exit_code, 0) << learnt.output;
+    recording_ = record_trial(store::load_weights(weights_file()), "pitch");
+    ASSERT_EQ(recording_.action.size(), 2000u);
   }
-  EXPECT_EQ(differing, 0) << "of " << actions.size() << " ticks";
+  fs::path weights_file() const { return scratch_.path() / "weights.txt"; }
+
+  // The ticks where the export of `flags` differs from omega a_A + (1 - omega) a_S, a_S the
+  // `supervisor` block's.
+  template <typename Supervisor>
+  int differing_ticks(const std::string& flags, BlockHarness<Supervisor>& supervisor) {
+    const fs::path out = scratch_.path() / "mixed";
+    const Outcome exported = cbbg("export --load-weights " + weights_file().string() +
+                                  " --omega 0.25 --out " + out.string() + flags);
+    EXPECT_EQ(exported.exit_code, 0) << exported.output;
+    const std::vector<double> actions = exported_actions(out, "cbbg_policy", recording_);
+    EXPECT_EQ(actions.size(), recording_.action.size());
+    const double w = 0.25;
+    int differing = 0;
+    for (std::size_t t = 0; t < actions.size(); ++t) {
+      supervisor.set_input("measured", Eigen::Map<const Vector>(recording_.measured[t].data(), 6));
+      const double expected =
+          w * recording_.action[t] + (1.0 - w) * supervisor.scalar_output("action");
+      differing += actions[t] != expected;
+    }
+    return differing;
+  }
+
+  ScratchDirectory scratch_;
+  Recording recording_;
+};
+
+TEST_F(PolicyExportWithOmega, TheMixedPolicyGivesTheCppBlocksActionToTheBit) {
+  BlockHarness<blocks::PdSupervisor> supervisor("supervisor", blocks::PdSupervisorParams{});
+  EXPECT_EQ(differing_ticks("", supervisor), 0) << "of 2000 ticks";
+}
+
+TEST_F(PolicyExportWithOmega, AnLqrSupervisorIsWrittenAsCToTheBitToo) {
+  BlockHarness<blocks::LqrSupervisor> supervisor("supervisor", plant::RobotParams{},
+                                                 blocks::LqrSupervisorParams{});
+  EXPECT_EQ(differing_ticks(" --set supervisor.kind=lqr", supervisor), 0) << "of 2000 ticks";
 }
 
 INSTANTIATE_TEST_SUITE_P(Views, PolicyExport,

@@ -330,12 +330,13 @@ TEST(Experiments, TheRunsNamesComeFromTheProtocolAndPresetTables) {
   run.experiment = "learnt_actor";
   EXPECT_THAT([&] { check_run_names(run); },
               ::testing::ThrowsMessage<config::ConfigError>(
-                  "experiment must be one of exp1, exp2, exp3, evaluate, transfer, cbbg, "
+                  "experiment must be one of exp1, exp2, exp3, evaluate, transfer, realtime, cbbg, "
                   "cbbg_weighted, bg_only, "
                   "cb_only, pd_only; got 'learnt_actor'"));
   std::vector<std::string> protocols;
   for (const auto& protocol : protocol_names()) protocols.push_back(protocol.name);
-  EXPECT_EQ(protocols, (std::vector<std::string>{"exp1", "exp2", "exp3", "evaluate", "transfer"}));
+  EXPECT_EQ(protocols,
+            (std::vector<std::string>{"exp1", "exp2", "exp3", "evaluate", "transfer", "realtime"}));
 }
 
 TEST(ResultsWriter, ConfigYamlRecordsTheArmsTheProtocolCompared) {

@@ -179,6 +179,8 @@ TEST(Protocols, NoCodeOutsideAProtocolsFilesNamesIt) {
                                                experiments / "transfer.h",
                                                experiments / "transfer.cc",
                                                experiments / "transfer_params.h",
+                                               experiments / "realtime.cc",
+                                               experiments / "realtime_params.h",
                                                experiments / "experiments.h",
                                                source / "parameters" / "parameters.h"};
   int files = 0;
@@ -193,7 +195,7 @@ TEST(Protocols, NoCodeOutsideAProtocolsFilesNamesIt) {
       std::stringstream text;
       text << in.rdbuf();
       for (const char* name :
-           {"\"exp1\"", "\"exp2\"", "\"exp3\"", "\"evaluate\"", "\"transfer\""}) {
+           {"\"exp1\"", "\"exp2\"", "\"exp3\"", "\"evaluate\"", "\"transfer\"", "\"realtime\""}) {
         EXPECT_EQ(text.str().find(name), std::string::npos) << entry.path() << ": " << name;
       }
       if (std::string(folder) == "store") {  // below the protocols: it knows their schema alone
