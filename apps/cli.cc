@@ -255,6 +255,9 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
       ->add_option("--deadline", robot.deadline,
                    "a torque must come within this fraction of a period (default 0.5)")
       ->check(kDecimal);
+  robot_app->add_flag("--lockstep", robot.lockstep,
+                      "wait for each torque instead of holding the last (a simulator in the "
+                      "loop: the trial is the simulated one, its pace not real)");
   robot_app->add_option("--timeout-periods", robot.timeout_periods,
                         "periods without a torque that end a session (default 10)");
   robot_app->add_option("--sessions", robot.sessions,

@@ -38,6 +38,7 @@ realtime::ServeOptions serve_options(const RobotOptions& options) {
                                 std::to_string(options.sessions));
   }
   serve.deadline = options.deadline;
+  serve.lockstep = options.lockstep;
   serve.timeout_periods = static_cast<int>(options.timeout_periods);
   serve.sessions = options.sessions;
   serve.report = [](const std::string& line) {

@@ -15,6 +15,7 @@ struct RobotOptions {
   std::string bind = "127.0.0.1:5005";  // --bind HOST:PORT (port 0: any, printed)
   std::filesystem::path key_file;       // --key-file; empty: no key
   double deadline = 0.5;                // --deadline: of a period, in (0, 1]
+  bool lockstep = false;                // --lockstep: wait for each torque (ServeOptions)
   long long timeout_periods = 10;       // --timeout-periods
   long long sessions = 0;               // --sessions; 0: until SIGINT
 };

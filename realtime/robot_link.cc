@@ -18,17 +18,6 @@ namespace {
 // How often the hello is sent again while no welcome came: a datagram may be lost.
 constexpr double kHelloRetry = 0.2;  // s
 
-Clock::time_point after_seconds(double seconds) {
-  return Clock::now() +
-         std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-}
-
-std::string join(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += (text.empty() ? "" : ",") + name;
-  return text;
-}
-
 std::mutex failure_mutex;
 std::string failure;  // guarded by failure_mutex
 
@@ -86,18 +75,19 @@ void RobotLink::open_session() {
   if (!endpoint_) endpoint_ = std::make_unique<UdpEndpoint>(options_.local);
   robot_ = to_sockaddr(options_.robot);
   session_ = std::random_device{}() | 1u;  // never 0: a zeroed datagram names no session
-  const Clock::time_point give_up = after_seconds(options_.connect_timeout);
+  const Clock::time_point give_up = Clock::now() + to_duration(options_.connect_timeout);
   while (Clock::now() < give_up) {
     send({DatagramKind::kHello, 0, 0, 0.0, now_ns(), {options_.period}, options_.controller});
-    const Clock::time_point retry = std::min(give_up, after_seconds(kHelloRetry));
+    const Clock::time_point retry = std::min(give_up, Clock::now() + to_duration(kHelloRetry));
     const std::optional<Datagram> answer = next_from_robot(retry);
     if (!answer || answer->kind != DatagramKind::kWelcome) continue;
     const std::size_t newline = std::min(answer->text.find('\n'), answer->text.size());
     const std::string served = answer->text.substr(std::min(newline + 1, answer->text.size()));
     open_ = true;
-    if (served != join(options_.signals)) {
+    if (served != joined_names(options_.signals)) {
       const std::string reason = "the robot at " + options_.robot.text() + " serves the signals '" +
-                                 served + "'; the loop reads '" + join(options_.signals) + "'";
+                                 served + "'; the loop reads '" + joined_names(options_.signals) +
+                                 "'";
       stop(reason.substr(0, kMaxTextBytes));
       throw SimulationStopped(lose(reason));
     }
@@ -128,7 +118,7 @@ const std::vector<double>& RobotLink::exchange(double tau_left, double tau_right
 
 const std::vector<double>& RobotLink::await_measurement(bool first) {
   const double silence = options_.timeout_periods * options_.period;
-  const Clock::time_point lost = after_seconds(silence);
+  const Clock::time_point lost = Clock::now() + to_duration(silence);
   std::optional<Datagram> newest;
   // Waits for one measurement, then takes what else is queued without waiting: a controller
   // that fell behind answers the newest, never a backlog of old ones.

@@ -19,16 +19,6 @@ namespace {
 constexpr double kStartTimeout = 10.0;  // s
 constexpr double kIdlePoll = 0.2;       // s
 
-Clock::duration seconds(double value) {
-  return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(value));
-}
-
-std::string join(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) text += (text.empty() ? "" : ",") + name;
-  return text;
-}
-
 class Session {
  public:
   // `welcome`: what answers the controller's hello, sent again if it says hello again.
@@ -44,7 +34,7 @@ class Session {
   // Until a stop (either side's), or the link's silence. Returns the session's figures.
   ServeFigures run() {
     send(welcome_);
-    std::optional<Datagram> start = await(Clock::now() + seconds(kStartTimeout), std::nullopt);
+    std::optional<Datagram> start = await(Clock::now() + to_duration(kStartTimeout), std::nullopt);
     while (start) start = trial(start->values[0]);
     send({DatagramKind::kStop, id_, 0, 0.0, now_ns(), {}, end_reason_});
     figures_.last_end = end_reason_;
@@ -60,7 +50,7 @@ class Session {
     silent_ = 0;
     const Clock::time_point t0 = Clock::now();
     for (long long k = 0;; ++k) {
-      std::optional<Datagram> start = tick(t0 + k * seconds(robot_.period()), k);
+      std::optional<Datagram> start = tick(t0 + k * to_duration(robot_.period()), k);
       if (start || ended_) return start;
       ++figures_.link.ticks;
       if (!robot_does([&] { robot_.step(torque_[0], torque_[1]); }, "its simulation failed")) {
@@ -70,10 +60,11 @@ class Session {
   }
 
   // Tick k, due at `due`: the measurement sent, then the torque that answers it taken, or
-  // the last one held (a deadline miss). Returns a start that came instead.
+  // the last one held (a deadline miss; in lockstep, waited for and taken late). Returns a
+  // start that came instead.
   std::optional<Datagram> tick(Clock::time_point due, long long k) {
     const double period = robot_.period();
-    if (Clock::now() > due + seconds(options_.deadline * period)) ++figures_.overruns;
+    if (Clock::now() > due + to_duration(options_.deadline * period)) ++figures_.overruns;
     std::this_thread::sleep_until(due);
     std::vector<double> values = robot_.signals();
     values.push_back(round_trip_);
@@ -85,9 +76,14 @@ class Session {
           stamp,
           values,
           {}});
-    std::optional<Datagram> answer = await(due + seconds(options_.deadline * period), sequence_);
+    const Clock::time_point deadline = due + to_duration(options_.deadline * period);
+    const Clock::time_point silent_too_long =
+        due + to_duration(static_cast<double>(options_.timeout_periods) * period);
+    std::optional<Datagram> answer =
+        await(options_.lockstep ? silent_too_long : deadline, sequence_);
     if (answer && answer->kind != DatagramKind::kTorque) return answer;
     if (answer) {
+      if (Clock::now() > deadline) ++figures_.link.deadline_misses;  // only in lockstep
       torque_ = {answer->values[0], answer->values[1]};
       round_trip_ = static_cast<double>(now_ns() - stamp) * 1e-9;
       figures_.link.latencies.push_back(round_trip_);
@@ -95,7 +91,8 @@ class Session {
     } else if (!ended_) {
       round_trip_ = kMissedDeadline;
       ++figures_.link.deadline_misses;
-      if (++silent_ >= options_.timeout_periods) {
+      silent_ = options_.lockstep ? options_.timeout_periods : silent_ + 1;
+      if (silent_ >= options_.timeout_periods) {
         end("no torque for " + std::to_string(silent_) + " periods");
       }
     }
@@ -195,9 +192,9 @@ ServeFigures serve_robot(SimulatedRobot& robot, const ServeOptions& options) {
   options.report("serving on " + options.bind.host + ":" + std::to_string(endpoint.port()) +
                  ", a tick every " + format_number(robot.period()) + " s");
   ServeFigures figures;
-  const std::string welcome = options.name + "\n" + join(robot.signal_names());
+  const std::string welcome = options.name + "\n" + joined_names(robot.signal_names());
   while (!stop_requested() && (options.sessions == 0 || figures.sessions < options.sessions)) {
-    auto received = endpoint.receive_until(Clock::now() + seconds(kIdlePoll));
+    auto received = endpoint.receive_until(Clock::now() + to_duration(kIdlePoll));
     if (!received) continue;
     Decoded decoded = decode(received->bytes.data(), received->bytes.size(), options.key);
     if (!decoded.datagram || decoded.datagram->kind != DatagramKind::kHello) {

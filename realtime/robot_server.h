@@ -20,6 +20,10 @@ struct ServeOptions {
   Key key;
   // The torque answering a measurement must arrive within this fraction of the period.
   double deadline = 0.5;
+  // Lockstep: the robot waits for each torque (up to timeout_periods) instead of holding the
+  // last, as a simulator in the loop does: a late torque is counted, and applied. A trial is
+  // then the simulated one byte for byte however loaded the machine; its pace is not real.
+  bool lockstep = false;
   int timeout_periods = 10;
   long long sessions = 0;  // sessions to serve before returning; 0: until a stop is asked
   std::string name = "cbbg robot";

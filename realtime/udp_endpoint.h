@@ -28,6 +28,9 @@ Address parse_address(std::string_view text, std::string_view what);
 // Whether `host` is a dotted IPv4 address or "localhost".
 bool is_ipv4_host(const std::string& host);
 
+// `seconds` as the clock's duration.
+Clock::duration to_duration(double seconds);
+
 // Nanoseconds on the steady clock: the stamps datagrams carry.
 std::uint64_t now_ns();
 

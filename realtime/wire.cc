@@ -90,6 +90,12 @@ const char* to_string(Refusal refusal) {
   return "unknown";
 }
 
+std::string joined_names(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ",") + name;
+  return text;
+}
+
 Key read_key_file(const std::string& path, std::string_view what) {
   std::ifstream file(path, std::ios::binary);
   Key key((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());

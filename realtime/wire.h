@@ -55,6 +55,9 @@ struct Datagram {
 inline constexpr double kMissedDeadline = -1.0;
 inline constexpr double kNoTorqueAsked = -2.0;
 
+// `names` joined by commas: the signals as a welcome's text lists them.
+std::string joined_names(const std::vector<std::string>& names);
+
 // The shared key both sides sign with; empty: an unkeyed hash, which catches corruption only.
 using Key = std::string;
 

@@ -2,7 +2,9 @@
 # cbbg drive against cbbg robot over the loopback address, as a user runs them: a trial with
 # a third process forging datagrams at both ends is the simulated trial byte for byte, and
 # its results plot and replay; SIGINT at either end, a robot that dies, and a wrong key each
-# stop cleanly with the motors at zero and one line. Every process it starts it stops, by pid.
+# stop cleanly with the motors at zero and one line. The robots run in lockstep with long
+# timeouts, so that a loaded machine (ctest's other tests) changes none of it; the real-time
+# misses and timeouts are RealtimeLink's. Every process it starts it stops, by pid.
 #   test_drive_robot.sh CBBG SCRATCH_DIR
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -20,7 +22,8 @@ printf 'a key shared by both ends\n' >key
 start_robot() {
   local log="$1"
   shift
-  "$cbbg" robot --bind 127.0.0.1:0 --set plant.kind=analytic --deadline 1 "$@" >"$log" 2>&1 &
+  "$cbbg" robot --bind 127.0.0.1:0 --set plant.kind=analytic --lockstep --timeout-periods 200 \
+    "$@" >"$log" 2>&1 &
   robot_pid=$!
   pids+=("$robot_pid")
   for _ in $(seq 100); do
@@ -34,7 +37,7 @@ free_port() { python3 -c 'import socket; s=socket.socket(socket.AF_INET, socket.
 # Starts a 60 s pd_only drive against the robot into DIR (its log DIR.log): sets drive.
 start_drive() {
   "$cbbg" drive --controller pd_only --robot "127.0.0.1:$port" --duration 60 --no-figures \
-    --out "$1" >"$1.log" 2>&1 &
+    --set remote.timeout_periods="${2:-200}" --out "$1" >"$1.log" 2>&1 &
   drive=$!
   pids+=("$drive")
 }
@@ -49,12 +52,11 @@ python3 "$root/scripts/forge_datagrams.py" 'a key shared by both ends' "$port" "
 forger=$!
 pids+=("$forger")
 "$cbbg" drive --controller pd_only --robot "127.0.0.1:$port" --bind "127.0.0.1:$drive_port" \
-  --key-file key --duration 2 --out forged >drive1.log 2>&1 || fail "drive failed: $(cat drive1.log)"
+  --key-file key --duration 2 --set remote.timeout_periods=200 --out forged >drive1.log 2>&1 || fail "drive failed: $(cat drive1.log)"
 kill -TERM "$forger"
 wait "$forger" || true
 wait "$robot_pid" || fail "the robot did not end after its session: $(cat robot1.log)"
 [[ "$(column forged status)" == success ]] || fail "the trial did not balance: $(cat forged/trials.csv)"
-[[ "$(column forged deadline_misses)" == 0 ]] || fail "deadline misses on an idle link"
 (( "$(column forged refused)" > 0 )) || fail "the controller refused nothing of the forger's"
 grep -q 'session over (the controller stopped: the run is over)' robot1.log ||
   fail "the robot's session did not end as asked: $(cat robot1.log)"
@@ -98,7 +100,7 @@ grep -qx "cbbg: error: the robot at 127.0.0.1:$port stopped the session: the rob
 
 # 4. A robot that dies: lost after remote.timeout_periods, zero torque sent, exit 1.
 start_robot robot4.log
-start_drive robot_died
+start_drive robot_died 10
 sleep 1
 kill -KILL "$robot_pid"
 wait "$robot_pid" 2>/dev/null || true

@@ -54,8 +54,10 @@ class ServedRobot {
   }
   const Address& address() const { return address_; }
   ServeFigures figures() { return served_.get(); }
+  // In lockstep: a trial is the simulated one however loaded the machine running the test.
   static ServeOptions served_defaults() {
     ServeOptions options;
+    options.lockstep = true;
     return options;
   }
 
@@ -105,7 +107,6 @@ TEST(RealtimeLink, ATrialAgainstAServedRobotIsTheSimulatedTrialTickForTick) {
                    {"plant.kind=remote", "remote.port=" + std::to_string(served.address().port)}),
                1.0);
   const ServeFigures figures = served.figures();
-  ASSERT_EQ(figures.link.deadline_misses, 0) << "the trial met another robot: a torque was late";
   EXPECT_EQ(figures.sessions, 1);
   EXPECT_EQ(figures.link.refused_total(), 0);
   ASSERT_EQ(remote.cols(), simulated.cols());  // the whole trial: 1 s
@@ -132,9 +133,7 @@ class SilentRobot {
     const Datagram hello = next();
     EXPECT_EQ(hello.kind, DatagramKind::kHello);
     EXPECT_EQ(hello.text, "link_test");
-    std::string names;
-    for (const auto& name : plant::two_wheeler_signals())
-      names += (names.empty() ? "" : ",") + name;
+    const std::string names = joined_names(plant::two_wheeler_signals());
     send({DatagramKind::kWelcome, hello.session, 0, 0.0, 0, {kPeriod}, "silent\n" + names});
     const Datagram start = next();
     EXPECT_EQ(start.kind, DatagramKind::kStart);
@@ -174,7 +173,7 @@ TEST(RealtimeLink, ARobotSilentForTheTimeoutIsLostAtZeroTorque) {
 }
 
 TEST(RealtimeLink, AControllerSilentForTheTimeoutIsStoppedByTheRobot) {
-  ServeOptions options;
+  ServeOptions options;  // in real time: a torque not there by the deadline is missed
   options.timeout_periods = 3;
   ServedRobot served(options);
   RobotLink link(link_to(served.address()));
@@ -271,7 +270,7 @@ TEST(RealtimeLink, NoRobotThereIsAOneLineErrorAfterTheConnectTimeout) {
 // signed with another key, and well-formed ones of its own. Each end refuses them by reason,
 // and the trial is the simulated one still.
 TEST(RealtimeLink, WhatAThirdPartySendsIsRefusedAndNeverApplied) {
-  ServeOptions options;
+  ServeOptions options = ServedRobot::served_defaults();
   options.key = "shared key";
   ServedRobot served(options);
   // A port for the controller the forger can aim at: free once the probe is gone.
@@ -312,7 +311,6 @@ TEST(RealtimeLink, WhatAThirdPartySendsIsRefusedAndNeverApplied) {
   running = false;
   forger.join();
   const ServeFigures robot = served.figures();
-  ASSERT_EQ(robot.link.deadline_misses, 0) << "the trial met another robot: a torque was late";
   EXPECT_TRUE(same_bits(runner.telemetry().values(), simulated));
   for (const LinkFigures* end : {&controller, &robot.link}) {
     EXPECT_GT(end->refused[static_cast<std::size_t>(Refusal::kMalformed)], 0);
