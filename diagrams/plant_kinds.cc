@@ -110,13 +110,9 @@ PlantKind mujoco_kind() {
 // remote.* as the link to the robot: its address, this end's, the key, the timeouts.
 realtime::LinkOptions link_options(const parameters::Parameters& p) {
   const auto remote = config::read_section<realtime::RemoteParams>(p.own, "remote");
-  const auto address = [](std::string host, long long port) {
-    return realtime::Address{host == "localhost" ? "127.0.0.1" : std::move(host),
-                             static_cast<std::uint16_t>(port)};
-  };
-  realtime::LinkOptions link;
-  link.robot = address(remote.host, remote.port);
-  link.local = address(remote.bind_host, remote.bind_port);
+  realtime::LinkOptions link;  // the ports' ranges are their keys' (remote_params.h)
+  link.robot = realtime::address_of(remote.host, static_cast<std::uint16_t>(remote.port));
+  link.local = realtime::address_of(remote.bind_host, static_cast<std::uint16_t>(remote.bind_port));
   if (!remote.key_file.empty())
     link.key = realtime::read_key_file(remote.key_file, "remote.key_file");
   link.period = p.trial.period;

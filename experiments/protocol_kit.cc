@@ -65,11 +65,14 @@ std::vector<EvaluationRecord> evaluate_run(const parameters::Parameters& trainin
   return evaluate_weights(training, arm, run.weights ? &*run.weights : nullptr, run.seed);
 }
 
+void keep_learnt(const parameters::Parameters& p, const diagrams::ClosedLoop& loop,
+                 const Context& context, SeedRun& run) {
+  if (loop.learner.learns()) keep_weights(learnt_weights(loop, context, provenance(p, run)), run);
+}
+
 void finish_run(const parameters::Parameters& p, const diagrams::Arm& arm,
                 const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run) {
-  if (loop.learner.learns()) {
-    keep_weights(learnt_weights(loop, context, provenance(p, run)), run);
-  }
+  keep_learnt(p, loop, context, run);
   run.evaluation = evaluate_run(p, arm, run);
 }
 

@@ -51,7 +51,12 @@ SeedEvaluation evaluate_seed(const parameters::Parameters& training, const diagr
 std::vector<EvaluationRecord> evaluate_run(const parameters::Parameters& training,
                                            const diagrams::Arm& arm, const SeedRun& run);
 
-// The end of a run: what was learnt is kept (keep_weights), and the run evaluated
+// What `loop` learnt by now in `context`, kept (keep_weights); nothing for a loop that learns
+// nothing.
+void keep_learnt(const parameters::Parameters& p, const diagrams::ClosedLoop& loop,
+                 const Context& context, SeedRun& run);
+
+// The end of a run: what was learnt is kept (keep_learnt), and the run evaluated
 // (evaluate_run) into SeedRun::evaluation.
 void finish_run(const parameters::Parameters& p, const diagrams::Arm& arm,
                 const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run);

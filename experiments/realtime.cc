@@ -56,9 +56,7 @@ void drive(const parameters::Parameters& p, const diagrams::Arm& arm,
   }
   plant.link().stop("the run is over");
   for (auto& value : trial_values(whole)) run.figures.push_back(std::move(value));
-  if (loop.learner.learns()) {
-    keep_weights(learnt_weights(loop, runner.context(), provenance(p, run)), run);
-  }
+  keep_learnt(p, loop, runner.context(), run);
 }
 
 Figure run_figure(std::string name, std::string meaning) {

@@ -22,6 +22,10 @@ bool is_ipv4_host(const std::string& host) {
   return host == "localhost" || inet_pton(AF_INET, host.c_str(), &ignored) == 1;
 }
 
+Address address_of(std::string host, std::uint16_t port) {
+  return {host == "localhost" ? "127.0.0.1" : std::move(host), port};
+}
+
 Address parse_address(std::string_view text, std::string_view what) {
   const auto refuse = [&] {
     return std::invalid_argument(std::string(what) +
@@ -31,18 +35,15 @@ Address parse_address(std::string_view text, std::string_view what) {
   };
   const std::size_t colon = text.rfind(':');
   if (colon == std::string_view::npos) throw refuse();
-  Address address;
-  address.host = std::string(text.substr(0, colon));
-  if (!is_ipv4_host(address.host)) throw refuse();
-  if (address.host == "localhost") address.host = "127.0.0.1";
+  const std::string host(text.substr(0, colon));
+  if (!is_ipv4_host(host)) throw refuse();
   const std::string_view port = text.substr(colon + 1);
   unsigned value = 0;
   const auto [end, error] = std::from_chars(port.data(), port.data() + port.size(), value);
   if (port.empty() || error != std::errc() || end != port.data() + port.size() || value > 65535) {
     throw refuse();
   }
-  address.port = static_cast<std::uint16_t>(value);
-  return address;
+  return address_of(host, static_cast<std::uint16_t>(value));
 }
 
 Clock::duration to_duration(double seconds) {

@@ -21,6 +21,8 @@ struct Address {
   std::uint16_t port = 0;
   std::string text() const { return host + ":" + std::to_string(port); }
 };
+// `host` (checked by is_ipv4_host) and `port` as an address, localhost as 127.0.0.1.
+Address address_of(std::string host, std::uint16_t port);
 // `text` as HOST:PORT, HOST a dotted IPv4 address or "localhost", PORT 0..65535. Throws
 // std::invalid_argument naming `what` (a flag or key) and what is allowed.
 Address parse_address(std::string_view text, std::string_view what);
