@@ -212,12 +212,16 @@ int run_cli(int argc, char** argv, const std::filesystem::path& share) {
   export_app->add_option("--set", export_options.sets, "override one key (repeatable)");
   export_app->add_option("--out,-o", export_options.out, "the directory to write into")->required();
   export_app->add_option("--name", export_options.name,
-                         "prefix of the files and of the C identifiers (default: cbbg_policy)");
+                         "prefix of the files and of the C identifiers (default: cbbg_policy, "
+                         "with --learner cbbg_learner)");
   export_app->add_option("--scalar", export_options.scalar, "double (default) or float");
   export_app
       ->add_option("--omega", export_options.omega,
                    "with the supervisor and the mixer at this omega, 0 to 1, no exploration")
       ->check(kDecimal);
+  export_app->add_flag("--learner", export_options.learner,
+                       "the whole online learner, which goes on learning (its generators as "
+                       "run.seed's)");
 
   DriveOptions drive;
   CLI::App* drive_app = app.add_subcommand(

@@ -26,18 +26,29 @@ void check_omega(double omega) {
   }
 }
 
-// The C of the weights' policy: the actor alone, or with --omega the arm's whole controller.
+// The C of the weights' policy: the actor alone, with --omega the arm's whole controller, or
+// with --learner its whole online learner.
 codegen::CSources policy_sources(const ExportOptions& options,
                                  const parameters::Parameters& parameters,
                                  const experiments::LearntWeights& weights,
                                  const diagrams::ClosedLoopFactory& policy,
                                  const codegen::CExportOptions& c) {
   try {
-    if (!options.omega) return experiments::export_policy(parameters, policy, weights, c);
+    if (!options.omega && !options.learner)
+      return experiments::export_policy(parameters, policy, weights, c);
     const diagrams::Arm arm = diagrams::named_arm(weights.provenance.arm);
+    if (options.learner) {
+      codegen::CLearnerOptions learner;
+      learner.name = c.name;
+      learner.scalar = c.scalar;
+      learner.provenance = c.provenance;
+      return experiments::export_learner(parameters, arm.learner, weights, learner);
+    }
     return experiments::export_mixed_policy(parameters, arm.learner, weights, *options.omega, c);
   } catch (const std::invalid_argument& error) {
-    throw config::ConfigError(std::string("cannot export the policy: ") + error.what());
+    throw config::ConfigError(std::string(options.learner ? "cannot export the learner: "
+                                                          : "cannot export the policy: ") +
+                              error.what());
   }
 }
 
@@ -53,22 +64,26 @@ parameters::Parameters parameters_of(const ExportOptions& options,
   return diagrams::validated_parameters(weights_config(weights, options.config_file, options.sets));
 }
 
+std::string what_is_exported(const ExportOptions& options) {
+  if (options.learner) return "the whole online learner, its generators as run.seed's";
+  if (options.omega) {
+    return "the whole controller at omega " + format_number(*options.omega) + ", no exploration";
+  }
+  return "the actor alone";
+}
+
 // Where the code comes from: the weights file (its hash), who learnt them, and the keys that
 // give the weights their meaning.
 std::vector<std::string> provenance(const ExportOptions& options,
                                     const experiments::LearntWeights& weights) {
   const experiments::WeightsProvenance& from = weights.provenance;
   std::vector<std::string> lines = {
-      "The learnt policy of weights file '" + options.weights_file.filename().string() +
+      "From weights file '" + options.weights_file.filename().string() +
           "' (FNV-1a 64 of its bytes: " + store::text_hash(store::read_text(options.weights_file)) +
           "),",
       "learnt by arm " + from.arm + ", seed " + std::to_string(from.seed) + ", over " +
           std::to_string(from.trials) + " trials on plant kind " + from.plant + ".",
-      "Scalar: " + options.scalar +
-          (options.omega ? "; the whole controller at omega " + format_number(*options.omega) +
-                               ", no exploration"
-                         : "; the actor alone") +
-          ". Made with these keys:"};
+      "Scalar: " + options.scalar + "; " + what_is_exported(options) + ". Made with these keys:"};
   for (const blocks::LayoutEntry& entry : weights.layout) {
     std::string values;
     for (const double value : entry.values)
@@ -87,19 +102,25 @@ int export_command(const ExportOptions& options) {
   try {
     if (options.weights_file.empty()) throw config::ConfigError("--load-weights FILE is required");
     if (options.out.empty()) throw config::ConfigError("--out DIR is required");
-    if (!codegen::is_c_identifier(options.name)) {
+    const std::string name = options.name_or_default();
+    if (!codegen::is_c_identifier(name)) {
       throw config::ConfigError(
           "--name must be a C identifier (letters, digits and '_', not "
           "first a digit); got '" +
-          options.name + "'");
+          name + "'");
     }
     codegen::CExportOptions c;
-    c.name = options.name;
+    c.name = name;
     c.scalar = scalar_of(options.scalar);
     if (options.omega) check_omega(*options.omega);
+    if (options.omega && options.learner) {
+      throw config::ConfigError(
+          "--learner and --omega exclude each other: the learner mixes at its own omega "
+          "schedule");
+    }
     check_output_directory(options.out, "--out");
-    header = options.out / (options.name + ".h");
-    source = options.out / (options.name + ".c");
+    header = options.out / (name + ".h");
+    source = options.out / (name + ".c");
     for (const auto& file : {header, source})
       store::check_replaceable_file(file, "--out", kExportTag);
     const experiments::LearntWeights weights = store::load_weights(options.weights_file);

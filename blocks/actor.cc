@@ -92,12 +92,8 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
       UpdateWrites::kInPlace);  // every part is read before it is written
 }
 
-codegen::CCalculation Actor::c_calculation(int, const Context& context) const {
-  const ConstVectorView theta = weights(context);
-  codegen::CCalculation c;
-  c.constants = {{"theta", std::vector<double>(theta.begin(), theta.end()), true}};
-  c.body = codegen::c_dot("out[0]", "$theta", "in0", num_features_);
-  return c;
+codegen::CCalculation Actor::c_calculation(int, const Context&) const {
+  return {{}, codegen::c_dot("out[0]", "@weights", "in0", num_features_)};
 }
 
 ConstVectorView Actor::weights(const Context& context) const {
@@ -106,6 +102,31 @@ ConstVectorView Actor::weights(const Context& context) const {
 
 VectorView Actor::mutable_weights(Context& context) const {
   return VectorView(context.discrete_state(*this).data() + weights_.offset, weights_.size);
+}
+
+codegen::CCalculation Actor::c_update(int, const Context&) const {
+  // in0 features, in1 td_error, in2 a_S, in3 a_E, in4 omega; out0 a_A: the update's steps.
+  const std::string n = std::to_string(num_features_);
+  codegen::CCalculation c;
+  c.body = "  int i;\n";
+  if (!params_.frozen) {
+    c.constants = {codegen::c_number("alpha", params_.alpha)};
+    c.body +=
+        "  if (@has_previous[0] != 0) {\n    const real delta = in1[0];\n"
+        "    const real a_s = @previous_actions[0], a_e = @previous_actions[1];\n"
+        "    const real a_a = @previous_actions[2], w = @previous_actions[3];\n";
+    c.body += params_.rule == ActorRule::kImproved
+                  ? "    const real step = $alpha * delta * (w * (a_e - a_s) + (a_s - a_a));\n"
+                  : "    const real step = w * $alpha * delta * (a_e - a_a) + ((real)1 - w) * "
+                    "$alpha * (a_s - a_a);\n";
+    c.body += "    for (i = 0; i < " + n +
+              "; ++i) @@weights[i] = @weights[i] + step * @previous_features[i];\n  }\n";
+  }
+  c.body += "  for (i = 0; i < " + n + "; ++i) @@previous_features[i] = in0[i];\n" +
+            "  @@previous_actions[0] = in2[0];\n  @@previous_actions[1] = in3[0];\n"
+            "  @@previous_actions[2] = out0[0];\n  @@previous_actions[3] = in4[0];\n"
+            "  @@has_previous[0] = 1;\n";
+  return c;
 }
 
 }  // namespace cbbg::blocks

@@ -73,8 +73,9 @@ class Actor final : public Block, public Learner, public codegen::EmitsC {
  public:
   Actor(std::string name, int num_features, const ActorParams& params, double period);
 
-  // "actor_action" as C (cbbg export): the weights of `context` as constants.
+  // "actor_action" and the update as C (cbbg export; codegen::EmitsC).
   codegen::CCalculation c_calculation(int output, const Context& context) const override;
+  codegen::CCalculation c_update(int update, const Context& context) const override;
 
   Role learner_role() const override { return Role::kActor; }
   const Block& learner_block() const override { return *this; }

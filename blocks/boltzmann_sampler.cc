@@ -32,4 +32,19 @@ BoltzmannSampler::BoltzmannSampler(std::string name, const SamplerParams& params
   declare_periodic_update(period, 0.0, draw, UpdateWrites::kInPlace);  // writes only
 }
 
+codegen::CCalculation BoltzmannSampler::c_calculation(int, const Context&) const {
+  // in0 a_A, in1 T.
+  return {{codegen::c_number("k_b", params_.k_b)},
+          "  const real deviation = CBBG_SQRT($k_b * in1[0] / (real)2);\n"
+          "  out[0] = in0[0] + deviation * @noise[0];\n"};
+}
+
+codegen::CCalculation BoltzmannSampler::c_update(int, const Context&) const {
+  return {{}, "  @@noise[0] = CBBG_NORMAL(rng);\n", true};
+}
+
+codegen::CCalculation BoltzmannSampler::c_initialization(int, const Context&) const {
+  return {{}, "  @@noise[0] = CBBG_NORMAL(rng);\n", true};
+}
+
 }  // namespace cbbg::blocks

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/parameters.h"
 
@@ -39,9 +40,14 @@ struct SamplerParams {
 /// alternatives, drawing the same eps).
 ///
 /// Discrete state, per trial: noise eps (1).
-class BoltzmannSampler final : public Block {
+class BoltzmannSampler final : public Block, public codegen::EmitsC {
  public:
   BoltzmannSampler(std::string name, const SamplerParams& params, double period);
+
+  // Its outputs and updates as C (cbbg export; codegen::EmitsC).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
+  codegen::CCalculation c_update(int update, const Context& context) const override;
+  codegen::CCalculation c_initialization(int update, const Context& context) const override;
 
  private:
   SamplerParams params_;

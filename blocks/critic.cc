@@ -93,4 +93,48 @@ VectorView Critic::mutable_weights(Context& context) const {
   return VectorView(context.discrete_state(*this).data() + weights_.offset, weights_.size);
 }
 
+codegen::CCalculation Critic::c_calculation(int output, const Context&) const {
+  const int n = num_features_;
+  if (output == 0) return {{}, codegen::c_dot("out[0]", "@weights", "in0", n)};
+  // td_error: in0 features, in1 reward, in2 failed, as td_error() computes it.
+  codegen::CCalculation c;
+  c.constants = {codegen::c_number("gamma", params_.gamma)};
+  c.body = "  if (@has_previous[0] == 0) {\n    out[0] = 0;\n  } else {\n" +
+           std::string("    real next_value = 0, previous;\n    if (!(in2[0] > 0.5)) {\n") +
+           codegen::c_dot("next_value", "@weights", "in0", n) + "    }\n" +
+           codegen::c_dot("previous", "@weights", "@previous_features", n) +
+           "    out[0] = in1[0] + $gamma * next_value - previous;\n  }\n";
+  return c;
+}
+
+codegen::CCalculation Critic::c_update(int, const Context&) const {
+  // in0 features; out1 td_error, the delta of this instant. The steps of learn().
+  const std::string n = std::to_string(num_features_);
+  const std::string each = "    for (i = 0; i < " + n + "; ++i) ";
+  codegen::CCalculation c;
+  c.body = "  int i;\n";
+  if (!params_.frozen) {
+    c.body += "  if (@has_previous[0] != 0) {\n    const real delta = out1[0];\n";
+    if (params_.kind == CriticKind::kTd0) {
+      c.constants = {codegen::c_number("beta", params_.beta),
+                     codegen::c_number("epsilon", params_.epsilon)};
+      c.body +=
+          "    real squared, step;\n" +
+          codegen::c_dot("squared", "@previous_features", "@previous_features", num_features_) +
+          "    step = $beta * delta / ($epsilon + squared);\n" + each +
+          "@@weights[i] = @weights[i] + step * @previous_features[i];\n";
+    } else {
+      c.constants = {codegen::c_number("decay", params_.gamma * params_.lambda),
+                     codegen::c_number("beta", params_.beta)};
+      c.body += "    const real step = $beta * delta;\n" + each +
+                "@@trace[i] = $decay * @trace[i] + @previous_features[i];\n" + each +
+                "@@weights[i] = @weights[i] + step * @@trace[i];\n";
+    }
+    c.body += "  }\n";
+  }
+  c.body += "  for (i = 0; i < " + n + "; ++i) @@previous_features[i] = in0[i];\n" +
+            "  @@has_previous[0] = 1;\n";
+  return c;
+}
+
 }  // namespace cbbg::blocks

@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "cbbg/blocks/learner.h"
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/block_context.h"
 #include "cbbg/framework/context.h"
@@ -72,9 +73,13 @@ struct CriticParams {
 ///
 /// Discrete state: weights w (n, persistent); per trial: trace z (n, td_lambda only),
 /// previous_features phi(s_{t-1}) (n), has_previous (1).
-class Critic final : public Block, public Learner {
+class Critic final : public Block, public Learner, public codegen::EmitsC {
  public:
   Critic(std::string name, int num_features, const CriticParams& params, double period);
+
+  // Its outputs and updates as C (cbbg export; codegen::EmitsC).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
+  codegen::CCalculation c_update(int update, const Context& context) const override;
 
   Role learner_role() const override { return Role::kCritic; }
   const Block& learner_block() const override { return *this; }

@@ -36,4 +36,27 @@ FailureDetector::FailureDetector(std::string name, const FailureDetectorParams& 
   });
 }
 
+namespace {
+
+// C statements setting `finite` to whether every measured signal is (x - x is 0 only then).
+std::string all_finite() {
+  return "  int i, finite = 1;\n  for (i = 0; i < " + std::to_string(kMeasuredSize) +
+         "; ++i) finite = finite && in0[i] - in0[i] == 0;\n";
+}
+
+}  // namespace
+
+codegen::CCalculation FailureDetector::c_calculation(int, const Context&) const {
+  // in0 measured.
+  return {{codegen::c_number("angle", params_.failure_angle)},
+          all_finite() + "  out[0] = CBBG_FABS(in0[" + std::to_string(kMeasuredThetaB) +
+              "]) > $angle || !finite ? 1 : 0;\n"};
+}
+
+codegen::CCalculation FailureDetector::c_update(int, const Context&) const {
+  return {{codegen::c_number("angle", params_.failure_angle)},
+          all_finite() + "  if (!finite || CBBG_FABS(in0[" + std::to_string(kMeasuredThetaB) +
+              "]) > $angle) return 1;\n"};
+}
+
 }  // namespace cbbg::blocks

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 
 namespace cbbg::blocks {
@@ -26,9 +27,13 @@ struct FailureDetectorParams {
 /// EventStatus::terminate when failed, so the simulation stops after this tick's updates
 /// (the learning blocks still learn from the failing transition).
 /// Parameters: failure_angle = trial.failure_angle, the period trial.period.
-class FailureDetector final : public Block {
+class FailureDetector final : public Block, public codegen::EmitsC {
  public:
   FailureDetector(std::string name, const FailureDetectorParams& params, double period);
+
+  // Its outputs and updates as C (cbbg export; codegen::EmitsC).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
+  codegen::CCalculation c_update(int update, const Context& context) const override;
 
  private:
   FailureDetectorParams params_;

@@ -10,7 +10,7 @@ namespace cbbg::blocks {
 
 GaussianExploration::GaussianExploration(std::string name, const ExplorationParams& params,
                                          double period)
-    : Block(std::move(name)), params_(params) {
+    : Block(std::move(name)), params_(params), period_(period) {
   params_.validate();
   check_period(period);
   const InputPort& actor_action = declare_input_port("actor_action", 1, "a_A(t)");
@@ -46,6 +46,30 @@ double GaussianExploration::sigma_at(double elapsed) const {
 
 double GaussianExploration::elapsed(const Context& context) const {
   return context.discrete_state(*this)[elapsed_.offset];
+}
+
+codegen::CCalculation GaussianExploration::c_calculation(int, const Context&) const {
+  // in0 a_A; sigma_at(elapsed), then the action.
+  codegen::CCalculation c;
+  c.constants = {codegen::c_number("sigma", params_.sigma)};
+  if (params_.half_life == 0.0) {
+    c.body = "  const real sigma = $sigma;\n";
+  } else {
+    c.constants.push_back(codegen::c_number("half_life", params_.half_life));
+    c.body = "  const real sigma = $sigma * CBBG_EXP2(-@elapsed[0] / $half_life);\n";
+  }
+  c.body += "  out[0] = in0[0] + sigma * @noise[0];\n";
+  return c;
+}
+
+codegen::CCalculation GaussianExploration::c_update(int, const Context&) const {
+  return {{codegen::c_number("period", period_)},
+          "  @@noise[0] = CBBG_NORMAL(rng);\n  @@elapsed[0] = @elapsed[0] + $period;\n",
+          true};
+}
+
+codegen::CCalculation GaussianExploration::c_initialization(int, const Context&) const {
+  return {{}, "  @@noise[0] = CBBG_NORMAL(rng);\n", true};
 }
 
 }  // namespace cbbg::blocks

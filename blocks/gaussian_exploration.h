@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cbbg/blocks/exploration_params.h"
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/context.h"
 
@@ -27,9 +28,14 @@ namespace cbbg::blocks {
 ///
 /// Discrete state: per trial, noise eps (1); persistent, elapsed (1, s), carried across
 /// trials as learning goes on.
-class GaussianExploration final : public Block {
+class GaussianExploration final : public Block, public codegen::EmitsC {
  public:
   GaussianExploration(std::string name, const ExplorationParams& params, double period);
+
+  // Its outputs and updates as C (cbbg export; codegen::EmitsC).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
+  codegen::CCalculation c_update(int update, const Context& context) const override;
+  codegen::CCalculation c_initialization(int update, const Context& context) const override;
 
   // sigma(t) after `elapsed` s of learning.
   double sigma_at(double elapsed) const;
@@ -38,6 +44,7 @@ class GaussianExploration final : public Block {
 
  private:
   ExplorationParams params_;
+  double period_;
   StatePart noise_;
   StatePart elapsed_;
 };

@@ -84,4 +84,25 @@ double OmegaSchedule::ticks(const Context& context) const {
   return context.discrete_state(*this)[0];
 }
 
+codegen::CCalculation OmegaSchedule::c_calculation(int, const Context&) const {
+  switch (params_.mode) {
+    case OmegaMode::kZero:
+      return {{}, "  out[0] = 0;\n"};
+    case OmegaMode::kOne:
+      return {{}, "  out[0] = 1;\n"};
+    case OmegaMode::kConstant:
+      return {{codegen::c_number("omega", params_.constant)}, "  out[0] = $omega;\n"};
+    case OmegaMode::kSchedule:
+      break;
+  }
+  // std::max(0.0, rise): (0 < rise ? rise : 0).
+  return {{codegen::c_number("n2", params_.n2), codegen::c_number("n3", params_.n3)},
+          "  const real rise = (real)1 - CBBG_EXP(-(@ticks[0] - $n2) / $n3);\n"
+          "  out[0] = (real)0 < rise ? rise : (real)0;\n"};
+}
+
+codegen::CCalculation OmegaSchedule::c_update(int, const Context&) const {
+  return {{}, "  @@ticks[0] = @ticks[0] + (real)1;\n"};
+}
+
 }  // namespace cbbg::blocks

@@ -3,6 +3,7 @@
 #include <string>
 #include <string_view>
 
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/parameters.h"
@@ -52,9 +53,13 @@ struct OmegaParams {
 /// NOT reset between trials. Modes zero and one output that constant, mode constant its
 /// `constant`.
 /// Parameters: n2 = omega.n2, n3 = omega.n3, mode = omega.mode, the period trial.period.
-class OmegaSchedule final : public Block {
+class OmegaSchedule final : public Block, public codegen::EmitsC {
  public:
   OmegaSchedule(std::string name, const OmegaParams& params, double period);
+
+  // Its outputs and updates as C (cbbg export; codegen::EmitsC).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
+  codegen::CCalculation c_update(int update, const Context& context) const override;
 
   // omega after `ticks` ticks of learning.
   double omega_at(double ticks) const;

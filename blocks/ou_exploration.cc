@@ -38,4 +38,20 @@ OuExploration::OuExploration(std::string name, const ExplorationParams& params, 
       UpdateWrites::kInPlace);  // x is read before it is written
 }
 
+codegen::CCalculation OuExploration::c_calculation(int, const Context&) const {
+  return {{}, "  out[0] = in0[0] + @noise[0];\n"};  // in0 a_A
+}
+
+codegen::CCalculation OuExploration::c_update(int, const Context&) const {
+  return {{codegen::c_number("decay", decay_), codegen::c_number("innovation", innovation_)},
+          "  @@noise[0] = $decay * @noise[0] + $innovation * CBBG_NORMAL(rng);\n",
+          true};
+}
+
+codegen::CCalculation OuExploration::c_initialization(int, const Context&) const {
+  return {{codegen::c_number("sigma", params_.sigma)},
+          "  @@noise[0] = $sigma * CBBG_NORMAL(rng);\n",
+          true};
+}
+
 }  // namespace cbbg::blocks

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cbbg/blocks/exploration_params.h"
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 
 namespace cbbg::blocks {
@@ -27,9 +28,14 @@ namespace cbbg::blocks {
 /// trial.period.
 ///
 /// Discrete state, per trial: noise x (1, N m); a new trial draws it afresh.
-class OuExploration final : public Block {
+class OuExploration final : public Block, public codegen::EmitsC {
  public:
   OuExploration(std::string name, const ExplorationParams& params, double period);
+
+  // Its outputs and updates as C (cbbg export; codegen::EmitsC).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
+  codegen::CCalculation c_update(int update, const Context& context) const override;
+  codegen::CCalculation c_initialization(int update, const Context& context) const override;
 
  private:
   ExplorationParams params_;

@@ -30,4 +30,18 @@ QuadraticReward::QuadraticReward(std::string name, const RewardParams& params, d
       {&measured, &failed}, "r_{t-1} = -(q0 theta_b^2 + q1 theta_b'^2 + q2 phi'^2), -1 on failure");
 }
 
+codegen::CCalculation QuadraticReward::c_calculation(int, const Context&) const {
+  // in0 measured, in1 failed.
+  const auto& q = params_.q;
+  const auto at = [](int index) { return "in0[" + std::to_string(index) + "]"; };
+  return {
+      {codegen::c_number("q0", q[0]), codegen::c_number("q1", q[1]), codegen::c_number("q2", q[2])},
+      "  if (in1[0] > 0.5) {\n    out[0] = -1;\n  } else {\n    const real theta = " +
+          at(kMeasuredThetaB) + ", theta_dot = " + at(kMeasuredThetaBDot) +
+          ";\n    const real phi_dot = (" + at(kMeasuredPhiLeftDot) + " + " +
+          at(kMeasuredPhiRightDot) +
+          ") / (real)2;\n    out[0] = -($q0 * theta * theta + $q1 * theta_dot * theta_dot + "
+          "$q2 * phi_dot * phi_dot);\n  }\n"};
+}
+
 }  // namespace cbbg::blocks

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cbbg/blocks/reward.h"
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 
 namespace cbbg::blocks {
@@ -20,9 +21,12 @@ namespace cbbg::blocks {
 /// s_t, phi' = (phi_l' + phi_r') / 2 the wheels' mean rate. It remembers nothing, so it
 /// rewards the first tick of a trial too.
 /// Parameters: q = reward.q (3 numbers, each >= 0); the period trial.period is checked only.
-class QuadraticReward final : public Block {
+class QuadraticReward final : public Block, public codegen::EmitsC {
  public:
   QuadraticReward(std::string name, const RewardParams& params, double period);
+
+  // Its reward as C (cbbg export; codegen::EmitsC).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
  private:
   RewardParams params_;

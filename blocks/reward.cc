@@ -71,4 +71,31 @@ Reward::Reward(std::string name, const RewardParams& params, double period)
       UpdateWrites::kInPlace);  // reads no state
 }
 
+// C statements declaring `s`, the sliding surface of the measured signals in0, as the
+// constructor's `surface` computes it.
+std::string Reward::c_surface(std::vector<codegen::CConstant>& constants) const {
+  constants = {codegen::c_number("a1", params_.a1), codegen::c_number("a2", params_.a2)};
+  std::string body = "  real s = $a1 * in0[" + std::to_string(kMeasuredThetaB) + "] + $a2 * in0[" +
+                     std::to_string(kMeasuredThetaBDot) + "];\n";
+  if (params_.k_phi == 0.0) return body;
+  constants.push_back(codegen::c_number("k_phi", params_.k_phi));
+  return body + "  s = s + $k_phi * (in0[" + std::to_string(kMeasuredPhiLeftDot) + "] + in0[" +
+         std::to_string(kMeasuredPhiRightDot) + "]) / (real)2;\n";
+}
+
+codegen::CCalculation Reward::c_calculation(int, const Context&) const {
+  // in0 measured, in1 failed.
+  codegen::CCalculation c;
+  c.body = "  if (in1[0] > 0.5) {\n    out[0] = -1;\n  } else if (@has_previous[0] == 0) {\n" +
+           std::string("    out[0] = 0;\n  } else {\n") + c_surface(c.constants) +
+           "    out[0] = s * s <= @previous_surface[0] * @previous_surface[0] ? 0 : -1;\n  }\n";
+  return c;
+}
+
+codegen::CCalculation Reward::c_update(int, const Context&) const {
+  codegen::CCalculation c;
+  c.body = c_surface(c.constants) + "  @@previous_surface[0] = s;\n  @@has_previous[0] = 1;\n";
+  return c;
+}
+
 }  // namespace cbbg::blocks

@@ -4,6 +4,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/parameters.h"
@@ -69,11 +70,16 @@ struct RewardParams {
 /// reward.kind sliding selects it (QuadraticReward is quadratic's).
 ///
 /// Discrete state, per trial: previous_surface s(t-1), has_previous.
-class Reward final : public Block {
+class Reward final : public Block, public codegen::EmitsC {
  public:
   Reward(std::string name, const RewardParams& params, double period);
 
+  // Its outputs and updates as C (cbbg export; codegen::EmitsC).
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
+  codegen::CCalculation c_update(int update, const Context& context) const override;
+
  private:
+  std::string c_surface(std::vector<codegen::CConstant>& constants) const;
   RewardParams params_;
 };
 

@@ -48,4 +48,17 @@ void Tropism::set_k1(Context& context, double k1) const {
 
 double Tropism::k1(const Context& context) const { return context.parameter(*this, "k1")[0]; }
 
+codegen::CCalculation Tropism::c_calculation(int, const Context& context) const {
+  // in0 V.
+  codegen::CCalculation c;
+  c.constants = {codegen::c_number("k1", k1(context))};
+  if (params_.kind == TropismKind::kFixed) {
+    c.body = "  (void)in0;\n  out[0] = $k1 / (real)2;\n";
+    return c;
+  }
+  c.constants.push_back(codegen::c_number("k2", params_.k2));
+  c.body = "  out[0] = $k1 / ((real)1 + CBBG_EXP($k2 * in0[0]));\n";
+  return c;
+}
+
 }  // namespace cbbg::blocks

@@ -3,6 +3,7 @@
 #include <string>
 #include <string_view>
 
+#include "cbbg/codegen/c_calculation.h"
 #include "cbbg/framework/block.h"
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/parameters.h"
@@ -52,9 +53,12 @@ struct TropismParams {
 /// Parameters: k1 is the context parameter "k1" (default tropism.k1), so the annealing
 /// schedule changes it between trials without rebuilding (set_k1); k2 = tropism.k2, kind =
 /// tropism.kind.
-class Tropism final : public Block {
+class Tropism final : public Block, public codegen::EmitsC {
  public:
   Tropism(std::string name, const TropismParams& params);
+
+  // Its temperature as C (cbbg export; codegen::EmitsC), k1 as `context` holds it.
+  codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
   // Sets k1 in `context` for the next trials; throws naming tropism.k1 unless finite, > 0.
   void set_k1(Context& context, double k1) const;

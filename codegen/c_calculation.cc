@@ -4,7 +4,25 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "cbbg/framework/block.h"
+
 namespace cbbg::codegen {
+namespace {
+
+[[noreturn]] void cannot_update(const EmitsC& emitter, const char* kind) {
+  const auto* block = dynamic_cast<const Block*>(&emitter);
+  throw std::invalid_argument("block '" + (block != nullptr ? block->path() : "?") +
+                              "' cannot write its " + kind +
+                              " as C: it does not implement codegen::EmitsC::c_" + kind);
+}
+
+}  // namespace
+
+CCalculation EmitsC::c_update(int, const Context&) const { cannot_update(*this, "update"); }
+
+CCalculation EmitsC::c_initialization(int, const Context&) const {
+  cannot_update(*this, "initialization");
+}
 
 std::string c_literal(double value, Scalar scalar) {
   if (!std::isfinite(value)) {

@@ -30,16 +30,29 @@ inline CConstant c_number(std::string name, double value) {
   return {std::move(name), {value}, false};
 }
 
-// One output's calculation. `body` is C99 statements (they may declare locals) over:
-//   in0, in1, ...  the inputs the output reads (Block::output_reads order), `const real *`
-//   out            the output, `real *`
+// One calculation of a block: an output's, or an update's (the learner export,
+// c_learner_export.h). `body` is C99 statements (they may declare locals) over:
+//   in0, in1, ...  `const real *`: for an output, the inputs it reads (Block::output_reads
+//                  order); for an update, every input of the block (port order)
+//   out            for an output: the output, `real *`
+//   out0, out1, .. for an update: every output of the block at this instant (port order),
+//                  `const real *`
+//   @part          the block's discrete-state part `part` (Block::discrete_state_part) before
+//                  the instant: in a policy, constant values; in a learner, the learner's
+//   @@part         for an update: the part after the instant, which it writes (the same memory
+//                  as @part for an update declared UpdateWrites::kInPlace)
 //   $NAME          the constant NAME of `constants`
-//   real           the scalar type; CBBG_EXP and CBBG_SQRT: <math.h>'s exp and sqrt for it
-// The statements must compute in the order the block's C++ does: then the double export
-// reproduces it to the bit.
+//   rng            for an update that `draws`: the block's generator, read through
+//                  CBBG_NORMAL(rng) and CBBG_UNIFORM(rng) (framework/random.h's draws)
+//   real           the scalar type; CBBG_EXP, CBBG_EXP2, CBBG_SQRT, CBBG_LOG, CBBG_COS and
+//                  CBBG_FABS: <math.h>'s functions for it
+// An update's body ends the trial with `return 1;` (EventStatus::terminate) and otherwise
+// runs to its end. The statements must compute in the order the block's C++ does: then the
+// double export reproduces it to the bit.
 struct CCalculation {
   std::vector<CConstant> constants;
   std::string body;
+  bool draws = false;  // an update's body draws from `rng`
 };
 
 class EmitsC {
@@ -48,6 +61,12 @@ class EmitsC {
   // The calculation of output `output` (its index) with the state `context` holds of the
   // block. Throws std::invalid_argument naming the port for an output it cannot write.
   virtual CCalculation c_calculation(int output, const Context& context) const = 0;
+  // The periodic update `update` (its index in Block::periodic_updates) and the
+  // initialization update `update` (Block::initialization_updates) as C, for the learner
+  // export. An initialization update reads no input and no output. By default a block
+  // cannot: both throw std::invalid_argument naming it.
+  virtual CCalculation c_update(int update, const Context& context) const;
+  virtual CCalculation c_initialization(int update, const Context& context) const;
 };
 
 // `value` as a C literal of `scalar`: the 17 digits a double needs to come back the same, or

@@ -65,4 +65,27 @@ codegen::CSources export_mixed_policy(const parameters::Parameters& parameters,
   return codegen::export_c(controller, controller_output(controller, "action"), *context, options);
 }
 
+codegen::CSources export_learner(const diagrams::ClosedLoop& loop, const Context& context,
+                                 codegen::CLearnerOptions options) {
+  if (loop.controller == nullptr) {
+    throw std::invalid_argument("diagram '" + loop.diagram->name() +
+                                "' has no controller: it has no learner to export");
+  }
+  const Diagram& diagram = *loop.diagram;
+  options.given[&leaf_output(diagram.block("sensors").output_port("measured"))] = "measured";
+  options.watched.push_back(&leaf_output(diagram.block("failure").output_port("failed")));
+  return codegen::export_learner_c(diagram, controller_output(*loop.controller, "action"), context,
+                                   options);
+}
+
+codegen::CSources export_learner(const parameters::Parameters& parameters,
+                                 const diagrams::ClosedLoopFactory& learner,
+                                 const LearntWeights& weights, codegen::CLearnerOptions options) {
+  const diagrams::ClosedLoop loop = learner(parameters);
+  const auto context = loop.diagram->create_context(parameters.run.seed);
+  load_learnt_weights(loop, *context, weights);
+  options.period = parameters.trial.period;
+  return export_learner(loop, *context, std::move(options));
+}
+
 }  // namespace cbbg::experiments

@@ -5,6 +5,7 @@
 // (codegen::EmitsC).
 
 #include "cbbg/codegen/c_export.h"
+#include "cbbg/codegen/c_learner_export.h"
 #include "cbbg/diagrams/closed_loop.h"
 #include "cbbg/experiments/learnt_weights.h"
 #include "cbbg/parameters/parameters.h"
@@ -30,5 +31,23 @@ codegen::CSources export_mixed_policy(const parameters::Parameters& parameters,
                                       const diagrams::ClosedLoopFactory& learner,
                                       const LearntWeights& weights, double omega,
                                       codegen::CExportOptions options);
+
+// The C of the whole online learner of `learner` (an arm's loop that learns) with `weights`
+// loaded, from the sensors' measured signals to the controller's action, with the state and
+// the updates of every block on the way and of the failure slot, whose update ends a trial
+// (codegen/c_learner_export.h):
+//   int NAME_step(NAME_learner *learner, const NAME_real measured[NAME_MEASURED_SIZE],
+//                 NAME_real *action);
+// Its generators start as parameters.run.seed's; it steps at trial.period. Throws
+// std::invalid_argument naming a block that cannot be written as C or what the controller
+// lacks (an output "action"), and what load_learnt_weights throws.
+codegen::CSources export_learner(const parameters::Parameters& parameters,
+                                 const diagrams::ClosedLoopFactory& learner,
+                                 const LearntWeights& weights, codegen::CLearnerOptions options);
+
+// The same for `loop` as `context` (a context of loop.diagram) holds it: its state,
+// parameters and generators at that moment. options.period must be the loop's tick.
+codegen::CSources export_learner(const diagrams::ClosedLoop& loop, const Context& context,
+                                 codegen::CLearnerOptions options);
 
 }  // namespace cbbg::experiments

@@ -96,6 +96,10 @@ RandomGenerator& Context::random_generator(const Block& block) {
   return generators_[static_cast<size_t>(layout_of(block).index)];
 }
 
+const RandomGenerator& Context::random_generator(const Block& block) const {
+  return generators_[static_cast<size_t>(layout_of(block).index)];
+}
+
 void Context::reset_state(const Block& block) {
   discrete_state(block) = block.initial_discrete_state();
   continuous_state(block) = block.initial_continuous_state();

@@ -46,6 +46,7 @@ class Context {
   // Throws, naming the block and parameter, when the size differs from the declared one.
   void set_parameter(const Block& block, std::string_view name, const Vector& value);
   RandomGenerator& random_generator(const Block& block);
+  const RandomGenerator& random_generator(const Block& block) const;
   // Restores the block's declared initial discrete and continuous state.
   void reset_state(const Block& block);
   // Restores every block's initial state and sets the time to zero; parameters, fixed inputs

@@ -16,14 +16,17 @@ std::uint64_t mix64(std::uint64_t z) {
 
 }  // namespace
 
-std::uint64_t derive_seed(std::uint64_t root_seed, std::string_view block_path) {
-  // FNV-1a over the path, then mixed with the root seed.
+std::uint64_t path_hash(std::string_view block_path) {
   std::uint64_t hash = 0xcbf29ce484222325ULL;
   for (const char c : block_path) {
     hash ^= static_cast<unsigned char>(c);
     hash *= 0x100000001b3ULL;
   }
-  return mix64(mix64(root_seed) ^ hash);
+  return hash;
+}
+
+std::uint64_t derive_seed(std::uint64_t root_seed, std::string_view block_path) {
+  return mix64(mix64(root_seed) ^ path_hash(block_path));
 }
 
 double draw_uniform(RandomGenerator& generator) {

@@ -14,6 +14,8 @@ using RandomGenerator = std::mt19937_64;
 // Seed of the generator of the block at `block_path` under `root_seed`: a hash of both, so
 // two blocks of one diagram get unrelated streams and renaming a block changes only its own.
 std::uint64_t derive_seed(std::uint64_t root_seed, std::string_view block_path);
+// The hash of `block_path` derive_seed mixes with the root seed: FNV-1a 64 of its bytes.
+std::uint64_t path_hash(std::string_view block_path);
 
 // One standard normal draw that keeps no state outside the generator (unlike
 // std::normal_distribution, which caches a second value), so cloning a Context clones

@@ -5,19 +5,13 @@
 // bytes of code (.text) and data (.rodata, .data) of each export compiled by gcc -O2.
 //   build/bench/codegen/bench_policy_export
 
-#include <dlfcn.h>
-#include <unistd.h>
-
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
-#include <stdexcept>
 #include <string>
 
 #include <benchmark/benchmark.h>
 
+#include "bench/codegen/compiled_c.h"
 #include "bench/ratio_reporter.h"
 #include "cbbg/blocks/actor.h"
 #include "cbbg/blocks/normaliser.h"
@@ -28,15 +22,7 @@
 namespace cbbg::bench {
 namespace {
 
-namespace fs = std::filesystem;
-
 constexpr double kPeriod = 0.01;
-
-blocks::NormalisedInputs inputs_for(int features) {
-  return features == 49    ? blocks::NormalisedInputs::kPitch
-         : features == 343 ? blocks::NormalisedInputs::kPitchWheelRate
-                           : blocks::NormalisedInputs::kPitchWheels;
-}
 
 // measured -> normaliser -> features -> actor -> action, the actor's weights all set.
 struct PolicyDiagram {
@@ -68,73 +54,30 @@ struct PolicyDiagram {
   std::unique_ptr<Context> context;
 };
 
-// A measured state that moves a little each call, within the grid.
-void next_measured(Vector& measured, long call) {
-  const double s = std::sin(1e-3 * static_cast<double>(call));
-  measured << 0.1 * s, 0.2 * s, 0.5 * s, 0.5 * s, 1.0 * s, 1.0 * s;
-}
-
-// One export compiled by gcc -O2 into a shared object of its own, loaded; removed at the end.
-class CompiledExport {
- public:
-  using Step = double (*)(const double*);
-  using StepFloat = float (*)(const float*);
-
+// The policy's export, compiled.
+struct CompiledExport {
   CompiledExport(const PolicyDiagram& policy, codegen::Scalar scalar)
-      : directory_(fs::temp_directory_path() / ("cbbg-bench-export-" + std::to_string(::getpid()) +
-                                                "-" + std::to_string(policy.actor->num_features()) +
-                                                (scalar == codegen::Scalar::kFloat ? "f" : "d"))) {
+      : compiled("export-" + std::to_string(policy.actor->num_features()) +
+                     (scalar == codegen::Scalar::kFloat ? "f" : "d"),
+                 "policy", sources(policy, scalar)),
+        code_bytes(compiled.code_bytes),
+        data_bytes(compiled.data_bytes) {}
+
+  static codegen::CSources sources(const PolicyDiagram& policy, codegen::Scalar scalar) {
     codegen::CExportOptions options;
     options.name = "policy";
     options.scalar = scalar;
-    const codegen::CSources c = codegen::export_c(
-        *policy.diagram, policy.actor->output_port("actor_action"), *policy.context, options);
-    fs::create_directories(directory_);
-    std::ofstream(directory_ / "policy.h") << c.header;
-    std::ofstream(directory_ / "policy.c") << c.source;
-    const std::string in = " -std=c99 -O2 " + (directory_ / "policy.c").string();
-    shell("gcc -c" + in + " -o " + (directory_ / "policy.o").string());
-    shell("gcc -shared -fPIC" + in + " -lm -o " + (directory_ / "policy.so").string());
-    library_ = dlopen((directory_ / "policy.so").c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (library_ == nullptr) throw std::runtime_error(dlerror());
-    step_ = dlsym(library_, "policy_step");
-    read_sizes();
+    return codegen::export_c(*policy.diagram, policy.actor->output_port("actor_action"),
+                             *policy.context, options);
   }
-  ~CompiledExport() {
-    if (library_ != nullptr) dlclose(library_);
-    fs::remove_all(directory_);
-  }
-  CompiledExport(const CompiledExport&) = delete;
-  CompiledExport& operator=(const CompiledExport&) = delete;
+  using Step = double (*)(const double*);
+  using StepFloat = float (*)(const float*);
+  Step step() const { return compiled.function<Step>("policy_step"); }
+  StepFloat step_float() const { return compiled.function<StepFloat>("policy_step"); }
 
-  Step step() const { return reinterpret_cast<Step>(step_); }
-  StepFloat step_float() const { return reinterpret_cast<StepFloat>(step_); }
-  long code_bytes = 0;
-  long data_bytes = 0;
-
- private:
-  static void shell(const std::string& command) {
-    if (std::system(command.c_str()) != 0) throw std::runtime_error("failed: " + command);
-  }
-  // .text, and .rodata with .data, from `size -A` of the object.
-  void read_sizes() {
-    const std::string command = "size -A -d " + (directory_ / "policy.o").string();
-    FILE* pipe = popen(command.c_str(), "r");
-    char section[128];
-    long bytes = 0;
-    char line[256];
-    while (fgets(line, sizeof line, pipe) != nullptr) {
-      if (std::sscanf(line, "%127s %ld", section, &bytes) != 2) continue;
-      const std::string name = section;
-      if (name == ".text") code_bytes += bytes;
-      if (name.rfind(".rodata", 0) == 0 || name == ".data") data_bytes += bytes;
-    }
-    pclose(pipe);
-  }
-
-  fs::path directory_;
-  void* library_ = nullptr;
-  void* step_ = nullptr;
+  CompiledC compiled;
+  long code_bytes;
+  long data_bytes;
 };
 
 void BM_CppPolicy(benchmark::State& state) {
@@ -185,9 +128,6 @@ BENCHMARK(BM_ExportedPolicy)
 
 int main(int argc, char** argv) {
   return cbbg::bench::run_benchmarks_with_ratios(argc, argv, [](const std::string& name) {
-    // BM_ExportedPolicy/features:49/float:0 against BM_CppPolicy/49.
-    const auto at = name.find("features:");
-    if (name.rfind("BM_ExportedPolicy", 0) != 0 || at == std::string::npos) return std::string();
-    return "BM_CppPolicy/" + name.substr(at + 9, name.find('/', at) - at - 9);
+    return cbbg::bench::baseline_by_features(name, "BM_ExportedPolicy", "BM_CppPolicy");
   });
 }

@@ -209,6 +209,10 @@ std::vector<BadInput> bad_inputs() {
        "--omega must be a number from 0 to 1; got 1.5"},
       {"export --load-weights {S}/w.txt --out {S}/mine --name policy",
        "--out '{S}/mine/policy.c' exists and cbbg did not write it"},
+      {"export --load-weights {S}/w.txt --out {S}/gen --learner --omega 0.5",
+       "--learner and --omega exclude each other"},
+      {"export --load-weights {S}/w.txt --out {S}/mine --learner --name policy",
+       "--out '{S}/mine/policy.c' exists and cbbg did not write it"},
       {eval + "--push-time 0x10 --push-torque 2 --push-duration 1",
        "--push-time: must be a decimal number; got '0x10'"},
       {eval + "--set rbf.centres=[-1,0,1]", "was made for rbf.centres"},
@@ -303,7 +307,7 @@ TEST(BadInput, EveryCaseExitsTwoWithOneLineAndLeavesEverythingAsItWas) {
   const auto before = cbbg::testing::tree_of(scratch);
 
   const std::vector<BadInput> cases = bad_inputs();
-  ASSERT_EQ(cases.size(), 159u);  // the README counts them: a case dropped shows here
+  ASSERT_EQ(cases.size(), 161u);  // the README counts them: a case dropped shows here
   for (const BadInput& input : cases) {
     const std::string arguments = expand(input.arguments, scratch.string());
     SCOPED_TRACE(arguments);
