@@ -236,6 +236,11 @@ void register_keys(std::vector<KeySpec> keys, std::string_view after = {});
 // before main. Throws as register_keys.
 void register_leading_keys(std::vector<KeySpec> keys);
 
+// Removes the keys whose paths are `paths` (a user's section or protocol unregistered), and
+// the words registered for them. Throws std::invalid_argument naming a path no key has,
+// before removing any.
+void unregister_keys(const std::vector<std::string>& paths);
+
 // `words` and the words registered for the text key `key` since (register_choice): what a key
 // open to a user's words declares it allows.
 std::vector<std::string> with_registered_words(std::string_view key,
@@ -245,6 +250,9 @@ std::vector<std::string> with_registered_words(std::string_view key,
 // with its meaning appended to the key's. Throws std::invalid_argument for a key that is not
 // a text key with a list of words, or a word it has already.
 void register_choice(std::string_view key, const std::string& word, std::string_view meaning);
+// Takes back a word register_choice added, its meaning with it. Throws
+// std::invalid_argument for a word the key was not given so.
+void unregister_choice(std::string_view key, const std::string& word);
 
 // The section `name` of `config` (a Config, or the OwnSections of the typed tree) as its
 // struct; `name` "" for a struct of keys without a section.
@@ -263,6 +271,8 @@ Params read_section(const Source& config, std::string_view name) {
 using SectionCheck = std::function<void(const OwnSections& own)>;
 // Adds `check` for the section `name`. Throws std::invalid_argument for an empty check.
 void register_section_check(const std::string& name, SectionCheck check);
+// Removes the checks of section `name` (none: nothing changes).
+void unregister_section_check(const std::string& name);
 // Runs every registered check on `own`. Throws config::ConfigError.
 void check_own_sections(const OwnSections& own);
 

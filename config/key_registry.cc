@@ -70,6 +70,19 @@ void register_leading_keys(std::vector<KeySpec> added) {
                 std::make_move_iterator(added.end()));
 }
 
+void unregister_keys(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) {
+    if (std::none_of(keys().begin(), keys().end(),
+                     [&path](const KeySpec& key) { return key.path == path; })) {
+      throw std::invalid_argument("no config key '" + path + "' to unregister");
+    }
+  }
+  std::erase_if(keys(), [&paths](const KeySpec& key) {
+    return std::find(paths.begin(), paths.end(), key.path) != paths.end();
+  });
+  for (const std::string& path : paths) registered_words().erase(path);
+}
+
 std::vector<std::string> with_registered_words(std::string_view key,
                                                std::vector<std::string> words) {
   if (const auto found = registered_words().find(key); found != registered_words().end()) {
@@ -93,6 +106,36 @@ void register_choice(std::string_view key, const std::string& word, std::string_
     return;
   }
   throw std::invalid_argument("no config key '" + std::string(key) + "'");
+}
+
+void unregister_choice(std::string_view key, const std::string& word) {
+  const auto found = registered_words().find(key);
+  if (found == registered_words().end() ||
+      std::find(found->second.begin(), found->second.end(), word) == found->second.end()) {
+    throw std::invalid_argument("config key '" + std::string(key) + "' was not given '" + word +
+                                "' by a registration");
+  }
+  std::erase(found->second, word);
+  for (KeySpec& spec : keys()) {
+    if (spec.path != key) continue;
+    std::erase(spec.choices, word);
+    // The meaning register_choice appended: " | word" and its own meaning in parentheses.
+    const std::string appended = " | " + word;
+    if (const auto at = spec.meaning.find(appended); at != std::string::npos) {
+      auto end = at + appended.size();
+      if (spec.meaning.compare(end, 2, " (") == 0) {
+        int depth = 0;
+        for (; end < spec.meaning.size(); ++end) {
+          depth += spec.meaning[end] == '(' ? 1 : spec.meaning[end] == ')' ? -1 : 0;
+          if (spec.meaning[end] == ')' && depth == 0) {
+            ++end;
+            break;
+          }
+        }
+      }
+      spec.meaning.erase(at, end - at);
+    }
+  }
 }
 
 }  // namespace cbbg::config

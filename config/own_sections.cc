@@ -31,6 +31,10 @@ void register_section_check(const std::string& name, SectionCheck check) {
   section_checks().emplace_back(name, std::move(check));
 }
 
+void unregister_section_check(const std::string& name) {
+  std::erase_if(section_checks(), [&name](const auto& entry) { return entry.first == name; });
+}
+
 void check_own_sections(const OwnSections& own) {
   for (const auto& [name, check] : section_checks()) {
     try {

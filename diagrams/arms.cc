@@ -55,6 +55,14 @@ void register_arm(std::string name, std::string description, ControllerFactory l
   });
 }
 
+void unregister_arm(std::string_view name) {
+  if (std::erase_if(registry(),
+                    [name](const RegisteredArm& arm) { return arm.name.name == name; }) == 0) {
+    throw std::invalid_argument("no registered arm '" + std::string(name) +
+                                "' to unregister (a preset stays)");
+  }
+}
+
 std::vector<ArmName> registered_arms() {
   std::vector<ArmName> names;
   for (const RegisteredArm& arm : registry()) names.push_back(arm.name);

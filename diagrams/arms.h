@@ -37,6 +37,9 @@ struct ArmName {
 // running the command line. Throws std::invalid_argument.
 void register_arm(std::string name, std::string description, ControllerOptions options,
                   TaskSlots task = {});
+// Removes the registered arm `name` (a notebook registering it again). Throws
+// std::invalid_argument for a name no registered arm has (a preset cannot be removed).
+void unregister_arm(std::string_view name);
 void register_arm(std::string name, std::string description, ControllerFactory learner,
                   ControllerFactory policy = {}, TaskSlots task = {});
 

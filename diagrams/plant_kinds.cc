@@ -152,6 +152,12 @@ std::vector<std::string> kind_names() {
   return names;
 }
 
+// How many kinds the library registers (the first ones): unregister_plant_kind leaves them.
+std::size_t& library_kind_count() {
+  static std::size_t count = 2;  // simbody and analytic, until the others are registered
+  return count;
+}
+
 }  // namespace
 
 bool register_library_plant_kinds() {
@@ -161,6 +167,7 @@ bool register_library_plant_kinds() {
 #endif
   config::register_section<realtime::RemoteParams>("remote");
   register_plant_kind(remote_kind());
+  library_kind_count() = kinds().size();
   return true;
 }
 
@@ -174,6 +181,19 @@ void register_plant_kind(PlantKind kind) {
   if (!kind.make) throw std::invalid_argument("plant kind '" + kind.name + "' has no factory");
   config::register_choice("plant.kind", kind.name, kind.description);
   kinds().push_back(std::move(kind));
+}
+
+void unregister_plant_kind(std::string_view name) {
+  const auto library = library_kind_count();
+  const auto found =
+      std::find_if(kinds().begin() + static_cast<std::ptrdiff_t>(library), kinds().end(),
+                   [name](const PlantKind& kind) { return kind.name == name; });
+  if (found == kinds().end()) {
+    throw std::invalid_argument("no registered plant kind '" + std::string(name) +
+                                "' to unregister (the library's kinds stay)");
+  }
+  config::unregister_choice("plant.kind", found->name);
+  kinds().erase(found);
 }
 
 const std::vector<PlantKind>& plant_kinds() { return kinds(); }

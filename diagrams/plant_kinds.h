@@ -60,6 +60,9 @@ struct PlantKind {
 // Adds `kind` (its name a config::is_name word, new). Register before making any Config, as
 // for a section: plant.kind allows its name from then on. Throws std::invalid_argument.
 void register_plant_kind(PlantKind kind);
+// Removes a kind register_plant_kind added after the library's (a notebook registering it
+// again); plant.kind no longer allows it. Throws std::invalid_argument for another name.
+void unregister_plant_kind(std::string_view name);
 
 // The library's kinds beyond simbody and analytic: mujoco, in a build with MuJoCo (its section
 // mujoco.* with it), and remote, a robot over the real-time link (remote.*; cbbg drive). Run

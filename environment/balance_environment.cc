@@ -15,6 +15,9 @@ namespace {
 
 // The simulator's test of simultaneous instants (framework/simulator.cc): a tick this close
 // to trial.duration is the trial's end, not one more tick.
+// The stream the reset distribution draws from, beside the blocks' (framework/random.h).
+constexpr const char* kPitchStream = "environment/initial_pitch";
+
 bool same_instant(double a, double b) {
   return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b));
 }
@@ -24,13 +27,6 @@ std::string failure_reason(const Vector& measured, double failure_angle) {
   if (!measured.allFinite()) return "a measured signal is not finite";
   return "|theta_b| = " + format_number(std::abs(measured[blocks::kMeasuredThetaB])) +
          " rad exceeded trial.failure_angle = " + format_number(failure_angle) + " rad";
-}
-
-// The observation space's upper bound: the pitch up to the failure angle, the rest free.
-Vector pitch_limited_bound(double failure_angle) {
-  Vector high = Vector::Constant(blocks::kMeasuredSize, std::numeric_limits<double>::infinity());
-  high[blocks::kMeasuredThetaB] = failure_angle;
-  return high;
 }
 
 parameters::Parameters checked(const parameters::Parameters& parameters) {
@@ -58,28 +54,62 @@ BalanceEnvironment::BalanceEnvironment(const parameters::Parameters& parameters,
   reward_ = &loop_.diagram->block("reward").output_port("reward");
   supervisor_action_ = &controller_->output_port("supervisor_action");
   signal_names_ = loop_.plant->signals();
-  observation_high_ = pitch_limited_bound(parameters_.trial.failure_angle);
+  observation_high_ =
+      Vector::Constant(blocks::kMeasuredSize, std::numeric_limits<double>::infinity());
   observation_low_ = -observation_high_;
+  last_observation_ = Vector::Zero(blocks::kMeasuredSize);
+  const double theta0 = parameters_.trial.theta0;
+  initial_pitch_ = options.initial_pitch.value_or(InitialPitch{theta0, theta0});
+  check_initial_pitch(initial_pitch_.low);
+  check_initial_pitch(initial_pitch_.high);
+  if (!(initial_pitch_.low <= initial_pitch_.high)) {
+    throw std::invalid_argument("the initial pitch range must have low <= high; got [" +
+                                format_number(initial_pitch_.low) + ", " +
+                                format_number(initial_pitch_.high) + "]");
+  }
+  pitch_generator_.seed(
+      derive_seed(static_cast<std::uint64_t>(parameters_.run.seed), kPitchStream));
 }
 
 ResetResult BalanceEnvironment::reset(std::optional<std::uint64_t> seed,
                                       std::optional<double> initial_pitch) {
-  const double pitch = initial_pitch.value_or(parameters_.trial.theta0);
-  check_initial_pitch(pitch);
+  ResetResult result;
+  result.observation.resize(blocks::kMeasuredSize);
+  reset_into(seed, initial_pitch, result.observation.data());
+  result.info = info();
+  return result;
+}
+
+void BalanceEnvironment::reset_into(std::optional<std::uint64_t> seed,
+                                    std::optional<double> initial_pitch, double* observation) {
+  if (initial_pitch) check_initial_pitch(*initial_pitch);
   Context& context = simulator_->context();
-  if (seed) context.reseed(*seed);
-  loop_.start_trial(context, pitch);
+  if (seed) {
+    context.reseed(*seed);
+    pitch_generator_.seed(derive_seed(*seed, kPitchStream));
+  }
+  loop_.start_trial(context, initial_pitch ? *initial_pitch : draw_initial_pitch());
   // The initialisation updates draw the sensors' noise for t = 0, from the streams as they
   // now are: after the re-seeding, so that the seed decides the whole episode.
   simulator_->initialize();
   ticks_ = 0;
   episode_ = Episode::kRunning;
   evaluate();
-  last_ = ResetResult{measured(), info()};
-  return last_;
+  keep_observation(observation);
 }
 
 StepResult BalanceEnvironment::step(double action) {
+  StepResult result;
+  result.observation.resize(blocks::kMeasuredSize);
+  const StepFlags flags = step_into(action, result.observation.data());
+  result.reward = flags.reward;
+  result.terminated = flags.terminated;
+  result.truncated = flags.truncated;
+  result.info = info(flags.terminated ? failure_reason_ : std::string());
+  return result;
+}
+
+StepFlags BalanceEnvironment::step_into(double action, double* observation) {
   check_can_step(action);
   controller_->held_action().set(simulator_->context(), action);
   // t_{k+1} as the simulator computes its event times, so the step ends on the tick itself.
@@ -89,40 +119,48 @@ StepResult BalanceEnvironment::step(double action) {
   episode_ = Episode::kEnded;
   const SimulationStatus status =
       simulator_->advance_to(last_step ? std::min(next_tick, duration()) : next_tick);
-  if (status.terminated) return stopped_early(status);
+  if (status.terminated) return stopped_early(status, observation);
   ++ticks_;
   evaluate();
-
-  StepResult result;
-  result.observation = measured();
-  result.reward = reward();
-  result.terminated = failed();
-  result.truncated = last_step && !result.terminated;
-  result.info =
-      info(result.terminated ? failure_reason(result.observation, parameters_.trial.failure_angle)
-                             : std::string());
-  if (!result.terminated && !result.truncated) episode_ = Episode::kRunning;
-  last_ = ResetResult{result.observation, result.info};
-  return result;
+  keep_observation(observation);
+  StepFlags flags;
+  flags.reward = reward();
+  flags.terminated = failed();
+  flags.truncated = last_step && !flags.terminated;
+  if (flags.terminated) {
+    failure_reason_ = failure_reason(last_observation_, parameters_.trial.failure_angle);
+  } else if (!flags.truncated) {
+    episode_ = Episode::kRunning;
+  }
+  return flags;
 }
 
-StepResult BalanceEnvironment::stopped_early(const SimulationStatus& status) {
+void BalanceEnvironment::keep_observation(double* observation) {
+  last_observation_ = simulator_->context().signal(*measured_);
+  last_time_ = simulator_->context().time();
+  std::copy(last_observation_.begin(), last_observation_.end(), observation);
+}
+
+StepFlags BalanceEnvironment::stopped_early(const SimulationStatus& status, double* observation) {
   // The steps before have each checked the failure detector at their end, so an update
   // stops the simulation at this step's first instant only where the observation reset gave
   // is already beyond the angle (sensor noise or quantisation), or a user's plant ends it
   // with an update of its own. The agent's action has not acted: the observation is the
   // one returned last, unless the plant's update came later in the period.
-  StepResult result;
-  if (simulator_->context().time() > last_.info.time) {
+  if (simulator_->context().time() > last_time_) {
     evaluate();
-    last_ = ResetResult{measured(), info()};
+    keep_observation(observation);
+  } else {
+    std::copy(last_observation_.begin(), last_observation_.end(), observation);
   }
-  result.observation = last_.observation;
-  result.reward = -1.0;  // a failure's, as blocks/reward.h gives it
-  result.terminated = true;
-  result.info = last_.info;
-  result.info.failure_reason = status.reason;
-  return result;
+  failure_reason_ = status.reason;
+  return {-1.0, true, false};  // a failure's reward, as blocks/reward.h gives it
+}
+
+double BalanceEnvironment::draw_initial_pitch() {
+  if (initial_pitch_.low == initial_pitch_.high) return initial_pitch_.low;  // draws nothing
+  return initial_pitch_.low +
+         (initial_pitch_.high - initial_pitch_.low) * draw_uniform(pitch_generator_);
 }
 
 void BalanceEnvironment::check_initial_pitch(double pitch) const {
@@ -156,10 +194,18 @@ bool BalanceEnvironment::failed() const { return simulator_->context().signal(*f
 
 double BalanceEnvironment::reward() const { return simulator_->context().signal(*reward_)[0]; }
 
+double BalanceEnvironment::time() const { return simulator_->context().time(); }
+
+double BalanceEnvironment::supervisor_action() const {
+  return std::clamp(simulator_->context().signal(*supervisor_action_)[0], action_low(),
+                    action_high());
+}
+
 Info BalanceEnvironment::info(std::string failure_reason) const {
   const Context& context = simulator_->context();
   return Info{.time = context.time(),
-              .supervisor_action = context.signal(*supervisor_action_)[0],
+              .supervisor_action = supervisor_action(),
+              .unsaturated_supervisor_action = context.signal(*supervisor_action_)[0],
               .state = context.signal(loop_.plant->state_output()),
               .signal_names = signal_names_,
               .failure_reason = std::move(failure_reason)};

@@ -74,16 +74,36 @@
 
 namespace cbbg::environment {
 
+// The reset distribution of the initial pitch: uniform on [low, high], rad (low == high: that
+// pitch; the default, trial.theta0's, is the paper's fixed angle).
+struct InitialPitch {
+  double low = 0.0;
+  double high = 0.0;
+};
+
 struct EnvironmentOptions {
   // The robot: empty, plant.kind's (diagrams/plant_kinds.h: simbody, analytic, a registered
   // kind); set, a plant::RobotPlant of the user's own, with its own signals.
   diagrams::PlantFactory plant{};
+  // Empty: trial.theta0. Both bounds strictly inside +-trial.failure_angle.
+  std::optional<InitialPitch> initial_pitch{};
+};
+
+// What a step returns besides the observation and the info (BalanceEnvironment::step_into).
+struct StepFlags {
+  double reward = 0.0;
+  bool terminated = false;
+  bool truncated = false;
 };
 
 // Gymnasium's info: what the agent may read besides the observation.
 struct Info {
-  double time = 0.0;                      // the instant of the observation, s
-  double supervisor_action = 0.0;         // supervisor.kind's action on the observation, N m
+  double time = 0.0;  // the instant of the observation, s
+  // supervisor.kind's action on the observation, N m, saturated at the action space's bounds
+  // (+-plant.torque_limit), where the plant saturates it too.
+  double supervisor_action = 0.0;
+  // The same before saturation: the torque the pd_only controller hands a plant.
+  double unsaturated_supervisor_action = 0.0;
   Vector state;                           // the plant's state output at `time`: true, without noise
   std::vector<std::string> signal_names;  // the name of each entry of `state`
   std::string failure_reason;             // why the episode terminated; empty otherwise
@@ -112,11 +132,15 @@ class BalanceEnvironment {
                               EnvironmentOptions options = {});
 
   // A new episode: the streams re-seeded when `seed` is given, every block's per-trial state
-  // reset, the robot at rest at `initial_pitch` (default trial.theta0), time 0. Throws
-  // std::invalid_argument for an initial pitch that is not finite or not strictly inside
-  // +-trial.failure_angle.
+  // reset, the robot at rest at `initial_pitch` (default: a draw of the reset distribution,
+  // EnvironmentOptions::initial_pitch, from the environment's own stream, which `seed`
+  // re-seeds too), time 0. Throws std::invalid_argument for an initial pitch that is not
+  // finite or not strictly inside +-trial.failure_angle.
   ResetResult reset(std::optional<std::uint64_t> seed = std::nullopt,
                     std::optional<double> initial_pitch = std::nullopt);
+  // The same, writing only the observation (kMeasuredSize values): no allocation.
+  void reset_into(std::optional<std::uint64_t> seed, std::optional<double> initial_pitch,
+                  double* observation);
 
   // Holds `action` (N m, on each wheel, push.*'s pulse added when set; the plant saturates
   // the sum at +-plant.torque_limit) for one period and returns the new state's observation
@@ -125,18 +149,25 @@ class BalanceEnvironment {
   // episode ended, and cbbg::SimulationError where the simulation cannot go on (a non-finite
   // state, an integrator that cannot meet plant.accuracy), which also ends the episode.
   StepResult step(double action);
-
-  // The observation space: theta_b within +-trial.failure_angle, which every observation of
-  // a running episode satisfies; a terminated episode's last one lies beyond it or is not
-  // finite (that is why it terminated; so may reset's be, where sensor noise puts it beyond,
-  // and the first step then terminates before its action acts). Every other signal
-  // unbounded (+-inf).
+  // The same, writing only the observation (kMeasuredSize values) and returning the flags:
+  // no allocation unless the episode terminates (the vectorised environment's step).
+  StepFlags step_into(double action, double* observation);
+  // The info's scalars at the last observation.
+  double time() const;
+  double supervisor_action() const;
+  // The observation space: every signal unbounded (+-inf), so that every observation lies in
+  // it, a terminated episode's last one too (beyond +-trial.failure_angle: that is why it
+  // terminated). A running episode's pitch stays within +-failure_angle().
   const Vector& observation_low() const { return observation_low_; }
   const Vector& observation_high() const { return observation_high_; }
   // The action space: +-plant.torque_limit, where the library's plants saturate each wheel's
   // torque (a user's plant saturates as it chooses).
   double action_low() const { return -parameters_.plant.robot.torque_limit; }
   double action_high() const { return parameters_.plant.robot.torque_limit; }
+  // trial.failure_angle: the pitch beyond which an episode terminates, rad.
+  double failure_angle() const { return parameters_.trial.failure_angle; }
+  // The reset distribution of the initial pitch.
+  const InitialPitch& initial_pitch() const { return initial_pitch_; }
   // trial.period: how long step holds the action, s.
   double period() const { return parameters_.trial.period; }
   // trial.duration: an episode that lasts this long is truncated, s.
@@ -151,6 +182,7 @@ class BalanceEnvironment {
   enum class Episode { kNotStarted, kRunning, kEnded };
 
   void check_initial_pitch(double pitch) const;
+  double draw_initial_pitch();
   void check_can_step(double action) const;
   // Computes every output of the loop at the context's instant, for the reads below.
   void evaluate();
@@ -159,7 +191,9 @@ class BalanceEnvironment {
   double reward() const;
   Info info(std::string failure_reason = {}) const;
   // The step an update ended before its end (status.terminated).
-  StepResult stopped_early(const SimulationStatus& status);
+  StepFlags stopped_early(const SimulationStatus& status, double* observation);
+  // Keeps the observation just computed as the last one, and writes it to `observation`.
+  void keep_observation(double* observation);
 
   parameters::Parameters parameters_;
   const AgentController* controller_ = nullptr;
@@ -173,9 +207,13 @@ class BalanceEnvironment {
   std::vector<std::string> signal_names_;
   Vector observation_low_;
   Vector observation_high_;
+  InitialPitch initial_pitch_;
+  RandomGenerator pitch_generator_;  // the reset distribution's draws
   Episode episode_ = Episode::kNotStarted;
-  long long ticks_ = 0;  // steps taken in this episode: the context is at t_{ticks_}
-  ResetResult last_;     // the observation and info returned last
+  long long ticks_ = 0;         // steps taken in this episode: the context is at t_{ticks_}
+  Vector last_observation_;     // the observation returned last
+  double last_time_ = 0.0;      // and its instant
+  std::string failure_reason_;  // why the last step terminated
 };
 
 }  // namespace cbbg::environment

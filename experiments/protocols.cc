@@ -10,6 +10,8 @@
 namespace cbbg::experiments {
 namespace {
 
+std::size_t library_protocols = 0;  // the registry's first ones, which stay
+
 std::vector<Protocol>& registry() {
   static std::vector<Protocol> all = [] {
     std::vector<Protocol> library{exp1_protocol(),     exp2_protocol(),     exp3_protocol(),
@@ -17,6 +19,7 @@ std::vector<Protocol>& registry() {
     for (const Protocol& protocol : library) {
       config::register_keys(protocol.keys, protocol.keys_after);
     }
+    library_protocols = library.size();
     return library;
   }();
   return all;
@@ -35,6 +38,20 @@ void register_protocol(Protocol protocol) {
   if (!protocol.run) throw std::invalid_argument("protocol '" + protocol.name + "' has no run");
   config::register_keys(protocol.keys, protocol.keys_after);
   registry().push_back(std::move(protocol));
+}
+
+void unregister_protocol(std::string_view name) {
+  const auto found =
+      std::find_if(registry().begin() + static_cast<std::ptrdiff_t>(library_protocols),
+                   registry().end(), [name](const Protocol& p) { return p.name == name; });
+  if (found == registry().end()) {
+    throw std::invalid_argument("no registered protocol '" + std::string(name) +
+                                "' to unregister (the library's protocols stay)");
+  }
+  std::vector<std::string> paths;
+  for (const config::KeySpec& key : found->keys) paths.push_back(key.path);
+  config::unregister_keys(paths);
+  registry().erase(found);
 }
 
 const std::vector<Protocol>& protocols() { return registry(); }

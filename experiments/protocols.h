@@ -64,6 +64,9 @@ struct Protocol {
 // Register before making the config (the command line makes it). Throws
 // std::invalid_argument.
 void register_protocol(Protocol protocol);
+// Removes a protocol register_protocol added, and its keys (a notebook registering it
+// again). Throws std::invalid_argument for another name (the library's protocols stay).
+void unregister_protocol(std::string_view name);
 
 // exp1, exp2, exp3, evaluate, transfer, then the registered protocols.
 const std::vector<Protocol>& protocols();

@@ -13,15 +13,18 @@ import json
 import os
 import sys
 
-from . import _cbbg
+from . import _cbbg, _output
 from ._cbbg import *  # noqa: F401,F403
 from ._cbbg import __doc__  # noqa: F401
 from ._cbbg import control  # noqa: F401
 
 # `import cbbg.control` finds the C++ submodule as a module of the package.
 sys.modules[__name__ + ".control"] = control
-from .environment import BalanceEnv, Box  # noqa: F401
+from .environment import BalanceEnv, Box, VecBalanceEnv  # noqa: F401
 from .results import load_results  # noqa: F401
+from . import _reprs
+
+_reprs.install()
 
 
 def _yaml(value):
@@ -91,7 +94,25 @@ def _share_dir():
     return ours if os.path.isdir(ours) or not os.path.isdir(other) else other
 
 
-def main(args):
+class CommandError(RuntimeError):
+    """cbbg.main(args, check=True) for a command that exits non-zero: its exit code, and what
+    it wrote to stderr when main forwarded it (else None: it went to the terminal)."""
+
+    def __init__(self, args, exit_code, stderr):
+        self.args_given, self.exit_code, self.stderr = list(args), exit_code, stderr
+        last = (stderr or "").strip().splitlines()
+        super().__init__(f"cbbg {' '.join(map(str, args))} exited with code {exit_code}"
+                         + (f": {last[-1]}" if last else ""))
+
+
+def main(args, check=False):
     """Runs the cbbg command line (["run", "--out", "results", ...]) in this process, with its
-    registrations (arms, plant kinds, protocols, sections); returns the exit code."""
-    return cli([os.fspath(a) for a in args], _share_dir())  # noqa: F405
+    registrations (arms, plant kinds, protocols, sections), and returns the exit code; with
+    check=True a non-zero one raises CommandError. What the command prints reaches Python's
+    sys.stdout and sys.stderr (a notebook shows it as it comes)."""
+    arguments = [os.fspath(a) for a in args]
+    with _output.forwarded() as stderr:
+        code = cli(arguments, _share_dir())  # noqa: F405
+    if check and code != 0:
+        raise CommandError(arguments, code, stderr())
+    return code

@@ -183,6 +183,13 @@ void bind_closed_loop(py::module_& m) {
       py::arg("push") = std::nullopt, py::arg("task") = std::nullopt);
 }
 
+// Removes the registered arm `name` if there is one (register_arm's replace=True).
+void forget_arm(const std::string& name) {
+  for (const diagrams::ArmName& arm : diagrams::registered_arms()) {
+    if (arm.name == name) return diagrams::unregister_arm(name);
+  }
+}
+
 void bind_arms(py::module_& m) {
   py::class_<diagrams::Arm>(m, "Arm",
                             "What an experiment compares: a name, the closed loop that learns "
@@ -223,20 +230,27 @@ void bind_arms(py::module_& m) {
   m.def(
       "register_arm",
       [](std::string name, std::string description, const ControllerOptions& options,
-         std::optional<diagrams::TaskSlots> task) {
+         std::optional<diagrams::TaskSlots> task, bool replace) {
+        if (replace) forget_arm(name);
         diagrams::register_arm(std::move(name), std::move(description), options,
                                task.value_or(diagrams::TaskSlots{}));
       },
       py::arg("name"), py::arg("description"), py::arg("options"), py::arg("task") = std::nullopt,
+      py::arg("replace") = false,
       "Registers an arm of a CB-BG controller with `options`, in a task whose slots `task` "
-      "(TaskSlots) fills.");
+      "(TaskSlots) fills; replace=True replaces an arm registered under that name.");
   m.def(
       "register_arm_of",
-      [](std::string name, std::string description, py::object learner, py::object policy) {
+      [](std::string name, std::string description, py::object learner, py::object policy,
+         bool replace) {
+        if (replace) forget_arm(name);
         diagrams::register_arm(std::move(name), std::move(description),
                                controller_factory_from(learner), controller_factory_from(policy));
       },
-      py::arg("name"), py::arg("description"), py::arg("learner"), py::arg("policy") = py::none());
+      py::arg("name"), py::arg("description"), py::arg("learner"), py::arg("policy") = py::none(),
+      py::arg("replace") = false);
+  m.def("unregister_arm", &diagrams::unregister_arm, py::arg("name"),
+        "Removes a registered arm (a preset stays).");
 }
 
 // A change of the robot, asked of a Python plant kind as a dict of settings.
@@ -265,21 +279,65 @@ PythonChange change_from(py::object change) {
   };
 }
 
+// A Python plant kind's linearisation: linearize(parameters) -> LinearModel (or (A, B)), the
+// model PlantKind::linearize describes (x = (theta_b, phi, theta_b', phi'), u the torque).
+using PythonLinearize = std::function<plant::LinearModel(const parameters::Parameters&)>;
+PythonLinearize linearize_from(py::object linearize, const std::string& kind) {
+  if (linearize.is_none()) return {};
+  SharedPythonObject callable(std::move(linearize));
+  return [callable, kind](const parameters::Parameters& p) {
+    py::gil_scoped_acquire gil;
+    const py::object model = calling_python(
+        [&] { return py::reinterpret_borrow<py::object>(callable.get())(copy_of(p)); });
+    plant::LinearModel linear;
+    if (py::isinstance<plant::LinearModel>(model)) {
+      linear = model.cast<plant::LinearModel>();
+    } else {
+      const auto pair = model.cast<std::pair<Eigen::MatrixXd, Eigen::MatrixXd>>();
+      linear = {pair.first, pair.second};
+    }
+    if (linear.A.rows() != 4 || linear.A.cols() != 4 || linear.B.rows() != 4 ||
+        linear.B.cols() != 1 || !linear.A.allFinite() || !linear.B.allFinite()) {
+      throw std::invalid_argument(
+          "plant kind '" + kind +
+          "': linearize must return finite A (4 x 4) and B (4 x 1) for "
+          "x = (theta_b, phi, theta_b', phi'); got A " +
+          std::to_string(linear.A.rows()) + " x " + std::to_string(linear.A.cols()) + ", B " +
+          std::to_string(linear.B.rows()) + " x " + std::to_string(linear.B.cols()));
+    }
+    return linear;
+  };
+}
+
 void bind_plant_kinds(py::module_& m) {
   bind_native_factories(m);
   m.def(
       "register_plant_kind",
-      [](std::string name, std::string description, py::object make, py::object change) {
+      [](std::string name, std::string description, py::object make, py::object change,
+         py::object linearize, bool replace) {
+        if (replace && std::ranges::any_of(diagrams::plant_kinds(), [&name](const auto& kind) {
+              return kind.name == name;
+            })) {
+          diagrams::unregister_plant_kind(name);
+        }
+        auto linear = linearize_from(std::move(linearize), name);
         diagrams::register_plant_kind({.name = std::move(name),
                                        .description = std::move(description),
                                        .make = plant_factory_from(make),
-                                       .change = change_from(std::move(change))});
+                                       .change = change_from(std::move(change)),
+                                       .linearize = std::move(linear)});
       },
       py::arg("name"), py::arg("description"), py::arg("make"), py::arg("change") = py::none(),
-      "Adds a plant kind plant.kind may name: make(name, parameters) -> RobotPlant; change("
+      py::arg("linearize") = py::none(), py::arg("replace") = false,
+      "Adds a plant kind plant.kind may name (replace=True: in place of a kind registered under "
+      "that name): make(name, parameters) -> RobotPlant; change("
       "parameters, key, factor) -> {key: value} applying an evaluation's changed robot "
       "(key: evaluation.body_mass_scale or evaluation.com_height_scale), or None when it has "
-      "no such parameter. Register before making any Config.");
+      "no such parameter; linearize(parameters) -> LinearModel or (A, B), the robot linearised "
+      "upright at rest (x = (theta_b, phi, theta_b', phi'), u the wheel torque: what "
+      "supervisor.kind: lqr designs from), or None. Register before making any Config.");
+  m.def("unregister_plant_kind", &diagrams::unregister_plant_kind, py::arg("name"),
+        "Removes a registered plant kind (the library's stay).");
   m.def("plant_kinds", [] { return names_of(diagrams::plant_kinds()); });
   m.def(
       "plant_factory",

@@ -8,6 +8,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <limits>
+#include <set>
 
 #include "bindings.h"
 #include "cbbg/config/declared_keys.h"
@@ -82,16 +83,39 @@ config::SectionCheck python_check(const std::string& name, const py::object& che
 
 // `keys`: {key: KeySpec}, in the order the section lists them; `check`, if not None, is
 // called with the section's values at the edge of every run.
-void register_section(const std::string& name, const py::dict& keys, const py::object& check) {
+// The sections registered from Python: the ones unregister_section may remove.
+std::set<std::string>& python_sections() {
+  static std::set<std::string> names;
+  return names;
+}
+
+void unregister_section(const std::string& name) {
+  if (python_sections().count(name) == 0) {
+    throw std::invalid_argument("no section '" + name +
+                                "' registered from Python to unregister (the library's stay)");
+  }
+  std::vector<std::string> paths;
+  for (const config::KeySpec& key : config::schema()) {
+    if (key.path.starts_with(name + ".")) paths.push_back(key.path);
+  }
+  config::unregister_keys(paths);
+  config::unregister_section_check(name);
+  python_sections().erase(name);
+}
+
+void register_section(const std::string& name, const py::dict& keys, const py::object& check,
+                      bool replace) {
   if (!config::is_name(name)) {
     throw std::invalid_argument("section '" + name + "': a name is " + config::kNameRule);
   }
+  if (replace && python_sections().count(name) != 0) unregister_section(name);
   std::vector<config::KeySpec> specs;
   for (const auto& [key, spec] : keys) {
     specs.push_back(spec.cast<config::KeySpec>());
     specs.back().path = name + "." + key.cast<std::string>();
   }
   config::register_keys(std::move(specs));
+  python_sections().insert(name);
   if (!check.is_none()) config::register_section_check(name, python_check(name, check));
 }
 
@@ -153,8 +177,10 @@ void bind_key_specs(py::module_& m) {
       },
       py::arg("default"), py::arg("meaning"), py::arg("choices") = std::vector<std::string>{},
       "A text key of a user's section; `choices`, when given, are the words it allows.");
+  m.def("unregister_section", &unregister_section, py::arg("name"),
+        "Removes a section registered from Python, its keys and its check.");
   m.def("register_section", &register_section, py::arg("name"), py::arg("keys"),
-        py::arg("check") = py::none(),
+        py::arg("check") = py::none(), py::arg("replace") = false,
         "Adds a section of the user's, {key: number_key(...), ...}, to every config made after: "
         "settable from dicts, files and --set, read from parameters[\"name.key\"]. `check`, "
         "if given, is called with the section's values ({key: value}) before any run and "

@@ -331,7 +331,7 @@ void bind_kit(py::module_& m) {
       "register_protocol",
       [](std::string name, std::string meaning, py::object per_seed, bool evaluates, bool paired,
          std::vector<experiments::Figure> figures, std::vector<experiments::Column> trial_columns,
-         std::string headline, const std::vector<std::string>& paired_figures) {
+         std::string headline, const std::vector<std::string>& paired_figures, bool replace) {
         const experiments::PerSeed body = per_seed_from(std::move(per_seed));
         experiments::ResultsSchema schema{.trial_columns = std::move(trial_columns),
                                           .evaluates = evaluates,
@@ -344,6 +344,10 @@ void bind_kit(py::module_& m) {
         }
         if (!schema.figures.empty()) schema.plots.push_back("figures");
         experiments::check_schema(schema, name);
+        if (replace && std::ranges::any_of(experiments::protocols(),
+                                           [&name](const auto& p) { return p.name == name; })) {
+          experiments::unregister_protocol(name);
+        }
         experiments::register_protocol(
             {.name = name,
              .meaning = std::move(meaning),
@@ -358,14 +362,17 @@ void bind_kit(py::module_& m) {
       py::arg("name"), py::arg("meaning"), py::arg("per_seed"), py::arg("evaluates") = true,
       py::arg("paired") = true, py::arg("figures") = std::vector<experiments::Figure>{},
       py::arg("trial_columns") = std::vector<experiments::Column>{}, py::arg("headline") = "",
-      py::arg("paired_figures") = std::vector<std::string>{},
-      "Adds a protocol `experiment` may name. per_seed(parameters, arm, run, loop) runs one "
+      py::arg("paired_figures") = std::vector<std::string>{}, py::arg("replace") = false,
+      "Adds a protocol `experiment` may name (replace=True: in place of one registered under "
+      "that name). per_seed(parameters, arm, run, loop) runs one "
       "seed of one arm: loop.trial(parameters, k) runs trials, run.add_trial(record) and "
       "run.add_figure(name, value) record them; the run is then finished as exp1's (weights "
       "kept, evaluated when `evaluates`). Its results: the figures it records (cbbg.Figure, "
       "or names in paired_figures: summed and compared between arms), its own per-trial "
       "columns (cbbg.Column, recorded with record.set_value), `paired`: whether the arms' "
       "failures before the first success are compared, `headline`: sweep.csv's figure.");
+  m.def("unregister_protocol", &experiments::unregister_protocol, py::arg("name"),
+        "Removes a registered protocol and its keys (the library's stay).");
   m.def("protocol_names", [] { return names_of(experiments::protocols()); });
 }
 

@@ -72,7 +72,7 @@ def test_the_spaces_and_the_episode_end():
     assert env.action_space.shape == (1,)
     np.testing.assert_array_equal(env.action_space.high, [5.0])
     assert env.observation_space.shape == (6,)
-    assert env.observation_space.high[0] == pytest.approx(0.5236)
+    assert env.failure_angle == pytest.approx(0.5236)
     observation, info = env.reset(seed=2, options={"initial_pitch": 0.3})
     assert env.observation_space.contains(observation)
     for _ in range(1000):
@@ -80,6 +80,9 @@ def test_the_spaces_and_the_episode_end():
         if terminated:
             break
     assert terminated and reward == -1.0 and info["failure_reason"]
+    # The last observation lies beyond the failure angle, and in the observation space.
+    assert abs(observation[0]) > env.failure_angle
+    assert observation in env.observation_space
     with pytest.raises(RuntimeError, match="the episode has ended .terminated or truncated.; call "
                                            "reset.. to start another"):
         env.step(0.0)

@@ -1,6 +1,7 @@
 // The config engine alone (config/key_registry.cc), in a program without the run's tree: it
 // has exactly the keys registered, in the places their registrations asked for.
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -98,6 +99,43 @@ TEST(KeyRegistry, AFilesPathIsReadFromWhereItWasWritten) {
               ThrowsMessage<ConfigError>(
                   "--set robot.file=[a, b]: robot.file must be a file's path on one line; got "
                   "[a, b]"));
+}
+
+struct Kind {
+  std::string kind = "one";
+
+  template <class Archive>
+  void describe(Archive& a) {
+    a.choice("kind", kind, "one (the first) | two",
+             Choices<std::string>{{"one", "one"}, {"two", "two"}});
+  }
+};
+
+// What a notebook's registration takes back: a word given to a key, with its meaning, and
+// keys, with their words.
+TEST(KeyRegistry, UnregisteringTakesBackWordsAndKeysExactly) {
+  register_keys(declared_keys(Kind{}, "plant_like"));
+  const KeySpec before = schema().back();
+  register_choice("plant_like.kind", "three", "a third (with parentheses)");
+  EXPECT_EQ(schema().back().meaning, before.meaning + " | three (a third (with parentheses))");
+  unregister_choice("plant_like.kind", "three");
+  EXPECT_EQ(schema().back().meaning, before.meaning);
+  EXPECT_EQ(schema().back().choices, before.choices);
+  EXPECT_THAT([] { unregister_choice("plant_like.kind", "two"); },
+              ThrowsMessage<std::invalid_argument>(
+                  "config key 'plant_like.kind' was not given 'two' by a registration"));
+
+  register_keys(declared_keys(Gains{}, "notebook"));
+  EXPECT_THAT(
+      [] {
+        unregister_keys({"notebook.k", "notebook.x"});
+      },
+      ThrowsMessage<std::invalid_argument>("no config key 'notebook.x' to unregister"));
+  unregister_keys({"notebook.k", "notebook.n"});
+  EXPECT_EQ(std::count_if(schema().begin(), schema().end(),
+                          [](const KeySpec& key) { return key.path.starts_with("notebook."); }),
+            0);
+  register_keys(declared_keys(Gains{}, "notebook"));  // registered again, as a cell reruns
 }
 
 }  // namespace

@@ -59,12 +59,13 @@ Rollout supervisor_rollout(BalanceEnvironment& env, std::optional<std::uint64_t>
   Rollout rollout;
   ResetResult start = env.reset(seed, initial_pitch);
   rollout.observations.push_back(start.observation);
-  double action = start.info.supervisor_action;
+  // Unsaturated, as the pd_only controller gives it: a user's plant may saturate elsewhere.
+  double action = start.info.unsaturated_supervisor_action;
   for (;;) {
     const StepResult step = env.step(action);
     rollout.observations.push_back(step.observation);
     rollout.rewards.push_back(step.reward);
-    action = step.info.supervisor_action;
+    action = step.info.unsaturated_supervisor_action;
     if (step.terminated || step.truncated) {
       rollout.terminated = step.terminated;
       rollout.truncated = step.truncated;
@@ -277,13 +278,13 @@ TEST(BalanceEnvironment, AnObservationBeyondTheAngleAtResetEndsTheFirstStepBefor
   EXPECT_THROW(env.step(0.0), std::logic_error);
 }
 
-TEST(BalanceEnvironment, TheSpacesAreTheFailureAngleAndTheTorqueLimit) {
+// Every observation lies in the observation space, a terminated episode's last one too.
+TEST(BalanceEnvironment, TheObservationSpaceIsUnboundedAndTheActionSpaceTheTorqueLimit) {
   const BalanceEnvironment env(analytic({"plant.torque_limit=3", "trial.period=0.02"}));
-  const double inf = std::numeric_limits<double>::infinity();
-  Vector high(6);
-  high << 0.5236, inf, inf, inf, inf, inf;
+  const Vector high = Vector::Constant(6, std::numeric_limits<double>::infinity());
   EXPECT_EQ(env.observation_high(), high);
   EXPECT_EQ(env.observation_low(), -high);
+  EXPECT_EQ(env.failure_angle(), 0.5236);
   EXPECT_EQ(env.action_low(), -3.0);
   EXPECT_EQ(env.action_high(), 3.0);
   EXPECT_EQ(env.period(), 0.02);
@@ -317,6 +318,48 @@ TEST(BalanceEnvironment, AUsersOwnPlantRunsThroughTheOptions) {
   } while (!step.terminated && !step.truncated);
   EXPECT_TRUE(step.terminated);
   EXPECT_GT(step.info.state[1], 0.5236);
+}
+
+TEST(BalanceEnvironment, TheSupervisorsActionIsSaturatedAtTheActionSpace) {
+  BalanceEnvironment env(analytic());
+  const Info info = env.reset(1, 0.4).info;
+  EXPECT_EQ(info.supervisor_action, 5.0);
+  EXPECT_EQ(info.unsaturated_supervisor_action, 20.0);  // 50 x 0.4, the robot at rest
+  EXPECT_EQ(env.reset(1, -0.4).info.supervisor_action, -5.0);
+}
+
+TEST(BalanceEnvironment, TheResetDistributionDrawsFromTheSeed) {
+  BalanceEnvironment fixed(analytic());
+  EXPECT_EQ(fixed.reset(1).info.state[0], fixed.parameters().trial.theta0);
+  BalanceEnvironment spread(analytic(),
+                            EnvironmentOptions{.initial_pitch = InitialPitch{-0.2, 0.2}});
+  const double first = spread.reset(7).info.state[0];
+  EXPECT_NE(spread.reset(8).info.state[0], first);
+  EXPECT_EQ(spread.reset(7).info.state[0], first);
+  EXPECT_LE(std::abs(first), 0.2);
+  EXPECT_THAT(
+      [] {
+        BalanceEnvironment(analytic(), {.initial_pitch = InitialPitch{0.3, -0.3}});
+      },
+      ThrowsMessage<std::invalid_argument>(
+          "the initial pitch range must have low <= high; got [0.3, -0.3]"));
+}
+
+TEST(BalanceEnvironment, StepIntoIsStepWithoutTheInfo) {
+  BalanceEnvironment env(analytic({"trial.duration=0.05"})),
+      lean(analytic({"trial.duration=0.05"}));
+  env.reset(3);
+  double observation[6];
+  lean.reset_into(3, std::nullopt, observation);
+  for (int k = 0; k < 5; ++k) {
+    const StepResult step = env.step(0.5);
+    const StepFlags flags = lean.step_into(0.5, observation);
+    EXPECT_EQ(Vector(Eigen::Map<const Vector>(observation, 6)), step.observation);
+    EXPECT_EQ(flags.reward, step.reward);
+    EXPECT_EQ(flags.truncated, step.truncated);
+    EXPECT_EQ(lean.supervisor_action(), step.info.supervisor_action);
+  }
+  EXPECT_THROW(lean.step_into(0.0, observation), std::logic_error);  // truncated at 0.05 s
 }
 
 }  // namespace
