@@ -222,4 +222,16 @@ plant::LinearModel planar_linearization(const parameters::Parameters& parameters
   return kind.linearize(parameters);
 }
 
+double kind_torque_limit(const parameters::Parameters& parameters) {
+  const PlantKind& kind = plant_kind(parameters.plant.kind);
+  if (!kind.torque_limit) return parameters.plant.robot.torque_limit;
+  const double limit = kind.torque_limit(parameters);
+  if (!(std::isfinite(limit) && limit > 0.0)) {
+    throw std::invalid_argument("plant kind '" + kind.name +
+                                "': its torque limit must be a finite number > 0, N m; got " +
+                                std::to_string(limit));
+  }
+  return limit;
+}
+
 }  // namespace cbbg::diagrams

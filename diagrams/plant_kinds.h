@@ -55,6 +55,10 @@ struct PlantKind {
   // The robot it models, where other kinds model the same one (simbody and analytic:
   // "two_wheeler"): weights learnt on one load onto the others. Empty: a robot of its own.
   std::string robot{};
+  // The torque, N m, at which the plant saturates each wheel's command: the action space of an
+  // agent driving it (environment/). Empty: plant.torque_limit, where the library's plants
+  // saturate.
+  std::function<double(const parameters::Parameters& parameters)> torque_limit{};
 };
 
 // Adds `kind` (its name a config::is_name word, new). Register before making any Config, as
@@ -83,5 +87,8 @@ bool same_robot(std::string_view learnt_on, std::string_view loaded_onto);
 // The linearisation plant.kind's kind offers (PlantKind::linearize) for the run's parameters.
 // Throws std::invalid_argument naming the kind when it offers none.
 plant::LinearModel planar_linearization(const parameters::Parameters& parameters);
+// The torque limit of plant.kind's kind (PlantKind::torque_limit, else plant.torque_limit).
+// Throws std::invalid_argument for a limit that is not finite and > 0, naming the kind.
+double kind_torque_limit(const parameters::Parameters& parameters);
 
 }  // namespace cbbg::diagrams

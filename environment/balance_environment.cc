@@ -58,6 +58,7 @@ BalanceEnvironment::BalanceEnvironment(const parameters::Parameters& parameters,
       Vector::Constant(blocks::kMeasuredSize, std::numeric_limits<double>::infinity());
   observation_low_ = -observation_high_;
   last_observation_ = Vector::Zero(blocks::kMeasuredSize);
+  torque_limit_ = diagrams::kind_torque_limit(parameters_);
   const double theta0 = parameters_.trial.theta0;
   initial_pitch_ = options.initial_pitch.value_or(InitialPitch{theta0, theta0});
   check_initial_pitch(initial_pitch_.low);

@@ -160,10 +160,11 @@ class BalanceEnvironment {
   // terminated). A running episode's pitch stays within +-failure_angle().
   const Vector& observation_low() const { return observation_low_; }
   const Vector& observation_high() const { return observation_high_; }
-  // The action space: +-plant.torque_limit, where the library's plants saturate each wheel's
-  // torque (a user's plant saturates as it chooses).
-  double action_low() const { return -parameters_.plant.robot.torque_limit; }
-  double action_high() const { return parameters_.plant.robot.torque_limit; }
+  // The action space: +-the torque limit of plant.kind's kind (diagrams::kind_torque_limit:
+  // plant.torque_limit, where the library's plants saturate each wheel's torque, or what a
+  // registered kind declares).
+  double action_low() const { return -torque_limit_; }
+  double action_high() const { return torque_limit_; }
   // trial.failure_angle: the pitch beyond which an episode terminates, rad.
   double failure_angle() const { return parameters_.trial.failure_angle; }
   // The reset distribution of the initial pitch.
@@ -208,6 +209,7 @@ class BalanceEnvironment {
   Vector observation_low_;
   Vector observation_high_;
   InitialPitch initial_pitch_;
+  double torque_limit_ = 0.0;
   RandomGenerator pitch_generator_;  // the reset distribution's draws
   Episode episode_ = Episode::kNotStarted;
   long long ticks_ = 0;         // steps taken in this episode: the context is at t_{ticks_}

@@ -12,6 +12,7 @@ arrays.
 import json
 import os
 import sys
+from collections.abc import Mapping
 
 from . import _cbbg, _output
 from ._cbbg import *  # noqa: F401,F403
@@ -63,6 +64,9 @@ class Config(_cbbg.Config):
     """
 
     def __init__(self, settings=None, file=None):
+        if settings is not None and not isinstance(settings, Mapping):
+            raise TypeError("settings are a dict of config keys ({'critic.gamma': 0.9}) or None; "
+                            f"got {type(settings).__name__} {settings!r}")
         super().__init__()
         if file is not None:
             self.merge_file(os.fspath(file))

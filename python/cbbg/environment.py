@@ -101,7 +101,11 @@ class EnvSpec:
 def _parameters(settings):
     from . import parameters as make_parameters  # the package's, after it loaded
 
-    return settings if isinstance(settings, _cbbg.Parameters) else make_parameters(settings)
+    if isinstance(settings, _cbbg.Parameters):
+        return settings
+    if isinstance(settings, _cbbg.Config):
+        return _cbbg.validated_parameters(settings)
+    return make_parameters(settings)
 
 
 def _from_yaml(text):

@@ -309,12 +309,24 @@ PythonLinearize linearize_from(py::object linearize, const std::string& kind) {
   };
 }
 
+// A Python plant kind's torque limit: torque_limit(parameters) -> N m.
+std::function<double(const parameters::Parameters&)> torque_limit_from(py::object limit) {
+  if (limit.is_none()) return {};
+  SharedPythonObject callable(std::move(limit));
+  return [callable](const parameters::Parameters& p) {
+    py::gil_scoped_acquire gil;
+    return calling_python([&] {
+      return py::reinterpret_borrow<py::object>(callable.get())(copy_of(p)).cast<double>();
+    });
+  };
+}
+
 void bind_plant_kinds(py::module_& m) {
   bind_native_factories(m);
   m.def(
       "register_plant_kind",
       [](std::string name, std::string description, py::object make, py::object change,
-         py::object linearize, bool replace) {
+         py::object linearize, py::object torque_limit, bool replace) {
         if (replace && std::ranges::any_of(diagrams::plant_kinds(), [&name](const auto& kind) {
               return kind.name == name;
             })) {
@@ -325,17 +337,21 @@ void bind_plant_kinds(py::module_& m) {
                                        .description = std::move(description),
                                        .make = plant_factory_from(make),
                                        .change = change_from(std::move(change)),
-                                       .linearize = std::move(linear)});
+                                       .linearize = std::move(linear),
+                                       .torque_limit = torque_limit_from(std::move(torque_limit))});
       },
       py::arg("name"), py::arg("description"), py::arg("make"), py::arg("change") = py::none(),
-      py::arg("linearize") = py::none(), py::arg("replace") = false,
+      py::arg("linearize") = py::none(), py::arg("torque_limit") = py::none(),
+      py::arg("replace") = false,
       "Adds a plant kind plant.kind may name (replace=True: in place of a kind registered under "
       "that name): make(name, parameters) -> RobotPlant; change("
       "parameters, key, factor) -> {key: value} applying an evaluation's changed robot "
       "(key: evaluation.body_mass_scale or evaluation.com_height_scale), or None when it has "
       "no such parameter; linearize(parameters) -> LinearModel or (A, B), the robot linearised "
       "upright at rest (x = (theta_b, phi, theta_b', phi'), u the wheel torque: what "
-      "supervisor.kind: lqr designs from), or None. Register before making any Config.");
+      "supervisor.kind: lqr designs from), or None; torque_limit(parameters) -> N m, where the "
+      "plant saturates each wheel (the environments' action space), or None for "
+      "plant.torque_limit. Register before making any Config.");
   m.def("unregister_plant_kind", &diagrams::unregister_plant_kind, py::arg("name"),
         "Removes a registered plant kind (the library's stay).");
   m.def("plant_kinds", [] { return names_of(diagrams::plant_kinds()); });

@@ -170,3 +170,29 @@ def test_a_python_plant_kind_offers_its_linearisation_to_the_lqr_supervisor():
                                          r"A \(4 x 4\) and B \(4 x 1\)"):
         cbbg.BalanceEnv({"plant.kind": "linear_numpy", "supervisor.kind": "lqr"})
     cbbg.unregister_plant_kind("linear_numpy")
+
+
+def test_a_plant_kinds_torque_limit_is_the_action_space():
+    from two_wheeler import RobotParams, TwoWheeler
+
+    cbbg.register_plant_kind("limited_numpy", "the NumPy two-wheeler, 3 N m motors",
+                             lambda name, p: TwoWheeler(name, RobotParams.of(p)),
+                             torque_limit=lambda p: 3.0, replace=True)
+    settings = {"plant.kind": "limited_numpy", "trial.duration": 0.1}
+    env = cbbg.BalanceEnv(settings)
+    assert list(env.action_space.high) == [3.0] and list(env.action_space.low) == [-3.0]
+    assert env.reset(seed=1, options={"initial_pitch": 0.4})[1]["supervisor_action"] == 3.0
+    assert cbbg.VecBalanceEnv(2, settings).single_action_space == env.action_space
+    cbbg.register_plant_kind("limited_numpy", "a wrong limit",
+                             lambda name, p: TwoWheeler(name, RobotParams.of(p)),
+                             torque_limit=lambda p: -1.0, replace=True)
+    with pytest.raises(ValueError, match="plant kind 'limited_numpy': its torque limit must be a "
+                                         "finite number > 0, N m; got -1"):
+        cbbg.BalanceEnv(settings)
+    cbbg.unregister_plant_kind("limited_numpy")
+
+
+def test_settings_of_another_type_are_refused_in_cbbgs_words():
+    with pytest.raises(TypeError, match=r"settings are a dict of config keys .* or None; got int 5"):
+        cbbg.BalanceEnv(5)
+    assert cbbg.BalanceEnv(cbbg.Config({"plant.kind": "analytic"})).period == 0.01
