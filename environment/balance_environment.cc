@@ -13,11 +13,11 @@
 namespace cbbg::environment {
 namespace {
 
-// The simulator's test of simultaneous instants (framework/simulator.cc): a tick this close
-// to trial.duration is the trial's end, not one more tick.
 // The stream the reset distribution draws from, beside the blocks' (framework/random.h).
 constexpr const char* kPitchStream = "environment/initial_pitch";
 
+// The simulator's test of simultaneous instants (framework/simulator.cc): a tick this close
+// to trial.duration is the trial's end, not one more tick.
 bool same_instant(double a, double b) {
   return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b));
 }
@@ -188,8 +188,6 @@ void BalanceEnvironment::check_can_step(double action) const {
 }
 
 void BalanceEnvironment::evaluate() { loop_.diagram->evaluate_outputs(simulator_->context()); }
-
-Vector BalanceEnvironment::measured() const { return simulator_->context().signal(*measured_); }
 
 bool BalanceEnvironment::failed() const { return simulator_->context().signal(*failed_)[0] > 0.5; }
 

@@ -187,7 +187,6 @@ class BalanceEnvironment {
   void check_can_step(double action) const;
   // Computes every output of the loop at the context's instant, for the reads below.
   void evaluate();
-  Vector measured() const;
   bool failed() const;
   double reward() const;
   Info info(std::string failure_reason = {}) const;
