@@ -43,8 +43,8 @@ codegen::CCalculation BoltzmannSampler::c_update(int, const Context&) const {
   return {{}, "  @@noise[0] = CBBG_NORMAL(rng);\n", true};
 }
 
-codegen::CCalculation BoltzmannSampler::c_initialization(int, const Context&) const {
-  return {{}, "  @@noise[0] = CBBG_NORMAL(rng);\n", true};
+codegen::CCalculation BoltzmannSampler::c_initialization(int, const Context& context) const {
+  return c_update(0, context);  // the same draw, as the constructor declares both
 }
 
 }  // namespace cbbg::blocks

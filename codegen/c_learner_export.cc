@@ -20,10 +20,15 @@ struct Member {
   std::string name;  // "critic": the member NAME_state.critic of type NAME_critic_state
   std::vector<CCalculation> updates;          // its periodic update, if any
   std::vector<CCalculation> initializations;  // its initialization updates
-  bool draws = false;
 
   const Block& block() const { return *entry->block; }
   bool has_state() const { return !block().discrete_state_parts().empty(); }
+  // Whether an update of its draws from its generator (it then has one in the learner).
+  bool draws() const {
+    const auto drawing = [](const CCalculation& c) { return c.draws; };
+    return std::any_of(updates.begin(), updates.end(), drawing) ||
+           std::any_of(initializations.begin(), initializations.end(), drawing);
+  }
 };
 
 void check_updates(const Block& block, double period) {
@@ -74,8 +79,6 @@ std::vector<Member> members_of(const Walk& walk, const Context& context, double 
       member.updates.push_back(emitter.c_update(static_cast<int>(k), context));
     for (std::size_t k = 0; k < block.initialization_updates().size(); ++k)
       member.initializations.push_back(emitter.c_initialization(static_cast<int>(k), context));
-    for (const auto* list : {&member.updates, &member.initializations})
-      for (const CCalculation& c : *list) member.draws = member.draws || c.draws;
     member.name = member_name(block, names);
     names.push_back(member.name);
     members.push_back(std::move(member));
@@ -99,7 +102,7 @@ struct Learner {
   const std::string& name() const { return options.name; }
   std::string state_type(const Member& m) const { return name() + "_" + m.name + "_state"; }
   bool draws() const {
-    return std::any_of(members.begin(), members.end(), [](const Member& m) { return m.draws; });
+    return std::any_of(members.begin(), members.end(), [](const Member& m) { return m.draws(); });
   }
 };
 
@@ -154,7 +157,7 @@ std::string update_parameters(const Learner& l, const Member& m, bool periodic) 
     for (std::size_t i = 0; i < m.entry->outputs.size(); ++i)
       list.push_back("const real *out" + std::to_string(i));
   }
-  if (m.draws) list.push_back(l.name() + "_random *rng");
+  if (m.draws()) list.push_back(l.name() + "_random *rng");
   std::string text;
   for (const std::string& p : list) text += (text.empty() ? "" : ", ") + p;
   return text.empty() ? "void" : text;
@@ -200,7 +203,7 @@ std::string update_call(const Learner& l, const Member& m, const std::string& fu
       arguments.push_back(input[0] == '$' ? l.name() + "_" + input.substr(1) : input);
     for (const std::string& output : m.entry->outputs) arguments.push_back(output);
   }
-  if (m.draws) arguments.push_back("&learner->" + m.name + "_random");
+  if (m.draws()) arguments.push_back("&learner->" + m.name + "_random");
   std::string call = function + "(";
   for (std::size_t i = 0; i < arguments.size(); ++i) call += (i ? ", " : "") + arguments[i];
   call += ")";
@@ -232,7 +235,7 @@ std::string state_types(const Learner& l) {
   h += "typedef struct {\n";
   for (const Member& m : l.members) {
     if (m.has_state()) h += "  " + l.state_type(m) + " " + m.name + ";\n";
-    if (m.draws) h += "  " + l.name() + "_random " + m.name + "_random;\n";
+    if (m.draws()) h += "  " + l.name() + "_random " + m.name + "_random;\n";
   }
   return h + "} " + l.name() + "_state;\n";
 }
@@ -296,7 +299,7 @@ std::string exported_state(const Learner& l) {
             l.name() + "_", l.options.scalar);
       }
     }
-    if (m.draws) {
+    if (m.draws()) {
       c += "\nstatic const " + l.name() + "_random " + l.name() + "_" + m.name +
            "_random_exported = " + c_random_state(l.context.random_generator(block)) + ";\n";
     }
@@ -309,7 +312,7 @@ std::string init_function(const Learner& l) {
   for (const Member& m : l.members) {
     const std::string exported = l.name() + "_" + m.name;
     if (m.has_state()) c += "  learner->" + m.name + " = " + exported + "_exported;\n";
-    if (m.draws) c += "  learner->" + m.name + "_random = " + exported + "_random_exported;\n";
+    if (m.draws()) c += "  learner->" + m.name + "_random = " + exported + "_random_exported;\n";
   }
   return c + "}\n";
 }
@@ -320,7 +323,7 @@ std::string seed_function(const Learner& l) {
   if (!l.draws()) return c + "  (void)learner;\n  (void)seed;\n}\n";
   const std::string root = l.context.diagram().path() + "/";
   for (const Member& m : l.members) {
-    if (!m.draws) continue;
+    if (!m.draws()) continue;
     const std::string stream = m.block().path().substr(root.size());  // Context's stream name
     c += "  " + l.name() + "_random_seed(&learner->" + m.name + "_random, " + l.name() +
          "_derive_seed(seed, " + c_uint64(path_hash(stream)) + "));  /* '" + stream + "' */\n";
