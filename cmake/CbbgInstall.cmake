@@ -25,11 +25,13 @@ install(FILES apps/cli.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/apps)
 install(TARGETS cbbg RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The command finds its plotting script in share/cbbg/ beside its bin/.
 install(PROGRAMS scripts/plot_results.py DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
-# The robustness, teacher and ablation studies and their reports (README: Beyond the paper),
+# The robustness, teacher, ablation and baseline studies and their reports (README: Beyond
+# the paper),
 # what they share, and the variants' configs the teacher and ablation studies run.
 install(PROGRAMS scripts/robustness_study.sh scripts/robustness_report.py
                  scripts/teacher_study.sh scripts/teacher_report.py
                  scripts/ablation_study.sh scripts/ablation_report.py
+                 scripts/baseline_study.sh scripts/baseline_report.py
         DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
 install(FILES scripts/study_kit.sh scripts/study_stats.py DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
 install(DIRECTORY configs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/configs)

@@ -1,5 +1,7 @@
 #include "cbbg/diagrams/closed_loop.h"
 
+#include <algorithm>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 
@@ -20,6 +22,20 @@
 namespace cbbg::diagrams {
 namespace {
 
+// A plant's logged signal may not take the name of a column steps.csv has already.
+void check_logged_names(const std::string& plant, const std::vector<plant::LoggedSignal>& logged) {
+  for (const plant::LoggedSignal& signal : logged) {
+    bool taken = std::any_of(std::begin(kStepsKeyColumns), std::end(kStepsKeyColumns),
+                             [&](const char* name) { return signal.name == name; });
+    for (const RecordedSignal& recorded : kRecordedSignals) taken |= signal.name == recorded.name;
+    if (taken) {
+      throw std::invalid_argument("plant '" + plant + "' logs '" + signal.name +
+                                  "', a name steps.csv gives one of its own columns; rename "
+                                  "the signal");
+    }
+  }
+}
+
 // The plant's ports checked, and where its signals sit in its state output.
 plant::SignalIndex check_plant(const plant::RobotPlant& robot) {
   const InputPort* torque = robot.find_input_port("torque");
@@ -35,7 +51,9 @@ plant::SignalIndex check_plant(const plant::RobotPlant& robot) {
                                 std::to_string(signals.size()) + " signals, but its output " +
                                 "\"state\" has size " + std::to_string(state->size()));
   }
-  return plant::index_signals(robot.name(), signals);
+  plant::SignalIndex index = plant::index_signals(robot.name(), signals, robot.logged_signals());
+  check_logged_names(robot.name(), index.logged);
+  return index;
 }
 
 // The push of push.*, when it pushes at all.
@@ -151,7 +169,7 @@ const OutputPort& wire_pose(DiagramBuilder& builder, const plant::RobotPlant& ro
   return pose.output_port("y");
 }
 
-// The multiplexer of telemetry.h's signals.
+// The multiplexer of telemetry.h's signals, then the plant's logged ones.
 const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& measured,
                                  const Diagram& controller, const OutputPort& reward,
                                  const plant::RobotPlant& robot,
@@ -164,6 +182,9 @@ const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& meas
   inputs.push_back({"reward", 1});
   inputs.push_back({"entropy", 1});
   inputs.push_back({"pose", 3});
+  if (!signals.logged.empty()) {
+    inputs.push_back({"logged", static_cast<int>(signals.logged.size())});
+  }
   auto& telemetry = builder.emplace<Multiplexer>("telemetry", inputs);
   Diagnostics diagnostic(builder, controller);
   builder.connect(wire_pose(builder, robot, signals, diagnostic), telemetry.input_port("pose"));
@@ -173,6 +194,13 @@ const OutputPort& wire_telemetry(DiagramBuilder& builder, const OutputPort& meas
   }
   builder.connect(reward, telemetry.input_port("reward"));
   builder.connect(diagnostic("entropy"), telemetry.input_port("entropy"));
+  if (!signals.logged.empty()) {
+    std::vector<int> indices;
+    for (const plant::LoggedSignal& signal : signals.logged) indices.push_back(signal.index);
+    auto& logged = builder.emplace<Selector>("logged", robot.state_output().size(), indices);
+    builder.connect(robot.state_output(), logged.input_port("u"));
+    builder.connect(logged.output_port("y"), telemetry.input_port("logged"));
+  }
   return telemetry.output_port("y");
 }
 

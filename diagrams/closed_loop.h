@@ -30,9 +30,11 @@ namespace cbbg::diagrams {
 struct ClosedLoop {
   std::unique_ptr<Diagram> diagram;
   const plant::RobotPlant* plant = nullptr;
-  plant::SignalIndex signals;  // where the loop found each signal it reads in the plant's state
+  plant::SignalIndex signals;  // where the loop found each signal it reads or logs in the plant's
+                               // state
   bool plant_of_kind = true;   // built by plant.kind's kind, not ClosedLoopOptions::plant
-  const OutputPort* telemetry = nullptr;  // kTelemetrySize signals, TelemetryIndex order
+  // kTelemetrySize signals in TelemetryIndex order, then signals.logged's
+  const OutputPort* telemetry = nullptr;
   LearnerBlocks learner;
   // What the controller's blocks say gives its features their meaning (normaliser.*, rbf.*
   // for the presets), in the order they were built, and their notes for a weights file.

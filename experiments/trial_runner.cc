@@ -15,25 +15,22 @@ namespace {
 
 struct StepsColumn {
   int telemetry;
-  const char* name;
+  std::string name;
 };
 
-// steps.csv's signal columns, after arm, seed, trial and t; then the pose's, where it exists.
-constexpr StepsColumn kStepsColumns[] = {
-    {kTelemetryThetaB, "theta_b"},        {kTelemetryThetaBDot, "dtheta_b"},
-    {kTelemetryPhiLeft, "phi_l"},         {kTelemetryPhiRight, "phi_r"},
-    {kTelemetrySupervisorAction, "a_S"},  {kTelemetryActorAction, "a_A"},
-    {kTelemetryExplorationAction, "a_E"}, {kTelemetryAction, "a"},
-    {kTelemetryOmega, "omega"},           {kTelemetryValue, "V"},
-    {kTelemetryTdError, "delta"},         {kTelemetryTemperature, "T"},
-    {kTelemetryReward, "reward"}};
-
-// The columns of rows from a plant with `signals`.
+// steps.csv's signal columns from a plant with `signals`, after arm, seed, trial and t: the
+// telemetry's recorded signals, the pose's where it exists, then the plant's logged ones.
 std::vector<StepsColumn> steps_columns(const plant::SignalIndex& signals) {
-  std::vector<StepsColumn> columns(std::begin(kStepsColumns), std::end(kStepsColumns));
+  std::vector<StepsColumn> columns;
+  for (const RecordedSignal& recorded : kRecordedSignals) {
+    columns.push_back({recorded.telemetry, recorded.name});
+  }
   if (signals.x >= 0) columns.push_back({kTelemetryX, "x"});
   if (signals.y >= 0) columns.push_back({kTelemetryY, "y"});
   if (signals.yaw >= 0) columns.push_back({kTelemetryYaw, "yaw"});
+  for (std::size_t i = 0; i < signals.logged.size(); ++i) {
+    columns.push_back({kTelemetrySize + static_cast<int>(i), signals.logged[i].name});
+  }
   return columns;
 }
 
@@ -48,7 +45,10 @@ void write_number(std::ostream& out, double value) {
 
 std::string steps_csv_header(const plant::SignalIndex& signals) {
   std::string header = "arm,seed,trial,t";
-  for (const StepsColumn& column : steps_columns(signals)) header += std::string(",") + column.name;
+  for (const StepsColumn& column : steps_columns(signals)) {
+    header += ',';
+    header += column.name;
+  }
   return header + "\n";
 }
 

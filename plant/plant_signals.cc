@@ -12,6 +12,34 @@ int find(const std::vector<std::string>& signals, const std::string& name) {
   return at == signals.end() ? -1 : static_cast<int>(at - signals.begin());
 }
 
+// Where each of `logged` sits in `signals`.
+std::vector<LoggedSignal> index_logged(const std::string& plant,
+                                       const std::vector<std::string>& signals,
+                                       const std::vector<std::string>& logged) {
+  std::vector<LoggedSignal> result;
+  for (const std::string& name : logged) {
+    const int index = find(signals, name);
+    if (index < 0) {
+      std::string names;
+      for (const std::string& signal : signals) names += (names.empty() ? "" : ", ") + signal;
+      throw std::invalid_argument("plant '" + plant + "' logs '" + name +
+                                  "', which is not one of its signals (" + names + ")");
+    }
+    if (name == "x" || name == "y" || name == "yaw") {
+      throw std::invalid_argument("plant '" + plant + "' logs '" + name +
+                                  "', its pose, which steps.csv records anyway; log only "
+                                  "its other signals");
+    }
+    for (const LoggedSignal& earlier : result) {
+      if (earlier.name == name) {
+        throw std::invalid_argument("plant '" + plant + "' logs '" + name + "' twice");
+      }
+    }
+    result.push_back({name, index});
+  }
+  return result;
+}
+
 }  // namespace
 
 const std::vector<std::string>& two_wheeler_signals() {
@@ -21,7 +49,8 @@ const std::vector<std::string>& two_wheeler_signals() {
   return names;
 }
 
-SignalIndex index_signals(const std::string& plant, const std::vector<std::string>& signals) {
+SignalIndex index_signals(const std::string& plant, const std::vector<std::string>& signals,
+                          const std::vector<std::string>& logged) {
   for (std::size_t i = 0; i < signals.size(); ++i) {
     if (find(signals, signals[i]) != static_cast<int>(i)) {
       throw std::invalid_argument("plant '" + plant + "' names its signal '" + signals[i] +
@@ -51,6 +80,7 @@ SignalIndex index_signals(const std::string& plant, const std::vector<std::strin
   index.x = find(signals, "x");
   index.y = find(signals, "y");
   index.yaw = find(signals, "yaw");
+  index.logged = index_logged(plant, signals, logged);
   return index;
 }
 

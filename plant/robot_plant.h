@@ -48,6 +48,12 @@ class RobotPlant : public Block {
   // The name of each entry of the state output, in order: the two-wheeler's by default.
   virtual std::vector<std::string> signals() const { return two_wheeler_signals(); }
 
+  // The signals of signals() that steps.csv records every logged tick, after the loop's own
+  // columns and the pose, named as here: none by default (yaw_rate, say, or a cart-pole's
+  // cart position). The pose and a name steps.csv already has are refused when the loop
+  // builds.
+  virtual std::vector<std::string> logged_signals() const { return {}; }
+
   // The wheels' radius, m: what turns wheel angles into distance (a trial's mean forward
   // speed). NaN, the default, for a plant that does not say; those figures are then NaN.
   virtual double wheel_radius() const { return std::numeric_limits<double>::quiet_NaN(); }

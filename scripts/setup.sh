@@ -4,7 +4,8 @@
 # replay/page/package-lock.json) into replay/page/node_modules.
 #   scripts/setup.sh          everything the tests need too (test.sh)
 #   scripts/setup.sh --main   only what building and running the main job needs (run.sh):
-#                             no sanitizer compiler, fuzzer, Slurm, GNU parallel or Chromium
+#                             no sanitizer compiler, fuzzer, Slurm, GNU parallel, Chromium
+#                             or PyTorch
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
@@ -23,6 +24,8 @@ test_packages=(
   clang clang-format libclang-rt-14-dev libfuzzer-14-dev time python3-pytest
   parallel slurm-wlm munge
   chromium
+  # the deep-RL baseline's test (python/examples/ppo_balance.py)
+  python3-torch
 )
 case "${1:-}" in
   "") packages+=("${test_packages[@]}") ;;

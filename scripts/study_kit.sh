@@ -1,9 +1,9 @@
-# Sourced by the study scripts (robustness_study.sh, teacher_study.sh, ablation_study.sh),
-# after they parse their options: what they share. The caller sets
+# Sourced by the study scripts (robustness_study.sh, teacher_study.sh, ablation_study.sh,
+# baseline_study.sh): what they share. The caller sets
 #   study     its own name, for messages ("robustness_study.sh")
 #   here      its folder
 #   usage     a function that prints "$study: MESSAGE (usage: ...)" and exits 2
-# and the options: out (--out), plant, seeds, jobs.
+# and the options: out (--out), plant, seeds, jobs, which study_options parses (or the study).
 # study_check_options checks the options every study has, before anything is made, and finds
 # cbbg; study_folder_open (with settings, one line of what the study was started with, and
 # marker_name, the file that marks the folder as the study's) refuses (exit 2) a folder it
@@ -63,10 +63,11 @@ study_probe() {
   exit 1
 }
 
-# study_variant_options ARGS...: a study of variants' options, parsed and checked: --out, --plant
-# (analytic), --seeds (20), --jobs (nproc) and --variants (all_variants).
-study_variant_options() {
-  plant=analytic seeds=20 jobs="$(nproc)" out="" variants="$all_variants"
+# study_options ARGS...: every study's options, parsed and checked: --out, --plant (analytic),
+# --seeds (20), --jobs (nproc); any other is handed to study_extra_option NAME VALUE, which a
+# study with options of its own defines (its status 1: an unknown option).
+study_options() {
+  plant=analytic seeds=20 jobs="$(nproc)" out=""
   while [[ $# -gt 0 ]]; do
     [[ $# -ge 2 ]] || usage "$1 needs a value"
     case "$1" in
@@ -74,12 +75,20 @@ study_variant_options() {
       --plant) plant="$2" ;;
       --seeds) seeds="$2" ;;
       --jobs) jobs="$2" ;;
-      --variants) variants="$2" ;;
-      *) usage "unknown option '$1'" ;;
+      *) study_extra_option "$1" "$2" || usage "unknown option '$1'" ;;
     esac
     shift 2
   done
   study_check_options
+}
+study_extra_option() { return 1; }
+
+# study_variant_options ARGS...: a study of variants' options, parsed and checked: those of
+# study_options and --variants (all_variants).
+study_variant_options() {
+  variants="$all_variants"
+  study_extra_option() { [[ "$1" == --variants ]] && variants="$2"; }
+  study_options "$@"
   study_check_variants
 }
 

@@ -23,7 +23,7 @@ from ._cbbg import control  # noqa: F401
 sys.modules[__name__ + ".control"] = control
 from .environment import BalanceEnv, Box, VecBalanceEnv  # noqa: F401
 from .results import load_results  # noqa: F401
-from . import _reprs
+from . import _reprs, _type_errors
 
 _reprs.install()
 
@@ -114,9 +114,20 @@ def main(args, check=False):
     registrations (arms, plant kinds, protocols, sections), and returns the exit code; with
     check=True a non-zero one raises CommandError. What the command prints reaches Python's
     sys.stdout and sys.stderr (a notebook shows it as it comes)."""
-    arguments = [os.fspath(a) for a in args]
+    if isinstance(args, (str, bytes, os.PathLike)) or not hasattr(args, "__iter__"):
+        raise TypeError("cbbg.main: args are a list of the command's words (['run', "
+                        f"'--seeds', '5']); got {type(args).__name__} {args!r}")
+    arguments = []
+    for index, arg in enumerate(args):
+        if not isinstance(arg, (str, os.PathLike)):
+            raise TypeError(f"cbbg.main: args[{index}] is {type(arg).__name__} {arg!r}; each "
+                            "word is a str (or a path)")
+        arguments.append(os.fspath(arg))
     with _output.forwarded() as stderr:
         code = cli(arguments, _share_dir())  # noqa: F405
     if check and code != 0:
         raise CommandError(arguments, code, stderr())
     return code
+
+
+_type_errors.install(globals(), _cbbg)

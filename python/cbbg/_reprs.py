@@ -51,12 +51,26 @@ def _parameters_repr(self):
     return "Parameters(" + ", ".join(f"{k}={self[k]!r}" for k in keys) + f", ... {len(self)} keys)"
 
 
+def _keyed(lookup):
+    """Parameters' lookup, refusing a key that is not text in cbbg's words."""
+
+    def by_key(self, key):
+        if not isinstance(key, str):
+            raise TypeError(f"Parameters: a key is a str ('critic.gamma'); got "
+                            f"{type(key).__name__} {key!r}")
+        return lookup(self, key)
+
+    return by_key
+
+
 def install():
     for name, fields in _FIELDS.items():
         cls = getattr(_cbbg, name, None) or getattr(_cbbg.control, name, None)
         if cls is not None and cls.__repr__ is object.__repr__:
             cls.__repr__ = _field_repr(fields)
     parameters = _cbbg.Parameters
+    parameters.__getitem__ = _keyed(parameters.__getitem__)
+    parameters.value = _keyed(parameters.value)
     parameters.__iter__ = lambda self: iter(_key_paths())
     parameters.__len__ = lambda self: len(_key_paths())
     parameters.__contains__ = lambda self, key: isinstance(key, str) and key in _key_paths()

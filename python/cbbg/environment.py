@@ -15,6 +15,7 @@ them, and cbbg.gymnasium.register() makes them Gymnasium's where it is installed
     observations, rewards, terminated, truncated, infos = envs.step(actions)  # (64,) each
 """
 
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
@@ -117,6 +118,15 @@ def _from_yaml(text):
     return _cbbg.validated_parameters(config)
 
 
+def _check_seed(seed):
+    """A reset's seed: None or a whole number >= 0, as Gymnasium's."""
+    if seed is None:
+        return
+    if isinstance(seed, bool) or not isinstance(seed, numbers.Integral) or seed < 0:
+        raise TypeError(f"reset: seed is None or a whole number >= 0; got "
+                        f"{type(seed).__name__} {seed!r}")
+
+
 def _initial_pitch(initial_pitch):
     """None, a pitch (rad) or a range (low, high) as the C++ environment takes it."""
     if initial_pitch is None:
@@ -195,6 +205,7 @@ class BalanceEnv(_Environment):
 
     def reset(self, seed=None, options=None):
         options = self._reset_options(options)
+        _check_seed(seed)
         if seed is not None:
             self._np_random = np.random.default_rng(seed)
         observation, info = self._env.reset(seed, options.get("initial_pitch"))
@@ -253,6 +264,10 @@ class VecBalanceEnv(_Environment):
     metadata = {"autoreset_mode": "NextStep", "render_modes": []}
 
     def __init__(self, num_envs, settings=None, plant=None, threads=0, initial_pitch=None):
+        for name, value in (("num_envs", num_envs), ("threads", threads)):
+            if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+                raise TypeError(f"VecBalanceEnv: {name} is a whole number; got "
+                                f"{type(value).__name__} {value!r}")
         self._parameters = _parameters(settings)
         self._plant = plant
         self._threads = threads
@@ -280,6 +295,7 @@ class VecBalanceEnv(_Environment):
 
     def reset(self, seed=None, options=None):
         pitches = self._reset_options(options).get("initial_pitch")
+        _check_seed(seed)
         if pitches is not None:
             pitches = [float(p) for p in np.broadcast_to(np.asarray(pitches, dtype=float),
                                                          (self.num_envs,))]

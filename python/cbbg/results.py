@@ -74,6 +74,9 @@ class Results:
     TABLES = ("trials", "evaluation", "figures")
 
     def __init__(self, directory):
+        if not isinstance(directory, (str, os.PathLike)):
+            raise TypeError("load_results: the directory is a path (str or os.PathLike); got "
+                            f"{type(directory).__name__} {directory!r}")
         self.directory = os.fspath(directory)
         if not os.path.isfile(os.path.join(self.directory, ".cbbg-results")):
             raise ValueError(

@@ -560,9 +560,19 @@ void bind_plant_models(py::module_& m) {
       .def_readwrite("x", &SignalIndex::x)
       .def_readwrite("y", &SignalIndex::y)
       .def_readwrite("yaw", &SignalIndex::yaw)
+      .def_property_readonly("logged",
+                             [](const SignalIndex& index) {
+                               std::vector<std::pair<std::string, int>> logged;
+                               for (const auto& [name, at] : index.logged) {
+                                 logged.emplace_back(name, at);
+                               }
+                               return logged;
+                             })
       .def_property_readonly("has_pose", &SignalIndex::has_pose);
   m.def("index_signals", &plant::index_signals, py::arg("plant"), py::arg("signals"),
-        "The indices of `signals`, the names of plant `plant`'s state output.");
+        py::arg("logged") = std::vector<std::string>{},
+        "The indices of `signals`, the names of plant `plant`'s state output, and of "
+        "`logged`, those it logs into steps.csv: (name, index) pairs.");
   m.def("two_wheeler_index", &plant::two_wheeler_index, py::return_value_policy::copy);
   m.def("two_wheeler_signals", &plant::two_wheeler_signals, py::return_value_policy::copy);
 }

@@ -13,6 +13,7 @@
 #include "bindings.h"
 #include "cbbg/config/declared_keys.h"
 #include "cbbg/diagrams/validated_parameters.h"
+#include "cbbg/experiments/evaluation_conditions.h"
 #include "cbbg/parameters/parameters.h"
 
 namespace cbbg::python {
@@ -227,6 +228,18 @@ void bind_typed_parameters(py::module_& m) {
       .def_property_readonly("arms", [](const parameters::Parameters& p) { return p.run.arms; });
   m.def("validated_parameters", &diagrams::validated_parameters, py::arg("config"),
         "The typed tree of `config`, every value and rule checked (ConfigError otherwise).");
+  m.def(
+      "evaluated_parameters",
+      [](const parameters::Parameters& training) {
+        experiments::check_evaluation_conditions(training);
+        return experiments::evaluation_parameters(training);
+      },
+      py::arg("parameters"),
+      "The robot, sensors and push an evaluation sees: `parameters` with its evaluation.* "
+      "perturbations applied (body mass and CoM height through plant.kind's kind, pitch noise "
+      "into sensors.noise_std, the push into push.*), as the protocols evaluate; an "
+      "environment made from them is that evaluation's robot. ConfigError when the kind has "
+      "no parameter a scale changes or the result is invalid.");
 }
 
 }  // namespace

@@ -274,10 +274,21 @@ void PythonRobotPlant::reset(Context& context, double initial_pitch) const {
   }
 }
 
-// An exception of signals() or wheel_radius() crosses as it is, an interrupt as one.
+// An exception of signals(), logged_signals() or wheel_radius() crosses as it is, an interrupt
+// as one.
 std::vector<std::string> PythonRobotPlant::signals() const {
   try {
     PYBIND11_OVERRIDE(std::vector<std::string>, plant::RobotPlant, signals, );
+  } catch (const py::error_already_set& error) {
+    const py::gil_scoped_acquire gil;
+    throw_if_interrupt(error);
+    throw;
+  }
+}
+
+std::vector<std::string> PythonRobotPlant::logged_signals() const {
+  try {
+    PYBIND11_OVERRIDE(std::vector<std::string>, plant::RobotPlant, logged_signals, );
   } catch (const py::error_already_set& error) {
     const py::gil_scoped_acquire gil;
     throw_if_interrupt(error);

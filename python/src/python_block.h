@@ -144,7 +144,8 @@ class PythonBlock : public Base {
 
 using PythonLeafBlock = PythonBlock<Block>;
 
-// A plant written in Python: reset, and optionally signals and wheel_radius, are overridden
+// A plant written in Python: reset, and optionally signals, logged_signals and wheel_radius,
+// are overridden
 // in Python.
 class PythonRobotPlant : public PythonBlock<plant::RobotPlant> {
  public:
@@ -152,6 +153,7 @@ class PythonRobotPlant : public PythonBlock<plant::RobotPlant> {
   std::string type_name() const override { return python_type_name(*this, "RobotPlant"); }
   void reset(Context& context, double initial_pitch) const override;
   std::vector<std::string> signals() const override;
+  std::vector<std::string> logged_signals() const override;
   double wheel_radius() const override;
 };
 

@@ -128,10 +128,12 @@ void bind_python_blocks(py::module_& m) {
       m, "RobotPlant",
       "A robot balanced through wheel torque: input \"torque\" (2), output \"state\" (its "
       "signals). A Python plant declares both ports and overrides reset(context, "
-      "initial_pitch); signals() and wheel_radius() as needed.");
+      "initial_pitch); signals(), logged_signals() and wheel_radius() as needed.");
   robot.def(py::init<std::string>(), py::arg("name"))
       .def("reset", &plant::RobotPlant::reset, py::arg("context"), py::arg("initial_pitch"))
       .def("signals", &plant::RobotPlant::signals)
+      .def("logged_signals", &plant::RobotPlant::logged_signals,
+           "The signals of signals() steps.csv records, after its own columns: none by default.")
       .def("wheel_radius", &plant::RobotPlant::wheel_radius)
       .def_property_readonly("torque_input", &plant::RobotPlant::torque_input,
                              py::return_value_policy::reference_internal)

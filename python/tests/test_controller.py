@@ -197,3 +197,43 @@ def test_a_registered_python_arm_and_plant_run_exp1_into_a_results_directory(tmp
     results = cbbg.load_results(out)
     assert results.summary["plant"] == "numpy_two_wheeler"
     assert len(results.evaluation["balanced"]) == 5
+
+
+class LoggingTwoWheeler(TwoWheeler):
+    """The NumPy two-wheeler, logging its yaw rate and true pitch into steps.csv."""
+
+    def logged_signals(self):
+        return ["yaw_rate", "pitch"]
+
+
+def test_a_python_plants_logged_signals_reach_steps_csv(tmp_path):
+    cbbg.register_plant_kind("logging_numpy", "the NumPy two-wheeler, logging two signals",
+                             lambda name, p: LoggingTwoWheeler(name, RobotParams.of(p)),
+                             replace=True)
+    out = tmp_path / "logged"
+    assert cbbg.main(["run", "--set", "plant.kind=logging_numpy", "--set", "arms=[pd_only]",
+                      "--set", "trial.duration=0.2", "--seeds", "1", "--no-figures",
+                      "--out", out]) == 0
+    with open(out / "steps.csv") as f:
+        assert f.readline().rstrip("\n").endswith(",reward,x,y,yaw,yaw_rate,pitch")
+    steps = cbbg.load_results(out).steps()
+    assert len(steps["pitch"]) == 20
+    # Exact sensors: the true pitch logged is the measured one; both wheels alike, no turn.
+    assert np.array_equal(steps["pitch"], steps["theta_b"])
+    assert np.all(np.abs(steps["yaw_rate"]) < 1e-9)
+    cbbg.unregister_plant_kind("logging_numpy")
+
+
+class MisloggingTwoWheeler(TwoWheeler):
+    def logged_signals(self):
+        return ["torque"]
+
+
+def test_a_python_plant_logging_what_it_lacks_is_refused_in_one_line():
+    cbbg.register_plant_kind("mislogging_numpy", "logs a signal it does not have",
+                             lambda name, p: MisloggingTwoWheeler(name, RobotParams.of(p)),
+                             replace=True)
+    with pytest.raises(ValueError, match="plant 'plant' logs 'torque', which is not one of its "
+                                         r"signals \(pitch, pitch_rate, "):
+        cbbg.BalanceEnv({"plant.kind": "mislogging_numpy"})
+    cbbg.unregister_plant_kind("mislogging_numpy")

@@ -88,3 +88,37 @@ def test_a_notebook_cell_that_registers_runs_again_with_replace_and_can_unregist
         cbbg.unregister_protocol("exp1")
     with pytest.raises(ValueError, match="no section 'critic' registered from Python"):
         cbbg.unregister_section("critic")
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: cbbg.make_arm(5, None),
+     "cbbg.make_arm takes (name: str, options: cbbg.ControllerOptions, plant: object = None, "
+     "task: Optional[cbbg.TaskSlots] = None); got 5, None"),
+    (lambda: cbbg.evaluated_parameters({"plant.kind": "analytic"}),
+     "cbbg.evaluated_parameters takes (parameters: cbbg.Parameters); got {'plant.kind': "
+     "'analytic'}"),
+    (lambda: cbbg.ControllerOptions(5),
+     "cbbg.ControllerOptions takes (); got "),
+    (lambda: cbbg.main("run"),
+     "cbbg.main: args are a list of the command's words (['run', '--seeds', '5']); got str 'run'"),
+    (lambda: cbbg.main(["run", 5]), "cbbg.main: args[1] is int 5; each word is a str (or a path)"),
+    (lambda: cbbg.parameters({})[5], "Parameters: a key is a str ('critic.gamma'); got int 5"),
+    (lambda: cbbg.load_results(5),
+     "load_results: the directory is a path (str or os.PathLike); got int 5"),
+    (lambda: cbbg.VecBalanceEnv("2", {"plant.kind": "analytic"}),
+     "VecBalanceEnv: num_envs is a whole number; got str '2'"),
+    (lambda: cbbg.BalanceEnv({"plant.kind": "analytic"}).reset(seed="a"),
+     "reset: seed is None or a whole number >= 0; got str 'a'"),
+])
+def test_a_call_with_arguments_of_the_wrong_type_says_so_in_cbbgs_words(call, message):
+    with pytest.raises(TypeError) as raised:
+        call()
+    text = str(raised.value)
+    assert text.startswith(message)
+    assert "\n" not in text and "_cbbg" not in text and "incompatible" not in text
+
+
+def test_the_translation_leaves_other_type_errors_and_right_calls_alone():
+    assert cbbg.evaluated_parameters(cbbg.parameters({"plant.kind": "analytic"}))["seed"] == 1
+    from cbbg import _type_errors
+    assert _type_errors.one_line("f", "f() missing 1 required positional argument") is None

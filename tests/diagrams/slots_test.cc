@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -142,6 +144,35 @@ TEST(Slots, AUsersFeaturesKeepTheirWeightsWithTheirOwnLayout) {
       ThrowsMessage<config::ConfigError>(
           "weights file 'w.txt' was made for tiles.per_axis 6; this diagram has rbf.centres "
           "[-3, -2, -1, 0, 1, 2, 3]"));
+}
+
+TEST(Slots, AUsersPlantLogsItsOwnSignalsIntoStepsCsv) {
+  ClosedLoopOptions pendulum;
+  pendulum.plant = [](const std::string& name, const parameters::Parameters&) {
+    auto robot = std::make_unique<PendulumRobot>(name);
+    robot->log({"pitch_rate", "wheel"});
+    return robot;
+  };
+  const ClosedLoop loop =
+      build_preset("pd_only", parameters::read_parameters(quick_config()), pendulum);
+  EXPECT_EQ(experiments::steps_csv_header(loop.signals),
+            "arm,seed,trial,t,theta_b,dtheta_b,phi_l,phi_r,a_S,a_A,a_E,a,omega,V,delta,T,reward,"
+            "pitch_rate,wheel\n");
+  std::ostringstream steps;
+  experiments::TrialRunner runner(loop, 1, 0.01, {.steps = &steps, .row_prefix = "pd_only,1,"});
+  runner.run_trial(0.1, 0.05);
+  // The quick config's sensors are exact: the logged true signals are the measured ones.
+  std::istringstream rows(steps.str());
+  int count = 0;
+  for (std::string row; std::getline(rows, row); ++count) {
+    std::vector<std::string> fields;
+    std::stringstream split(row);
+    for (std::string field; std::getline(split, field, ',');) fields.push_back(field);
+    ASSERT_EQ(fields.size(), 19u) << row;
+    EXPECT_EQ(fields[17], fields[5]) << row;  // pitch_rate, dtheta_b
+    EXPECT_EQ(fields[18], fields[6]) << row;  // wheel, phi_l
+  }
+  EXPECT_EQ(count, 5);
 }
 
 TEST(Slots, AUsersPlantTakesTheRobotsPlace) {

@@ -191,19 +191,22 @@ TEST(ClosedLoop, RefusesAPlantWithoutTheRobotPorts) {
           "(plant/robot_plant.h)"));
 }
 
-// A plant whose state output has `size` entries named `names`.
+// A plant whose state output has `size` entries named `names`, which logs `logged`.
 class NamedSignalsPlant final : public plant::RobotPlant {
  public:
-  NamedSignalsPlant(std::string name, int size, std::vector<std::string> names)
-      : RobotPlant(std::move(name)), names_(std::move(names)) {
+  NamedSignalsPlant(std::string name, int size, std::vector<std::string> names,
+                    std::vector<std::string> logged = {})
+      : RobotPlant(std::move(name)), names_(std::move(names)), logged_(std::move(logged)) {
     declare_input_port("torque", plant::kTorqueSize);
     declare_output_port("state", size, [](const BlockContext&, VectorRef y) { y.setZero(); }, {});
   }
   std::vector<std::string> signals() const override { return names_; }
+  std::vector<std::string> logged_signals() const override { return logged_; }
   void reset(Context&, double) const override {}
 
  private:
   std::vector<std::string> names_;
+  std::vector<std::string> logged_;
 };
 
 TEST(ClosedLoop, RefusesAPlantWhoseSignalsDoNotFit) {
@@ -235,6 +238,39 @@ TEST(ClosedLoop, RefusesAPlantWhoseSignalsDoNotFit) {
       },
       ThrowsMessage<std::invalid_argument>("plant 'plant' names its signal 'pitch' twice"));
   EXPECT_NO_THROW(loop_with(5, {"wheel_rate", "pitch", "extra", "wheel", "pitch_rate"}));
+}
+
+TEST(ClosedLoop, RefusesALoggedSignalItCannotRecord) {
+  const std::vector<std::string> names{"pitch", "pitch_rate", "wheel", "wheel_rate", "x",
+                                       "y",     "yaw",        "a",     "energy"};
+  auto loop_logging = [&](std::vector<std::string> logged) {
+    ClosedLoopOptions options;
+    options.plant = [=](const std::string& name, const parameters::Parameters&) {
+      return std::make_unique<NamedSignalsPlant>(name, 9, names, logged);
+    };
+    return closed_loop_factory("logging", ControllerOptions{},
+                               options)(parameters::read_parameters(analytic_config()));
+  };
+  EXPECT_THAT([&] { loop_logging({"power"}); },
+              ThrowsMessage<std::invalid_argument>(
+                  "plant 'plant' logs 'power', which is not one of its signals (pitch, "
+                  "pitch_rate, wheel, wheel_rate, x, y, yaw, a, energy)"));
+  EXPECT_THAT(
+      [&] {
+        loop_logging({"energy", "energy"});
+      },
+      ThrowsMessage<std::invalid_argument>("plant 'plant' logs 'energy' twice"));
+  EXPECT_THAT([&] { loop_logging({"yaw"}); },
+              ThrowsMessage<std::invalid_argument>(
+                  "plant 'plant' logs 'yaw', its pose, which steps.csv records anyway; log only "
+                  "its other signals"));
+  EXPECT_THAT([&] { loop_logging({"a"}); },
+              ThrowsMessage<std::invalid_argument>(
+                  "plant 'plant' logs 'a', a name steps.csv gives one of its own columns; "
+                  "rename the signal"));
+  const ClosedLoop loop = loop_logging({"energy", "pitch"});
+  EXPECT_EQ(loop.signals.logged, (std::vector<plant::LoggedSignal>{{"energy", 8}, {"pitch", 0}}));
+  EXPECT_EQ(loop.telemetry->size(), kTelemetrySize + 2);
 }
 
 TEST(ParamsFromConfig, PlantSimbodyIntegratorChoosesTheIntegrator) {

@@ -4,7 +4,7 @@
 // tau_r) / 2, phi'' = tau_l + tau_r; its own signals, in its own order: one wheel, no pose.
 // Made with DisturbanceInput::kDeclared it takes a push from outside as the robots do: its
 // input "disturbance" (force, pitch torque) adds the pitch torque to theta'' (the force it
-// ignores).
+// ignores). log() names the signals it logs into steps.csv.
 
 #include <string>
 #include <vector>
@@ -42,11 +42,16 @@ class PendulumRobot final : public plant::RobotPlant {
   std::vector<std::string> signals() const override {
     return {"wheel", "pitch", "wheel_rate", "pitch_rate"};
   }
+  std::vector<std::string> logged_signals() const override { return logged_; }
+  void log(std::vector<std::string> names) { logged_ = std::move(names); }
   void reset(Context& context, double initial_pitch) const override {
     auto x = context.continuous_state(*this);
     x.setZero();
     x[0] = initial_pitch;
   }
+
+ private:
+  std::vector<std::string> logged_;
 };
 
 }  // namespace cbbg::testing
