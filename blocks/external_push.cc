@@ -10,6 +10,9 @@ ExternalPush::ExternalPush(std::string name, const PushParams& params, double pe
   params_.validate();
   check_period(period);
   declare_discrete_state("push", Vector::Zero(2), StateLifetime::kPerTrial);
+  pulse_ = declare_parameter(
+      "pulse", (Vector(4) << params_.start, params_.duration, params_.force, params_.pitch_torque)
+                   .finished());
   declare_output_port(
       "disturbance", 2,
       [](const BlockContext& context, VectorRef disturbance) {
@@ -20,9 +23,13 @@ ExternalPush::ExternalPush(std::string name, const PushParams& params, double pe
   declare_periodic_update(
       period, 0.0,
       [this](BlockContext& context, VectorRef next) {
-        const bool on = params_.on_at(context.time());
-        next[0] = on ? params_.force : 0.0;
-        next[1] = on ? params_.pitch_torque : 0.0;
+        const auto pulse = context.parameter(pulse_);
+        PushParams push = params_;
+        push.start = pulse[0];
+        push.duration = pulse[1];
+        const bool on = push.on_at(context.time());
+        next[0] = on ? pulse[2] : 0.0;
+        next[1] = on ? pulse[3] : 0.0;
         return EventStatus::succeeded();
       },
       UpdateWrites::kInPlace);  // writes only

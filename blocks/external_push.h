@@ -19,7 +19,9 @@ namespace cbbg::blocks {
 /// Equations: at each tick t_k = k Ts the periodic update sets
 ///   (F, tau_ext) = (force, pitch_torque) if PushParams::on_at(t_k), else (0, 0)
 /// and holds it until t_{k+1}, exactly as TorquePush does with its torque.
-/// Parameters: PushParams, the period Ts = trial.period.
+/// Parameters: PushParams, the period Ts = trial.period. Context parameter "pulse" (4:
+/// start, duration, force, pitch_torque; PushParams' by default), which the update reads, so
+/// that each trial can be pushed differently (training.push_force draws one per trial).
 ///
 /// Discrete state: [F, tau_ext].
 class ExternalPush final : public Block {
@@ -28,6 +30,7 @@ class ExternalPush final : public Block {
 
  private:
   PushParams params_;
+  int pulse_;  // the context parameter's index
 };
 
 }  // namespace cbbg::blocks

@@ -30,14 +30,17 @@ Sensors::Sensors(std::string name, const SensorsParams& params, double period,
   const InputPort& plant_state =
       declare_input_port("plant_state", state_size, "the plant's signals (plant/plant_signals.h)");
   declare_discrete_state("noise", Vector::Zero(kMeasuredSize), StateLifetime::kPerTrial);
+  noise_scale_ = declare_parameter("noise_scale", Vector::Ones(kMeasuredSize));
   declare_output_port(
       "measured", kMeasuredSize,
       [this, &plant_state](const BlockContext& context, VectorRef measured) {
         const auto state = context.input(plant_state);
         const auto noise = context.discrete_state();
+        const auto scale = context.parameter(noise_scale_);
         for (int i = 0; i < kMeasuredSize; ++i) {
           const auto index = static_cast<size_t>(i);
-          double value = state[plant_index_[index]] + params_.noise_std[index] * noise[i];
+          double value =
+              state[plant_index_[index]] + params_.noise_std[index] * scale[i] * noise[i];
           const double step = params_.quantisation[index];
           if (step > 0.0) value = step * std::round(value / step);
           measured[i] = value;

@@ -48,6 +48,9 @@ struct SensorsParams {
 /// generator (only for signals with sigma_i > 0). The initialization update runs at the start
 /// of every trial, so a trial never reuses the previous one's last draw. Parameters: sigma =
 /// sensors.noise_std, q = sensors.quantisation (both off by default), the period trial.period.
+/// Context parameter "noise_scale" (6, ones): sigma_i is used times its entry, so a trial can
+/// have less noise than the block was built for (training.* grows it trial by trial) without
+/// changing which signals draw.
 class Sensors final : public Block {
  public:
   Sensors(std::string name, const SensorsParams& params, double period,
@@ -59,6 +62,7 @@ class Sensors final : public Block {
   void draw_noise(RandomGenerator& generator, VectorRef noise) const;
 
   SensorsParams params_;
+  int noise_scale_;                             // the context parameter's index
   std::array<int, kMeasuredSize> plant_index_;  // the plant state's index of each measured signal
 };
 

@@ -53,9 +53,10 @@ void run_annealing(const parameters::Parameters& p, const diagrams::Arm& coordin
       annealing_trial(1, annealed_k1(schedule, 1), first.runner.run_trial(theta0, duration, 1)));
 
   // The operant loop carries on: weights, the omega counter and the random streams.
-  const diagrams::ClosedLoop later_loop = operant.learner(p);
+  const diagrams::ClosedLoop later_loop = learning_loop(p, operant);
   TrialRunner later(later_loop, static_cast<std::uint64_t>(run.seed), p.trial.period, telemetry);
   later.context().continue_from(first.runner.context());
+  meet_training(later, later_loop, first.disturbances);
   for (int trial = 2; trial <= own.exp2.trials; ++trial) {
     const double k1 = annealed_k1(schedule, trial);
     set_k1(later_loop, later.context(), k1);

@@ -1,10 +1,14 @@
 #include "cbbg/experiments/protocol_kit.h"
 
+#include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "cbbg/config/config.h"
 #include "cbbg/experiments/evaluation_conditions.h"
 #include "cbbg/experiments/policy_evaluation.h"
+#include "cbbg/experiments/training_disturbances.h"
+#include "cbbg/framework/number_text.h"
 
 namespace cbbg::experiments {
 namespace {
@@ -76,13 +80,44 @@ void finish_run(const parameters::Parameters& p, const diagrams::Arm& arm,
   run.evaluation = evaluate_run(p, arm, run);
 }
 
+diagrams::ClosedLoop learning_loop(const parameters::Parameters& p, const diagrams::Arm& arm) {
+  const TrainingParams training = training_params(p);
+  try {
+    return arm.learner(training_loop_parameters(p));
+  } catch (const config::ConfigError& error) {
+    const std::string what = error.what();
+    if (training.push_force == 0.0 ||
+        what.find("push the robot from outside") == std::string::npos) {
+      throw;
+    }
+    // The push block is training.push_force's: say so rather than name push.force.
+    throw config::ConfigError("training.push_force is " + format_number(training.push_force) +
+                              ", but arm '" + arm.name +
+                              "' has a plant without the input \"disturbance\" that a push "
+                              "from outside needs; keep training.push_force 0 for it");
+  }
+}
+
+void meet_training(TrialRunner& runner, const diagrams::ClosedLoop& loop,
+                   const std::shared_ptr<TrainingDisturbances>& disturbances) {
+  if (!disturbances) return;
+  disturbances->check(loop);
+  runner.set_before_trial([&loop, disturbances](Context& context, int trial, double theta0) {
+    return disturbances->before_trial(loop, context, trial, theta0);
+  });
+}
+
 SeedLoop::SeedLoop(const parameters::Parameters& p, const diagrams::Arm& arm,
                    const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                    long long seed)
-    : loop(arm.learner(p)),
+    : loop(learning_loop(p, arm)),
       runner(loop, static_cast<std::uint64_t>(seed), p.trial.period, telemetry) {
   if (initial_weights != nullptr && loop.learner.learns()) {
     load_learnt_weights(loop, runner.context(), *initial_weights);
+  }
+  if (training_params(p).disturbs()) {
+    disturbances = std::make_shared<TrainingDisturbances>(p, static_cast<std::uint64_t>(seed));
+    meet_training(runner, loop, disturbances);
   }
 }
 
@@ -99,6 +134,7 @@ ExperimentResults run_per_arm(const std::string& experiment, const PerSeed& prot
                               const parameters::Parameters& p,
                               const std::vector<diagrams::Arm>& arms,
                               const ExperimentOptions& options) {
+  check_training(p);
   for (std::size_t a = 0; a < arms.size(); ++a) {
     if (!config::is_name(arms[a].name)) {
       throw std::invalid_argument(experiment + ": arm name '" + arms[a].name + "' is not a name (" +

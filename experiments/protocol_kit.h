@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "cbbg/experiments/learnt_weights.h"
 #include "cbbg/experiments/parallel_runs.h"
 #include "cbbg/experiments/seed_run.h"
+#include "cbbg/experiments/training_disturbances.h"
 #include "cbbg/experiments/trial_runner.h"
 #include "cbbg/parameters/parameters.h"
 
@@ -61,13 +63,27 @@ void keep_learnt(const parameters::Parameters& p, const diagrams::ClosedLoop& lo
 void finish_run(const parameters::Parameters& p, const diagrams::Arm& arm,
                 const diagrams::ClosedLoop& loop, const Context& context, SeedRun& run);
 
-// One seed of an arm: its learning closed loop and the runner of its trials, started from
-// the initial weights when there are some.
+// The arm's learning loop: built for training.*'s disturbances (training_loop_parameters).
+// Throws config::ConfigError naming training.push_force for a plant no push from outside
+// reaches.
+diagrams::ClosedLoop learning_loop(const parameters::Parameters& p, const diagrams::Arm& arm);
+
+// Has `runner`'s trials, in `loop`, meet training.*'s disturbances, drawn by `disturbances`
+// (a seed's, shared by the runners that carry on one another); nothing for null. Throws
+// config::ConfigError when `loop` lacks what they need.
+void meet_training(TrialRunner& runner, const diagrams::ClosedLoop& loop,
+                   const std::shared_ptr<TrainingDisturbances>& disturbances);
+
+// One seed of an arm: its learning closed loop (learning_loop) and the runner of its trials,
+// which meet training.*'s disturbances, started from the initial weights when there are some.
 struct SeedLoop {
   SeedLoop(const parameters::Parameters& p, const diagrams::Arm& arm,
            const TelemetryOptions& telemetry, const LearntWeights* initial_weights, long long seed);
   diagrams::ClosedLoop loop;
   TrialRunner runner;  // runs `loop`: declared after it
+  // The seed's training disturbances (null when training.* disturbs nothing), for a loop that
+  // carries on from this one (meet_training).
+  std::shared_ptr<TrainingDisturbances> disturbances;
 };
 
 // The next trial from trial.theta0 (or `theta0`), for trial.duration, k1 fixed.

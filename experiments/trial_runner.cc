@@ -150,6 +150,7 @@ TrialOutcome TrialRunner::run_trial(double theta0, double duration, int trial) {
 
   TrialOutcome outcome;
   try {
+    if (before_trial_) theta0 = before_trial_(context, trial, theta0);
     loop_->start_trial(context, theta0);  // a robot's link may be stopped already here
     simulator_.initialize();
     const SimulationStatus status = simulator_.advance_to(duration);

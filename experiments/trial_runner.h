@@ -4,6 +4,7 @@
 // rows of steps.csv and an in-memory log, so memory stays flat however long a trial runs.
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <ostream>
@@ -50,6 +51,12 @@ class TrialRunner {
   // SimulationStopped (a robot's link) ends it as stopped.
   TrialOutcome run_trial(double theta0, double duration, int trial = 1);
 
+  // What runs before each trial, in the trial's context: it may change the context's
+  // parameters (a trial's noise, its push) and returns the initial pitch to start from, given
+  // the one asked for (training_disturbances.h).
+  using BeforeTrial = std::function<double(Context& context, int trial, double theta0)>;
+  void set_before_trial(BeforeTrial before_trial) { before_trial_ = std::move(before_trial); }
+
   Context& context() { return simulator_.context(); }
   const diagrams::ClosedLoop& loop() const { return *loop_; }
   // The telemetry of the last trial, one sample per tick (diagrams::TelemetryIndex), when
@@ -64,6 +71,7 @@ class TrialRunner {
   void check_learning_signals(double time, const double* values) const;
 
   const diagrams::ClosedLoop* loop_;
+  BeforeTrial before_trial_;
   Simulator simulator_;
   SignalLog* telemetry_;
   double period_;

@@ -206,3 +206,18 @@ def test_an_exp3_seed_without_the_skill_loads_as_nan_where_it_has_none(tmp_path)
     assert np.isnan(results.figures["trials_to_skill"]).all()  # never in 2 trials
     assert results.summary["arms"]["bg_only"]["trials_to_skill"] == [None, None]
     assert results.trials["actor_alone"].dtype == bool  # tested after every trial
+
+
+def test_a_python_protocols_trials_learn_under_the_training_section():
+    """training.* reaches the trials of a protocol written in Python as it does exp1's: every
+    trial starts from a pitch drawn about the one it asks for."""
+    def outcomes(settings):
+        p = cbbg.parameters({**QUICK, "experiment": "two_angles", **settings})
+        return [(t.outcome.steps, t.outcome.final_theta)
+                for run in cbbg.run_experiment(p, jobs=2).runs for t in run.trials]
+
+    nominal = outcomes({})
+    spread = outcomes({"training": {"pitch_spread": 0.1}})
+    assert all(a != b for a, b in zip(nominal, spread))
+    with pytest.raises(cbbg.ConfigError, match="training.pitch_spread"):
+        outcomes({"training.pitch_spread": -1})
