@@ -32,6 +32,7 @@ install(PROGRAMS scripts/robustness_study.sh scripts/robustness_report.py
                  scripts/teacher_study.sh scripts/teacher_report.py
                  scripts/ablation_study.sh scripts/ablation_report.py
                  scripts/baseline_study.sh scripts/baseline_report.py
+                 scripts/disturbance_search.sh scripts/disturbance_front.py
         DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
 install(FILES scripts/study_kit.sh scripts/study_stats.py DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
 install(DIRECTORY configs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/configs)

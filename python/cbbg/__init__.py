@@ -22,7 +22,7 @@ from ._cbbg import control  # noqa: F401
 # `import cbbg.control` finds the C++ submodule as a module of the package.
 sys.modules[__name__ + ".control"] = control
 from .environment import BalanceEnv, Box, VecBalanceEnv  # noqa: F401
-from .results import load_results  # noqa: F401
+from .results import load_results, load_sweep  # noqa: F401
 from . import _reprs, _type_errors
 
 _reprs.install()

@@ -73,12 +73,14 @@ class Results:
 
     TABLES = ("trials", "evaluation", "figures")
 
-    def __init__(self, directory):
+    def __init__(self, directory, _finished_by_sweep=False):
         if not isinstance(directory, (str, os.PathLike)):
             raise TypeError("load_results: the directory is a path (str or os.PathLike); got "
                             f"{type(directory).__name__} {directory!r}")
         self.directory = os.fspath(directory)
-        if not os.path.isfile(os.path.join(self.directory, ".cbbg-results")):
+        # A sweep's points are finished when the sweep is (its own .cbbg-results).
+        if not _finished_by_sweep and not os.path.isfile(
+                os.path.join(self.directory, ".cbbg-results")):
             raise ValueError(
                 f"'{self.directory}' is not a finished cbbg results directory (no .cbbg-results)"
             )
@@ -162,3 +164,76 @@ class Results:
 def load_results(directory):
     """The results directory `directory` (see Results)."""
     return Results(directory)
+
+
+def _column(values):
+    """Values of one sweep column: int64, bool or float64 (NaN where a value is missing) when
+    they are all of one kind of number, else str."""
+    present = [v for v in values if v is not None]
+    if all(isinstance(v, (bool, np.bool_)) for v in present) and len(present) == len(values):
+        return np.array(values, dtype=bool)
+    if all(isinstance(v, (int, np.integer)) and not isinstance(v, (bool, np.bool_))
+           for v in present) and len(present) == len(values):
+        return np.array(values, dtype=np.int64)
+    try:
+        return np.array([np.nan if v is None else float(v) for v in values])
+    except (TypeError, ValueError):
+        return np.array(values, dtype=object)
+
+
+def load_sweep(directory):
+    """A finished sweep (cbbg run --grid ... --out DIR, its shards merged) as one table: a row
+    per grid point, arm and seed, as {column: NumPy array}, so pandas.DataFrame(load_sweep(DIR))
+    is its frame. Columns: point; each grid key's value (float64 where every value is a number,
+    else str); arm; seed; failures_before_success and succeeded (every protocol's); then the
+    protocol's per-seed figures (figures.csv: transfer's balanced@C and evaluated@C,
+    trials_to_skill, ...), NaN where a seed has none."""
+    if not isinstance(directory, (str, os.PathLike)):
+        raise TypeError("load_sweep: the directory is a path (str or os.PathLike); got "
+                        f"{type(directory).__name__} {directory!r}")
+    directory = os.fspath(directory)
+    sweep_csv = os.path.join(directory, "sweep.csv")
+    if not (os.path.isfile(os.path.join(directory, ".cbbg-results"))
+            and os.path.isfile(sweep_csv)):
+        raise ValueError(f"'{directory}' is not a finished cbbg sweep (no sweep.csv and "
+                         ".cbbg-results; merge its shards with cbbg merge)")
+    with open(sweep_csv, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader)
+        points = list(reader)
+    keys = header[1:header.index("arm")]
+    rows = []
+    for point in points:
+        fields = dict(zip(header, point))
+        results = Results(os.path.join(directory, "points", fields["point"]),
+                          _finished_by_sweep=True)
+        rows.extend(_seed_rows(results, fields, keys))
+    names = list(dict.fromkeys(name for row in rows for name in row))
+    table = {name: _column([row.get(name) for row in rows]) for name in names}
+    for key in keys:  # a grid key's values as the sweep wrote them: numbers, or text
+        table[key] = _inferred([str(v) for v in table[key]]) if len(rows) else table[key]
+    return table
+
+
+def _seed_rows(results, fields, keys):
+    """The rows of one grid point and arm (sweep.csv's `fields`), one per seed."""
+    arm = fields["arm"]
+    summary = results.summary["arms"][arm]
+    figures = results.tables.get("figures", {})
+    by_seed = {}
+    if figures:
+        for i, (row_arm, seed) in enumerate(zip(figures["arm"], figures["seed"])):
+            if row_arm == arm:
+                by_seed[int(seed)] = {name: figures[name][i].item()
+                                      for name in figures if name not in ("arm", "seed")}
+    rows = []
+    for i, seed in enumerate(results.summary["seeds"]):
+        row = {"point": int(fields["point"])}
+        row.update({key: fields[key] for key in keys})
+        row.update({"arm": arm, "seed": seed,
+                    "failures_before_success": summary["failures_before_success"][i],
+                    "succeeded": summary["succeeded"][i]})
+        for name, value in by_seed.get(seed, {}).items():
+            row[name] = None if isinstance(value, float) and np.isnan(value) else value
+        rows.append(row)
+    return rows
