@@ -31,8 +31,13 @@ namespace cbbg::app {
 namespace {
 
 // Applies the file, the overrides and the run flags, in that order.
-config::Config resolve(const RunOptions& options) {
+// What a sweep runs with unless its config file or a --set says otherwise: no per-tick logs,
+// whose steps.csv would be most of a sweep's bytes and of its merge's work.
+constexpr const char* kSweepDefault = "log.decimation=0";
+
+config::Config resolve(const RunOptions& options, bool sweep = false) {
   config::Config config;
+  if (sweep) config.set(kSweepDefault, "a sweep's default");
   if (!options.config_file.empty()) config.merge_file(options.config_file);
   for (const auto& assignment : options.sets) config.set(assignment);
   if (options.experiment) {
@@ -348,8 +353,7 @@ int run_command(const RunOptions& options) {
       }
       for (const std::string& axis : options.grid) sweep.add_flag(axis);
       if (!sweep.empty() || options.shard) {
-        if (options.config_file.empty()) base = resolve(options);
-        return sweep_command(options, base, sweep);
+        return sweep_command(options, resolve(options, true), sweep);
       }
     } catch (const config::ConfigError& error) {
       return report_error(kUserError, error.what());

@@ -170,6 +170,16 @@ void merge(const SweepPlan& plan, store::SweepDirectory& directory) {
   directory.commit();
 }
 
+// What `cbbg status` says of a sweep's per-tick logs.
+std::string per_tick_logs(long long decimation) {
+  if (decimation == 0) return "off (log.decimation 0, a sweep's default)";
+  if (decimation == 1) return "steps.csv, every tick (log.decimation 1)";
+  std::string text = "steps.csv, every ";
+  text += std::to_string(decimation);
+  text += "th tick (log.decimation)";
+  return text;
+}
+
 }  // namespace
 
 int sweep_command(const RunOptions& options, const config::Config& base,
@@ -303,6 +313,8 @@ int status_command(const std::filesystem::path& target) {
     for (const auto& [shard, message] : directory.failures()) {
       std::cout << "  failed: shard " << shard << ": " << message << "\n";
     }
+    std::cout << "  per-tick logs: " << per_tick_logs(sweep_plan.base.integer("log.decimation"))
+              << "\n";
     return 0;
   } catch (const config::ConfigError& error) {
     return report_error(kUserError, error.what());

@@ -95,10 +95,24 @@ TEST_F(Sweep, ShardsInAnyOrderMergeToTheBytesOfASingleProcessRun) {
   }
   const auto status = cbbg("status " + out("four"));
   EXPECT_THAT(status.output, HasSubstr("4 grid point(s), 24 task(s): 24 done, 0 missing"));
+  EXPECT_THAT(status.output, HasSubstr("per-tick logs: off (log.decimation 0, a sweep's default)"));
   const auto merge = cbbg("merge " + out("four"));
   ASSERT_EQ(merge.exit_code, 0) << merge.output;
   EXPECT_EQ(tree_of(scratch_ / "four"), tree_of(scratch_ / "single"));
   EXPECT_THAT(cbbg("status " + out("four")).output, HasSubstr("four: merged"));
+}
+
+TEST_F(Sweep, KeepsNoPerTickLogsUnlessTold) {
+  ASSERT_EQ(cbbg(kSweep + " --out " + out("quiet")).exit_code, 0);
+  EXPECT_FALSE(fs::exists(scratch_ / "quiet" / "points" / "001" / "steps.csv"));
+  const auto logged = cbbg(kSweep + " --set log.decimation=50 --shard 1/2 --out " + out("logged"));
+  ASSERT_EQ(logged.exit_code, 0) << logged.output;
+  EXPECT_THAT(cbbg("status " + out("logged")).output,
+              HasSubstr("per-tick logs: steps.csv, every 50th tick (log.decimation)"));
+  ASSERT_EQ(cbbg(kSweep + " --set log.decimation=50 --shard 2/2 --out " + out("logged")).exit_code,
+            0);
+  ASSERT_EQ(cbbg("merge " + out("logged")).exit_code, 0);
+  EXPECT_TRUE(fs::exists(scratch_ / "logged" / "points" / "001" / "steps.csv"));
 }
 
 TEST_F(Sweep, ShardsRunningAtOnceShareOneOut) {
