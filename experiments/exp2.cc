@@ -99,6 +99,7 @@ ResultsSchema exp2_schema(const parameters::Parameters&) {
 ExperimentResults run_exp2(const parameters::Parameters& parameters,
                            const diagrams::Arm& coordinated, const diagrams::Arm& operant,
                            const ExperimentOptions& options) {
+  check_training(parameters);
   auto body = [&](SeedRun& run, const TelemetryOptions& telemetry) {
     run_annealing(parameters, coordinated, operant, telemetry, options.initial_weights, run);
   };

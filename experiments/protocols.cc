@@ -6,6 +6,7 @@
 #include "cbbg/experiments/builtin_protocols.h"
 #include "cbbg/experiments/experiments.h"
 #include "cbbg/experiments/run_names.h"
+#include "cbbg/experiments/training_disturbances.h"
 
 namespace cbbg::experiments {
 namespace {
@@ -95,6 +96,7 @@ void check_recorded_figures(const ExperimentResults& results) {
 
 void check_protocol(const parameters::Parameters& parameters,
                     const LearntWeights* initial_weights) {
+  check_training(parameters);  // every protocol's learning trials meet training.*
   const Protocol* protocol = find_protocol(parameters.run.experiment);
   if (protocol != nullptr && protocol->check) protocol->check(parameters, initial_weights);
 }

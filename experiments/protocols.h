@@ -87,7 +87,8 @@ ResultsSchema results_schema(const parameters::Parameters& parameters);
 // schema does not declare (it would be lost).
 void check_recorded_figures(const ExperimentResults& results);
 
-// The check of the protocol `parameters` name, if it has one (Protocol::check).
+// The checks before any work of the protocol `parameters` name: training.*'s, which every
+// protocol's learning trials meet (check_training), then the protocol's own (Protocol::check).
 void check_protocol(const parameters::Parameters& parameters, const LearntWeights* initial_weights);
 
 // The arms `run.experiment` runs, by name: its protocol's, or the one arm it names.

@@ -132,6 +132,21 @@ TEST(TrainingDisturbances, WhatCannotBeAppliedIsRefusedNamingTheKey) {
           "training.push_force is 50, but push.* pushes every trial already; a learning trial "
           "takes one push: set push.torque, push.force and push.pitch_torque to 0, or "
           "training.push_force to 0"));
+  for (const std::string protocol : {"exp1", "exp2", "exp3", "transfer"}) {
+    EXPECT_THAT(
+        [&] {
+          check_protocol(
+              with({"training.push_force=50", "push.torque=1", "experiment=" + protocol}), nullptr);
+        },
+        ThrowsMessage<config::ConfigError>(::testing::StartsWith("training.push_force is 50")))
+        << protocol;
+  }
+  EXPECT_THAT(
+      [] {
+        run_exp2(with({"training.push_force=50", "push.torque=1"}), diagrams::preset_arm("cbbg"),
+                 diagrams::preset_arm("bg_only"));
+      },
+      ThrowsMessage<config::ConfigError>(::testing::StartsWith("training.push_force is 50")));
   EXPECT_THAT([] { check_training(with({"training.pitch_spread=0.4"})); },
               ThrowsMessage<config::ConfigError>(
                   "trial.theta0 + training.pitch_spread (0.5744 rad) must lie inside "
