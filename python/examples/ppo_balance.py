@@ -143,12 +143,12 @@ def train(settings, seed, steps, num_envs=16, rollout=128, epochs=10, minibatch=
             for key, value in (("obs", scaled), ("act", action.numpy()),
                                ("rew", reward + alive_bonus * (~terminated)),
                                ("term", terminated), ("end", ended_before), ("valid", valid)):
-                batch[key].append(np.asarray(value, dtype=np.float64)
-                                  if key not in ("obs",) else value)
+                batch[key].append(value)
         report["steps"] += rollout * num_envs
         with torch.no_grad():
             last_values = policy.value(normaliser(observations)).squeeze(-1).numpy()
-        arrays = {k: np.asarray(v) if k != "obs" else torch.stack(v) for k, v in batch.items()}
+        arrays = {k: np.asarray(v, dtype=np.float64) if k != "obs" else torch.stack(v)
+                  for k, v in batch.items()}
         gae = advantages(arrays["rew"], arrays["val"], arrays["term"], arrays["end"],
                          arrays["valid"].astype(bool), last_values, gamma, lam)
         update(policy, optimiser, arrays, gae, rng, epochs, minibatch, clip)
