@@ -39,6 +39,10 @@ RbfFeatures::RbfFeatures(std::string name, const RbfParams& params, int dimensio
       "features", num_features(),
       [this, &x](const BlockContext& context, VectorRef features) {
         const auto point = context.input(x);
+        if (params_.units == RbfUnits::kPerAxis) {
+          per_axis_features(point, features);
+          return;
+        }
         if (dimensions_ != 2) {
           grid_features(point, features);
           return;
@@ -82,10 +86,24 @@ void RbfFeatures::grid_features(const ConstVectorView& point, VectorRef features
   }
 }
 
+void RbfFeatures::per_axis_features(const ConstVectorView& point, VectorRef features) const {
+  const int m = static_cast<int>(params_.centres.size());
+  for (int a = 0; a < dimensions_; ++a) {
+    for (int i = 0; i < m; ++i) {
+      const double delta = point[a] - params_.centres[static_cast<size_t>(i)];
+      features[a * m + i] = std::exp(-delta * delta * inverse_two_width_squared_);
+    }
+  }
+}
+
 codegen::CCalculation RbfFeatures::c_calculation(int, const Context&) const {
   codegen::CCalculation c;
   c.constants = {{"centres", params_.centres, true},
                  codegen::c_number("inverse_two_width_squared", inverse_two_width_squared_)};
+  if (params_.units == RbfUnits::kPerAxis) {
+    c.body = per_axis_c_body();
+    return c;
+  }
   const std::size_t m = params_.centres.size();
   // One loop per axis, the first the outermost: the unit index runs as k = sum k_a m^(d-1-a).
   // Each axis adds its squared distance to the sum of the axes before it, as the C++ does.
@@ -108,16 +126,39 @@ codegen::CCalculation RbfFeatures::c_calculation(int, const Context&) const {
   return c;
 }
 
+// The same products in the same order as per_axis_features.
+std::string RbfFeatures::per_axis_c_body() const {
+  const std::size_t m = params_.centres.size();
+  std::ostringstream body;
+  body << "  for (int a = 0; a < " << dimensions_ << "; ++a) {\n"
+       << "    for (int i = 0; i < " << m << "; ++i) {\n"
+       << "      const real delta = in0[a] - $centres[i];\n"
+       << "      out[a * " << m << " + i] = CBBG_EXP(-delta * delta * $inverse_two_width_squared);\n"
+       << "    }\n"
+       << "  }\n";
+  return body.str();
+}
+
 int RbfFeatures::num_features() const {
   const int m = static_cast<int>(params_.centres.size());
+  if (params_.units == RbfUnits::kPerAxis) return dimensions_ * m;
   int units = 1;
   for (int a = 0; a < dimensions_; ++a) units *= m;
   return units;
 }
 
-FeatureLayout RbfFeatures::layout() const { return declared_layout(params_); }
+FeatureLayout RbfFeatures::layout() const {
+  FeatureLayout layout = declared_layout(params_);
+  // A word is no layout entry: per_axis says itself, and the grid's layout stays as it was.
+  if (params_.units == RbfUnits::kPerAxis) layout.push_back({"rbf.per_axis", {1.0}});
+  return layout;
+}
 
 std::string RbfFeatures::layout_note() const {
+  if (params_.units == RbfUnits::kPerAxis) {
+    return "Weight k belongs to the unit at rbf.centres[k % m] on axis k / m alone (of " +
+           std::to_string(dimensions_) + "), m = " + std::to_string(params_.centres.size()) + ".";
+  }
   if (dimensions_ != 2) {
     return "Weight k belongs to the unit whose digits in base m = " +
            std::to_string(params_.centres.size()) + " index rbf.centres on each of the " +

@@ -13,7 +13,7 @@ void run_until_success(const parameters::Parameters& p, const diagrams::Arm& arm
                        SeedRun& run) {
   SeedLoop seed(p, arm, telemetry, initial_weights, run.seed);
   for (int trial = 1; trial <= p.run.max_trials; ++trial) {
-    const TrialRecord record = next_trial(p, seed.runner, trial);
+    const TrialRecord record = next_trial(p, seed, trial);
     run.trials.push_back(record);
     if (record.outcome.status == TrialStatus::kSuccess) {
       run.succeeded = true;

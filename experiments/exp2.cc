@@ -50,16 +50,13 @@ void run_annealing(const parameters::Parameters& p, const diagrams::Arm& coordin
   SeedLoop first(p, coordinated, telemetry, initial_weights, run.seed);
   set_k1(first.loop, first.runner.context(), annealed_k1(schedule, 1));
   run.trials.push_back(
-      annealing_trial(1, annealed_k1(schedule, 1), first.runner.run_trial(theta0, duration, 1)));
+      annealing_trial(1, annealed_k1(schedule, 1), first.run_trial(theta0, duration, 1)));
 
   // The operant loop carries on: weights, the omega counter and the random streams.
-  const diagrams::ClosedLoop later_loop = learning_loop(p, operant);
-  TrialRunner later(later_loop, static_cast<std::uint64_t>(run.seed), p.trial.period, telemetry);
-  later.context().continue_from(first.runner.context());
-  meet_training(later, later_loop, first.disturbances);
+  SeedLoop later(p, operant, telemetry, first);
   for (int trial = 2; trial <= own.exp2.trials; ++trial) {
     const double k1 = annealed_k1(schedule, trial);
-    set_k1(later_loop, later.context(), k1);
+    set_k1(later.loop, later.runner.context(), k1);
     run.trials.push_back(annealing_trial(trial, k1, later.run_trial(theta0, duration, trial)));
   }
   int balanced = 0;
@@ -73,7 +70,7 @@ void run_annealing(const parameters::Parameters& p, const diagrams::Arm& coordin
   }
   if (!run.succeeded) run.failures_before_success = static_cast<int>(run.trials.size());
   run.figures.push_back({"balanced_trials", static_cast<double>(balanced)});
-  keep_weights(learnt_weights(later_loop, later.context(), provenance(p, run)), run);
+  keep_weights(learnt_weights(later.loop, later.runner.context(), provenance(p, run)), run);
 }
 
 ResultsSchema exp2_schema(const parameters::Parameters&) {

@@ -48,7 +48,7 @@ SkillTest train_until_skill(const parameters::Parameters& p, const diagrams::Arm
   SkillTest test;
   int failures = 0;
   for (int trial = 1; trial <= p.run.max_trials; ++trial) {
-    run.trials.push_back(next_trial(p, runner, trial));
+    run.trials.push_back(next_trial(p, seed, trial));
     const bool success = run.trials.back().outcome.status == TrialStatus::kSuccess;
     if (!success) ++failures;
     if (success && !run.succeeded) {

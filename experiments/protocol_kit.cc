@@ -111,14 +111,74 @@ SeedLoop::SeedLoop(const parameters::Parameters& p, const diagrams::Arm& arm,
                    const TelemetryOptions& telemetry, const LearntWeights* initial_weights,
                    long long seed)
     : loop(learning_loop(p, arm)),
-      runner(loop, static_cast<std::uint64_t>(seed), p.trial.period, telemetry) {
+      runner(loop, static_cast<std::uint64_t>(seed), p.trial.period, telemetry),
+      parameters_(p),
+      arm_(arm),
+      telemetry_(telemetry),
+      seed_(seed) {
   if (initial_weights != nullptr && loop.learner.learns()) {
     load_learnt_weights(loop, runner.context(), *initial_weights);
   }
   if (training_params(p).disturbs()) {
     disturbances = std::make_shared<TrainingDisturbances>(p, static_cast<std::uint64_t>(seed));
-    meet_training(runner, loop, disturbances);
   }
+  meet_disturbances();
+}
+
+SeedLoop::SeedLoop(const parameters::Parameters& p, const diagrams::Arm& arm,
+                   const TelemetryOptions& telemetry, const SeedLoop& before)
+    : loop(learning_loop(p, arm)),
+      runner(loop, static_cast<std::uint64_t>(before.seed_), p.trial.period, telemetry),
+      disturbances(before.disturbances),
+      parameters_(p),
+      arm_(arm),
+      telemetry_(telemetry),
+      seed_(before.seed_) {
+  runner.context().continue_from(before.runner.context());
+  meet_disturbances();
+}
+
+void SeedLoop::meet_disturbances() {
+  if (!disturbances) return;
+  if (!disturbances->varies_robot()) {
+    meet_training(runner, loop, disturbances);
+    return;
+  }
+  disturbances->check(loop);
+  // Every trial has a robot of its own, which run_trial builds: none runs in `loop`.
+  runner.set_before_trial([](Context&, int, double) -> double {
+    throw std::logic_error(
+        "training.body_mass_spread gives each trial a robot of its own: run the trials "
+        "through SeedLoop::run_trial (or next_trial with the SeedLoop), not its runner");
+  });
+}
+
+TrialOutcome SeedLoop::run_trial(double theta0, double duration, int trial) {
+  if (disturbances && disturbances->varies_robot()) {
+    return run_on_trial_robot(theta0, duration, trial);
+  }
+  return runner.run_trial(theta0, duration, trial);
+}
+
+TrialOutcome SeedLoop::run_on_trial_robot(double theta0, double duration, int trial) {
+  const diagrams::ClosedLoop robot = learning_loop(disturbances->trial_robot(parameters_, trial), arm_);
+  TrialRunner trial_runner(robot, static_cast<std::uint64_t>(seed_), parameters_.trial.period,
+                           telemetry_);
+  Context& context = trial_runner.context();
+  context.continue_from(runner.context());
+  context.copy_parameters_from(runner.context(), robot.plant);
+  meet_training(trial_runner, robot, disturbances);
+  const TrialOutcome outcome = trial_runner.run_trial(theta0, duration, trial);
+  runner.context().continue_from(context);
+  return outcome;
+}
+
+TrialRecord next_trial(const parameters::Parameters& p, SeedLoop& seed, int trial) {
+  return next_trial(p, seed, trial, p.trial.theta0);
+}
+
+TrialRecord next_trial(const parameters::Parameters& p, SeedLoop& seed, int trial, double theta0) {
+  return {trial, p.tropism.k1, seed.run_trial(theta0, p.trial.duration, trial)};
 }
 
 TrialRecord next_trial(const parameters::Parameters& p, TrialRunner& runner, int trial) {

@@ -76,17 +76,42 @@ void meet_training(TrialRunner& runner, const diagrams::ClosedLoop& loop,
 
 // One seed of an arm: its learning closed loop (learning_loop) and the runner of its trials,
 // which meet training.*'s disturbances, started from the initial weights when there are some.
+// Run its trials through run_trial (or next_trial with the SeedLoop): under
+// training.body_mass_spread each runs in a loop of its own robot, and `runner` refuses them.
 struct SeedLoop {
   SeedLoop(const parameters::Parameters& p, const diagrams::Arm& arm,
            const TelemetryOptions& telemetry, const LearntWeights* initial_weights, long long seed);
+  // The arm `arm`'s loop carrying on `before`'s learning (Context::continue_from) and its
+  // training disturbances' draws: a change of protocol halfway (exp2's operant trials).
+  SeedLoop(const parameters::Parameters& p, const diagrams::Arm& arm,
+           const TelemetryOptions& telemetry, const SeedLoop& before);
+
+  // Trial number `trial` from `theta0` for `duration`, in `loop` as the protocol set up its
+  // context (k1); under training.body_mass_spread in a loop built for the trial's robot
+  // (TrainingDisturbances::trial_robot) that carries on this one's learning, its parameters
+  // and its random streams, and hands them back after the trial.
+  TrialOutcome run_trial(double theta0, double duration, int trial);
+
   diagrams::ClosedLoop loop;
   TrialRunner runner;  // runs `loop`: declared after it
-  // The seed's training disturbances (null when training.* disturbs nothing), for a loop that
-  // carries on from this one (meet_training).
+  // The seed's training disturbances (null when training.* disturbs nothing), shared with a
+  // loop that carries on from this one.
   std::shared_ptr<TrainingDisturbances> disturbances;
+
+ private:
+  void meet_disturbances();
+  TrialOutcome run_on_trial_robot(double theta0, double duration, int trial);
+
+  parameters::Parameters parameters_;
+  diagrams::Arm arm_;
+  TelemetryOptions telemetry_;
+  long long seed_;
 };
 
-// The next trial from trial.theta0 (or `theta0`), for trial.duration, k1 fixed.
+// The next trial from trial.theta0 (or `theta0`), for trial.duration, k1 fixed: of a seed's
+// SeedLoop, or of a runner of the protocol's own.
+TrialRecord next_trial(const parameters::Parameters& p, SeedLoop& seed, int trial);
+TrialRecord next_trial(const parameters::Parameters& p, SeedLoop& seed, int trial, double theta0);
 TrialRecord next_trial(const parameters::Parameters& p, TrialRunner& runner, int trial);
 TrialRecord next_trial(const parameters::Parameters& p, TrialRunner& runner, int trial,
                        double theta0);

@@ -8,6 +8,8 @@
 #include "cbbg/blocks/measured_signals.h"
 #include "cbbg/blocks/sensors.h"
 #include "cbbg/config/declared_keys.h"
+#include "cbbg/diagrams/plant_kinds.h"
+#include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/framework/number_text.h"
 
 namespace cbbg::experiments {
@@ -53,6 +55,31 @@ void check_training(const parameters::Parameters& p) {
     p.check_inside_failure_angle("trial.theta0 + training.pitch_spread",
                                  p.trial.theta0 + training.pitch_spread);
   }
+  if (training.body_mass_spread > 0.0) {
+    for (const double factor : {1.0 - training.body_mass_spread, 1.0 + training.body_mass_spread}) {
+      try {
+        diagrams::validate_parameters(with_body_mass_scale(p, factor));
+      } catch (const config::ConfigError& error) {
+        if (std::string(error.what()).starts_with("training.")) throw;
+        throw config::ConfigError("training.body_mass_spread is " +
+                                  format_number(training.body_mass_spread) +
+                                  ": the robot of body mass x" + format_number(factor) +
+                                  " is invalid: " + error.what());
+      }
+    }
+  }
+}
+
+parameters::Parameters with_body_mass_scale(const parameters::Parameters& p, double factor) {
+  parameters::Parameters robot = p;
+  const diagrams::PlantKind& kind = diagrams::plant_kind(p.plant.kind);
+  if (!kind.change || !kind.change(robot, diagrams::RobotChange::kBodyMass, factor)) {
+    throw config::ConfigError("training.body_mass_spread is " +
+                              format_number(training_params(p).body_mass_spread) +
+                              ", but plant.kind '" + kind.name +
+                              "' has no body mass it changes; keep it 0 for this plant");
+  }
+  return robot;
 }
 
 parameters::Parameters training_loop_parameters(const parameters::Parameters& p) {
@@ -87,6 +114,20 @@ void TrainingDisturbances::check(const diagrams::ClosedLoop& loop) const {
         ", but the loop's sensors are a block of the arm's own, which training.* cannot make "
         "noisier; add the noise in that block, or keep training.noise_std 0");
   }
+  if (varies_robot() && !loop.plant_of_kind) {
+    throw config::ConfigError("training.body_mass_spread is " +
+                              format_number(params_.body_mass_spread) + ", but plant '" +
+                              loop.plant->path() +
+                              "' is the arm's own, not plant.kind's, and would learn unchanged; "
+                              "keep training.body_mass_spread 0 for it, or register the plant as "
+                              "a kind (diagrams/plant_kinds.h)");
+  }
+}
+
+parameters::Parameters TrainingDisturbances::trial_robot(const parameters::Parameters& p,
+                                                         int trial) {
+  const double spread = share(trial) * params_.body_mass_spread;
+  return with_body_mass_scale(p, 1.0 + spread * (2.0 * draw_uniform(generator_) - 1.0));
 }
 
 double TrainingDisturbances::share(int trial) const {

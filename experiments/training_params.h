@@ -15,6 +15,7 @@ struct TrainingParams {
   double push_force = 0.0;
   double push_duration = 0.5;
   double pitch_spread = 0.0;
+  double body_mass_spread = 0.0;
   long long curriculum_trials = 0;
 
   template <class Archive>
@@ -34,14 +35,22 @@ struct TrainingParams {
              "training only: each learning trial starts from its initial pitch (trial.theta0, "
              "or the protocol's) plus a draw uniform in +-pitch_spread, rad; 0 = none",
              kNonNegative);
+    a.number("body_mass_spread", body_mass_spread,
+             "training only: each learning trial's robot has its body's mass and inertias times "
+             "a draw uniform in 1 +- body_mass_spread (as evaluation.body_mass_scale changes "
+             "them, through plant.kind), the weights carried from trial to trial; 0 = none",
+             interval(0.0, 1.0, kClosed, kOpen));
     a.integer("curriculum_trials", curriculum_trials,
-              "training only: the noise, the push and the initial pitch's spread grow linearly "
+              "training only: the noise, the push, the initial pitch's and the body mass's spreads "
+              "grow linearly "
               "from none at trial 1 to the values above at trial curriculum_trials + 1; 0 = "
               "all of them from the first trial",
               kNonNegative);
   }
 
-  bool disturbs() const { return noise_std > 0.0 || push_force > 0.0 || pitch_spread > 0.0; }
+  bool disturbs() const {
+    return noise_std > 0.0 || push_force > 0.0 || pitch_spread > 0.0 || body_mass_spread > 0.0;
+  }
 };
 
 }  // namespace cbbg::experiments

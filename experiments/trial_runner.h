@@ -58,6 +58,7 @@ class TrialRunner {
   void set_before_trial(BeforeTrial before_trial) { before_trial_ = std::move(before_trial); }
 
   Context& context() { return simulator_.context(); }
+  const Context& context() const { return simulator_.context(); }
   const diagrams::ClosedLoop& loop() const { return *loop_; }
   // The telemetry of the last trial, one sample per tick (diagrams::TelemetryIndex), when
   // kept in memory.

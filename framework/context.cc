@@ -1,6 +1,7 @@
 #include "cbbg/framework/context.h"
 
 #include <stdexcept>
+#include <string>
 #include <string_view>
 #include <unordered_map>
 
@@ -134,6 +135,25 @@ bool same_parts(const Block& a, const Block& b) {
   return true;
 }
 
+bool same_parameters(const Block& a, const Block& b) {
+  const auto& left = a.parameters();
+  const auto& right = b.parameters();
+  if (left.size() != right.size()) return false;
+  for (std::size_t i = 0; i < left.size(); ++i) {
+    if (left[i].name != right[i].name ||
+        left[i].default_value.size() != right[i].default_value.size()) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Whether the block at `path` is the block at `outer` or inside it.
+bool is_within(const std::string& path, const std::string& outer) {
+  return path.size() >= outer.size() && path.compare(0, outer.size(), outer) == 0 &&
+         (path.size() == outer.size() || path[outer.size()] == '/');
+}
+
 }  // namespace
 
 void Context::continue_from(const Context& other) {
@@ -150,6 +170,23 @@ void Context::continue_from(const Context& other) {
     }
     generators_[static_cast<size_t>(leaf.index)] =
         other.generators_[static_cast<size_t>(source.index)];
+  }
+}
+
+void Context::copy_parameters_from(const Context& other, const Block* own) {
+  std::unordered_map<std::string_view, const LeafLayout*> theirs;
+  for (const auto& leaf : other.diagram_->leaves()) theirs[leaf.stream_name] = &leaf;
+  const std::string own_path = own == nullptr ? std::string() : own->path();
+  for (const auto& leaf : diagram_->leaves()) {
+    if (own != nullptr && is_within(leaf.block->path(), own_path)) continue;
+    const auto match = theirs.find(leaf.stream_name);
+    if (match == theirs.end() || !same_parameters(*leaf.block, *match->second->block)) continue;
+    const LeafLayout& source = *match->second;
+    for (std::size_t i = 0; i < leaf.parameter_offsets.size(); ++i) {
+      const auto size = leaf.block->parameters()[i].default_value.size();
+      parameters_.segment(leaf.parameter_offsets[i], size) =
+          other.parameters_.segment(source.parameter_offsets[i], size);
+    }
   }
 }
 

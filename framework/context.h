@@ -62,6 +62,11 @@ class Context {
   // and sizes, its persistent parts and its random generator. Per-trial and continuous
   // state, parameters and time stay as they are.
   void continue_from(const Context& other);
+  // Copies the parameters of `other`'s leaves (a context of another diagram) into the leaves
+  // here of the same path whose parameters have the same names and sizes, except `own` and
+  // the blocks inside it, whose parameters stay this diagram's (a plant built for another
+  // robot). With continue_from: a trial run in another diagram as the protocol set it up.
+  void copy_parameters_from(const Context& other, const Block* own = nullptr);
   // Re-seeds every block's generator from `root_seed` and its path below the root diagram.
   void reseed(std::uint64_t root_seed);
   // Whether every block's generator is where the seed put it (at creation or the last

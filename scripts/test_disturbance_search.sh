@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The disturbance search end to end, small (analytic plant, 1 seed per point): bad options
-# are refused; its 288 points run as 3 shards through GNU parallel and merge; the costs and
-# the front are written; run again, it keeps the sweep and writes the front again.
+# are refused; round 1's 288 points run as 3 shards through GNU parallel and merge, for the
+# transfer protocol and for exp2; the costs and the front, holding ground included, are
+# written; run again, it keeps the sweeps and writes the front again; round 2's grid is one
+# cbbg checks.
 #   test_disturbance_search.sh BUILD_DIR
 set -euo pipefail
 export CBBG="$(cd "$1" && pwd)/apps/cbbg"
@@ -15,19 +17,31 @@ status=0
 [[ $status == 2 ]] && grep -qF "disturbance_search.sh: --shards must be a whole number from 1 to 9999; got '0'" "$scratch/err" ||
   fail "--shards 0 was not refused (exit $status): $(cat "$scratch/err")"
 [[ ! -e "$scratch/no" && ! -e "$scratch/no.partial" ]] || fail "a refused search left a folder"
+status=0
+"$search" --seeds 1 --round 3 --out "$scratch/no" 2>"$scratch/err" || status=$?
+[[ $status == 2 ]] && grep -qF "disturbance_search.sh: --round must be 1 or 2; got '3'" "$scratch/err" ||
+  fail "--round 3 was not refused (exit $status): $(cat "$scratch/err")"
+[[ ! -e "$scratch/no" ]] || fail "a refused search left a folder"
 
 out="$scratch/search"
 "$search" --plant analytic --seeds 1 --jobs 2 --shards 3 --out "$out" >"$scratch/first" 2>&1 ||
   fail "the search failed: $(tail -3 "$scratch/first")"
-grep -q "^shards: 3 through GNU parallel, 2 at once; wall [0-9.]* s$" "$out-costs.txt" ||
-  fail "the costs lack the shards' wall time: $(cat "$out-costs.txt")"
-grep -q "^merge: wall [0-9.]* s$" "$out-costs.txt" || fail "the costs lack the merge's time"
-grep -q "^bytes: [0-9]*; files: [0-9]*$" "$out-costs.txt" || fail "the costs lack the bytes"
-[[ "$(($(wc -l <"$out/sweep.csv") - 1))" == 288 ]] || fail "sweep.csv has no row per grid point"
+for sweep in transfer exp2; do
+  grep -q "^$sweep shards: 3 through GNU parallel, 2 at once; wall [0-9.]* s$" "$out-costs.txt" ||
+    fail "the costs lack the $sweep shards' wall time: $(cat "$out-costs.txt")"
+  grep -q "^$sweep merge: wall [0-9.]* s$" "$out-costs.txt" || fail "the costs lack the $sweep merge's time"
+  grep -q "^$sweep bytes: [0-9]*; files: [0-9]*$" "$out-costs.txt" || fail "the costs lack the $sweep bytes"
+done
+for dir in "$out" "$out-holding"; do
+  [[ "$(($(wc -l <"$dir/sweep.csv") - 1))" == 288 ]] || fail "$dir/sweep.csv has no row per grid point"
+done
 grep -qF "288 grid points x 1 seeds" "$out/front.md" || fail "front.md does not say its size"
-grep -qF "| 001 (the paper's) |" "$out/front.md" || fail "front.md lacks the paper's point"
+grep -qE "^\| 001 \(the paper's\) \| .* \| (0|100)% \| [0-9.]+ \| [01]/1 \|$" "$out/front.md" ||
+  fail "front.md lacks the paper's point, holding ground measured: $(grep -F "(the paper's)" "$out/front.md")"
 cp "$out/sweep.csv" "$scratch/sweep.csv"
+cp "$out-holding/sweep.csv" "$scratch/holding.csv"
 "$search" --plant analytic --seeds 1 --jobs 2 --shards 3 --out "$out" >"$scratch/second" 2>&1 ||
   fail "the search run again failed"
 cmp -s "$out/sweep.csv" "$scratch/sweep.csv" || fail "run again, the sweep changed"
+cmp -s "$out-holding/sweep.csv" "$scratch/holding.csv" || fail "run again, the exp2 sweep changed"
 echo "test_disturbance_search: ok"

@@ -282,14 +282,18 @@ constexpr const char* kRbfFeaturesDoc =
 |----------|-----|------|------------------------------------------|
 | x        | in  | d    | normalised (theta_b, theta_b'), d = 2     |
 | features | out | m^d  | phi(x), unit k = i m + j at (c_i, c_j)    |
+|          |     | (d m)| (rbf.units per_axis: unit k = a m + i)    |
 
 Equations: phi_k(x) = exp(-((x_0 - c_i)^2 + (x_1 - c_j)^2) / (2 b^2)), k = i m + j, for
 i, j in [0, m): pitch picks the row i, pitch rate the column j. Since V = w . phi and
 a_A = theta . phi, phi is also the gradient of both with respect to their weights.
 With d = 3 or 4 inputs (normaliser.inputs) the grid has an axis per input, the first the
 slowest: phi_k(x) = exp(-sum_a (x_a - c_{k_a})^2 / (2 b^2)), k = sum_a k_a m^(d-1-a).
+With rbf.units per_axis the units sit on each axis alone: phi_k(x) = exp(-(x_a - c_i)^2 /
+(2 b^2)), k = a m + i, d m of them; what a learner sums over them is a sum of one function
+per input (the PD law's shape), with far fewer weights than the grid's m^d.
 Parameters: c = rbf.centres (m of them), b = rbf.width. Its layout (feature_layout.h):
-rbf.centres and rbf.width.)";
+rbf.centres and rbf.width, and rbf.per_axis 1 with rbf.units per_axis.)";
 
 constexpr const char* kRewardDoc =
     R"(Reward: the sliding-surface reward of docs/model.md §2.9.

@@ -317,8 +317,8 @@ void bind_kit(py::module_& m) {
           [](const SeedLoopHandle& kit, const parameters::Parameters& p, int trial,
              std::optional<double> theta0) {
             experiments::SeedLoop& loop = kit.checked();
-            return theta0 ? experiments::next_trial(p, loop.runner, trial, *theta0)
-                          : experiments::next_trial(p, loop.runner, trial);
+            return theta0 ? experiments::next_trial(p, loop, trial, *theta0)
+                          : experiments::next_trial(p, loop, trial);
           },
           py::arg("parameters"), py::arg("trial"), py::arg("theta0") = std::nullopt,
           py::call_guard<py::gil_scoped_release>(),

@@ -219,5 +219,8 @@ def test_a_python_protocols_trials_learn_under_the_training_section():
     nominal = outcomes({})
     spread = outcomes({"training": {"pitch_spread": 0.1}})
     assert all(a != b for a, b in zip(nominal, spread))
+    # A robot of its own each trial, through the kit's SeedLoop.trial
+    masses = outcomes({"training": {"body_mass_spread": 0.4}})
+    assert len(masses) == len(nominal) and all(a != b for a, b in zip(nominal, masses))
     with pytest.raises(cbbg.ConfigError, match="training.pitch_spread"):
         outcomes({"training.pitch_spread": -1})

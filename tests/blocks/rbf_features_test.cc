@@ -110,6 +110,40 @@ TEST(RbfFeatures, MatchDirectEvaluationOnAGridOfThreeOrFourAxes) {
                   StrEq("RbfFeatures 'rbf': dimensions must be from 1 to 4; got 5")));
 }
 
+TEST(RbfFeatures, PerAxisUnitsSitOnEachAxisAlone) {
+  RbfParams params;
+  params.centres = {-1.0, 0.0, 0.5};
+  params.width = 0.6;
+  params.units = RbfUnits::kPerAxis;
+  std::mt19937_64 generator(9);
+  std::uniform_real_distribution<double> uniform(-1.5, 1.5);
+  for (const int d : {2, 3, 4}) {
+    testing::BlockHarness<RbfFeatures> harness("rbf", params, d);
+    ASSERT_EQ(harness.block().num_features(), 3 * d);
+    Vector x(d);
+    for (int a = 0; a < d; ++a) x[a] = uniform(generator);
+    harness.set_input("x", x);
+    const Vector phi = harness.output("features");
+    for (int a = 0; a < d; ++a) {
+      for (int i = 0; i < 3; ++i) {
+        const double delta = x[a] - params.centres[static_cast<size_t>(i)];
+        EXPECT_NEAR(phi[3 * a + i], std::exp(-delta * delta / (2.0 * 0.36)), 1e-15)
+            << "d " << d << ", axis " << a << ", unit " << i;
+      }
+    }
+  }
+  // The grid's layout is as it was; per_axis says itself, so weights of one are refused by
+  // the other.
+  const FeatureLayout grid = RbfFeatures("rbf", RbfParams{}).layout();
+  ASSERT_EQ(grid.size(), 2U);
+  EXPECT_EQ(grid[1].key, "rbf.width");
+  const FeatureLayout per_axis = RbfFeatures("rbf", params).layout();
+  ASSERT_EQ(per_axis.size(), 3U);
+  EXPECT_EQ(per_axis[2], (LayoutEntry{"rbf.per_axis", {1.0}}));
+  EXPECT_EQ(RbfFeatures("rbf", params, 4).layout_note(),
+            "Weight k belongs to the unit at rbf.centres[k % m] on axis k / m alone (of 4), m = 3.");
+}
+
 TEST(RbfFeatures, AreTheGradientOfTheValueWithRespectToTheWeights) {
   DiagramBuilder builder("value");
   const auto& rbf = builder.emplace<RbfFeatures>("rbf", RbfParams{});

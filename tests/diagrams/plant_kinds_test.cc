@@ -16,6 +16,7 @@
 #include "cbbg/diagrams/validated_parameters.h"
 #include "cbbg/experiments/evaluation_conditions.h"
 #include "cbbg/experiments/experiments.h"
+#include "cbbg/experiments/training_disturbances.h"
 #include "cbbg/experiments/trial_runner.h"
 #include "cbbg/framework/block_context.h"
 
@@ -162,6 +163,31 @@ TEST(PlantKinds, AnEvaluationChangesTheRobotThroughTheKindOrIsRefused) {
               ThrowsMessage<config::ConfigError>(
                   "evaluation.body_mass_scale is 3, but plant.kind 'rigid' has no parameter it "
                   "changes; keep it at 1 for this plant"));
+}
+
+TEST(PlantKinds, LearningUnderASpreadOfBodyMassesChangesTheRobotThroughTheKindOrIsRefused) {
+  config::Config config = config_of("pendulum");
+  config.set("pendulum.mass=2");
+  config.set("training.body_mass_spread=0.5");
+  const parameters::Parameters p = validated_parameters(config);
+  experiments::TrainingDisturbances disturbances(p, 3);
+  const double mass = pendulum_params(disturbances.trial_robot(p, 1)).mass;
+  EXPECT_NE(mass, 2.0);
+  EXPECT_GE(mass, 1.0);
+  EXPECT_LE(mass, 3.0);
+  config.set("training.body_mass_spread=0");
+  const auto first_trial = [](const parameters::Parameters& parameters) {
+    return experiments::run_exp1(parameters, {preset_arm("cbbg")}).run(0, 0).trials.front();
+  };
+  EXPECT_NE(first_trial(p).outcome.final_theta,
+            first_trial(validated_parameters(config)).outcome.final_theta);
+
+  config::Config rigid = config_of("rigid");
+  rigid.set("training.body_mass_spread=0.5");
+  EXPECT_THAT([&] { experiments::run_exp1(validated_parameters(rigid), {preset_arm("cbbg")}); },
+              ThrowsMessage<config::ConfigError>(
+                  "training.body_mass_spread is 0.5, but plant.kind 'rigid' has no body mass it "
+                  "changes; keep it 0 for this plant"));
 }
 
 TEST(PlantKinds, AnLqrSupervisorDesignsFromThePlantInTheLoop) {

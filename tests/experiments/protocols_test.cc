@@ -25,8 +25,8 @@ using ::testing::ThrowsMessage;
 void two_trials(const parameters::Parameters& p, const diagrams::Arm& arm,
                 const TelemetryOptions& telemetry, const LearntWeights* initial, SeedRun& run) {
   SeedLoop seed(p, arm, telemetry, initial, run.seed);
-  run.trials.push_back(next_trial(p, seed.runner, 1, 0.05));
-  run.trials.push_back(next_trial(p, seed.runner, 2));
+  run.trials.push_back(next_trial(p, seed, 1, 0.05));
+  run.trials.push_back(next_trial(p, seed, 2));
   finish_run(p, arm, seed.loop, seed.runner.context(), run);
 }
 

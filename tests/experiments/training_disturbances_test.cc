@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -164,6 +165,85 @@ TEST(TrainingDisturbances, WhatCannotBeAppliedIsRefusedNamingTheKey) {
           "\"disturbance\" that a push from outside needs; keep training.push_force 0 for it"));
 }
 
+TEST(TrainingDisturbances, EachTrialHasABodyMassOfItsOwnWithinTheSpreadCommonToTheArms) {
+  const parameters::Parameters p = with({"training.body_mass_spread=0.3"});
+  TrainingDisturbances one(p, 7);
+  TrainingDisturbances another(p, 7);
+  std::vector<double> scales;
+  for (int trial = 1; trial <= 6; ++trial) {
+    const double mass = one.trial_robot(p, trial).plant.robot.body_mass;
+    EXPECT_EQ(another.trial_robot(p, trial).plant.robot.body_mass, mass);
+    const double scale = mass / p.plant.robot.body_mass;
+    EXPECT_GE(scale, 0.7);
+    EXPECT_LE(scale, 1.3);
+    scales.push_back(scale);
+  }
+  EXPECT_TRUE(std::any_of(scales.begin(), scales.end(), [](double s) { return s < 1.0; }) &&
+              std::any_of(scales.begin(), scales.end(), [](double s) { return s > 1.0; }));
+  const parameters::Parameters grown =
+      with({"training.body_mass_spread=0.3", "training.curriculum_trials=4"});
+  TrainingDisturbances curriculum(grown, 7);
+  EXPECT_EQ(curriculum.trial_robot(grown, 1).plant.robot.body_mass, p.plant.robot.body_mass);
+}
+
+// Every trial of a seed with `settings`: its status, steps and final pitch, then the learnt
+// weights, for the protocol `protocol`.
+std::vector<double> trials_and_weights(const std::string& protocol,
+                                       std::vector<std::string> settings) {
+  settings.insert(settings.end(), {"experiment=" + protocol, "max_trials=4", "exp2.trials=4",
+                                   "trial.duration=4", "arms=[cbbg]"});
+  const SeedRun run = run_experiment(with(settings)).run(0, 0);
+  std::vector<double> figures;
+  for (const TrialRecord& trial : run.trials) {
+    figures.insert(figures.end(), {static_cast<double>(trial.outcome.status),
+                                   static_cast<double>(trial.outcome.steps),
+                                   trial.outcome.final_theta});
+  }
+  EXPECT_TRUE(run.weights.has_value()) << protocol;
+  if (run.weights) {
+    const Vector& actor = run.weights->actor.parts.front().values;
+    figures.insert(figures.end(), actor.begin(), actor.end());
+  }
+  return figures;
+}
+
+// A trial's own robot is a loop of its own: the learning, the protocol's parameters (exp2's
+// annealed k1) and the random streams go into it and come back, so a spread too small to
+// move the robot learns what the nominal robot does.
+TEST(TrainingDisturbances, ARobotOfItsOwnCarriesTheLearningFromTrialToTrial) {
+  for (const std::string protocol : {"exp1", "exp2", "exp3"}) {
+    const std::vector<double> nominal = trials_and_weights(protocol, {});
+    const std::vector<double> tiny = trials_and_weights(protocol, {"training.body_mass_spread=1e-12"});
+    ASSERT_EQ(nominal.size(), tiny.size()) << protocol;
+    for (std::size_t i = 0; i < nominal.size(); ++i) {
+      EXPECT_NEAR(tiny[i], nominal[i], 1e-6 * (1.0 + std::abs(nominal[i]))) << protocol << " " << i;
+    }
+    EXPECT_NE(trials_and_weights(protocol, {"training.body_mass_spread=0.5"}), nominal) << protocol;
+  }
+}
+
+TEST(TrainingDisturbances, ASpreadOfBodyMassesRefusesARunnerOfItsLoopAndAPlantOfTheArmsOwn) {
+  const parameters::Parameters p = with({"training.body_mass_spread=0.2"});
+  SeedLoop seed(p, diagrams::preset_arm("cbbg"), {}, nullptr, 7);
+  EXPECT_THAT([&] { seed.runner.run_trial(p.trial.theta0, 0.05, 1); },
+              ThrowsMessage<std::logic_error>(
+                  "training.body_mass_spread gives each trial a robot of its own: run the trials "
+                  "through SeedLoop::run_trial (or next_trial with the SeedLoop), not its runner"));
+  EXPECT_EQ(seed.run_trial(p.trial.theta0, 0.05, 1).status, TrialStatus::kSuccess);
+  diagrams::ClosedLoopOptions pendulum;
+  pendulum.plant = [](const std::string& name, const parameters::Parameters&) {
+    return std::make_unique<testing::PendulumRobot>(name);
+  };
+  EXPECT_THAT(
+      [&] { SeedLoop own(p, diagrams::preset_arm("cbbg", pendulum), {}, nullptr, 7); },
+      ThrowsMessage<config::ConfigError>(
+          "training.body_mass_spread is 0.2, but plant 'cbbg/plant' is the arm's own, not "
+          "plant.kind's, and would learn unchanged; keep training.body_mass_spread 0 for it, or "
+          "register the plant as a kind (diagrams/plant_kinds.h)"));
+  EXPECT_THAT([] { with({"training.body_mass_spread=1"}); },
+              ThrowsMessage<config::ConfigError>(::testing::HasSubstr("training.body_mass_spread")));
+}
+
 // The first trial's outcome of every arm and seed of `protocol`.
 std::vector<TrialOutcome> first_trials(const std::string& protocol,
                                        std::vector<std::string> settings) {
@@ -178,7 +258,8 @@ std::vector<TrialOutcome> first_trials(const std::string& protocol,
 
 TEST(TrainingDisturbances, EveryProtocolsLearningTrialsMeetThem) {
   const std::vector<std::string> disturbed{"training.noise_std=0.05", "training.push_force=60",
-                                           "training.pitch_spread=0.05"};
+                                           "training.pitch_spread=0.05",
+                                           "training.body_mass_spread=0.3"};
   for (const std::string protocol : {"exp1", "exp2", "exp3", "transfer"}) {
     const std::vector<TrialOutcome> plain = first_trials(protocol, {});
     const std::vector<TrialOutcome> learnt = first_trials(protocol, disturbed);

@@ -145,6 +145,31 @@ TEST(Context, ParametersChangePerContext) {
             "block 'top/first' has no parameter 'gain'; its parameters are: scale");
 }
 
+// A trial in another diagram as the protocol set it up: the parameters of the leaves of the same
+// path come along, except those of the block named as the diagram's own.
+TEST(Context, CopiesTheParametersOfAnotherDiagramsLeavesOfTheSamePath) {
+  const NoiseDiagram from = make_noise_diagram();
+  const NoiseDiagram to = make_noise_diagram();
+  auto source = from.diagram->create_context(1);
+  source->set_parameter(*from.first, "scale", Vector::Constant(1, 3.0));
+  source->set_parameter(*from.second, "scale", Vector::Constant(1, 4.0));
+  auto target = to.diagram->create_context(1);
+  target->copy_parameters_from(*source, to.second);
+  EXPECT_EQ(target->parameter(*to.first, "scale")[0], 3.0);
+  EXPECT_EQ(target->parameter(*to.second, "scale")[0], 1.0);
+  target->copy_parameters_from(*source);
+  EXPECT_EQ(target->parameter(*to.second, "scale")[0], 4.0);
+  EXPECT_EQ(target->discrete_states(), source->discrete_states());  // only the parameters
+
+  DiagramBuilder builder("top");
+  builder.emplace<ConstantSource>("first", Vector::Constant(1, 5.0));
+  const auto unrelated = builder.build();
+  auto other = unrelated->create_context(1);
+  const Vector before = other->parameters();
+  other->copy_parameters_from(*source);  // no leaf of the same path and parameters
+  EXPECT_EQ(other->parameters(), before);
+}
+
 TEST(Context, ResetRestoresTheDeclaredInitialStateOnly) {
   DiagramBuilder builder("top");
   auto& counter = builder.emplace<testing::Counter>("counter", 0.1);
