@@ -133,7 +133,8 @@ std::string RbfFeatures::per_axis_c_body() const {
   body << "  for (int a = 0; a < " << dimensions_ << "; ++a) {\n"
        << "    for (int i = 0; i < " << m << "; ++i) {\n"
        << "      const real delta = in0[a] - $centres[i];\n"
-       << "      out[a * " << m << " + i] = CBBG_EXP(-delta * delta * $inverse_two_width_squared);\n"
+       << "      out[a * " << m
+       << " + i] = CBBG_EXP(-delta * delta * $inverse_two_width_squared);\n"
        << "    }\n"
        << "  }\n";
   return body.str();

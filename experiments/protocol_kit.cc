@@ -161,7 +161,8 @@ TrialOutcome SeedLoop::run_trial(double theta0, double duration, int trial) {
 }
 
 TrialOutcome SeedLoop::run_on_trial_robot(double theta0, double duration, int trial) {
-  const diagrams::ClosedLoop robot = learning_loop(disturbances->trial_robot(parameters_, trial), arm_);
+  const diagrams::ClosedLoop robot =
+      learning_loop(disturbances->trial_robot(parameters_, trial), arm_);
   TrialRunner trial_runner(robot, static_cast<std::uint64_t>(seed_), parameters_.trial.period,
                            telemetry_);
   Context& context = trial_runner.context();

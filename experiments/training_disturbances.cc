@@ -61,10 +61,9 @@ void check_training(const parameters::Parameters& p) {
         diagrams::validate_parameters(with_body_mass_scale(p, factor));
       } catch (const config::ConfigError& error) {
         if (std::string(error.what()).starts_with("training.")) throw;
-        throw config::ConfigError("training.body_mass_spread is " +
-                                  format_number(training.body_mass_spread) +
-                                  ": the robot of body mass x" + format_number(factor) +
-                                  " is invalid: " + error.what());
+        throw config::ConfigError(
+            "training.body_mass_spread is " + format_number(training.body_mass_spread) +
+            ": the robot of body mass x" + format_number(factor) + " is invalid: " + error.what());
       }
     }
   }

@@ -44,4 +44,14 @@ cp "$out-holding/sweep.csv" "$scratch/holding.csv"
   fail "the search run again failed"
 cmp -s "$out/sweep.csv" "$scratch/sweep.csv" || fail "run again, the sweep changed"
 cmp -s "$out-holding/sweep.csv" "$scratch/holding.csv" || fail "run again, the exp2 sweep changed"
+out="$scratch/round2"
+"$search" --plant analytic --seeds 1 --jobs 2 --shards 2 --round 2 --out "$out" >"$scratch/round2.log" 2>&1 ||
+  fail "round 2 failed: $(tail -3 "$scratch/round2.log")"
+for dir in "$out" "$out-holding"; do
+  [[ "$(($(wc -l <"$dir/sweep.csv") - 1))" == 288 ]] || fail "round 2's $dir/sweep.csv has no row per grid point"
+done
+grep -qF "The paper's learner is not a point of this grid." "$out/front.md" ||
+  fail "round 2's front.md claims the paper's point"
+grep -qE "^\| [0-9]{3} \| inputs pitch.*, units (grid|per_axis), width [0-9.]+, .*body_mass_spread 0\.?[0-9]* \| .* \| (0|100)% \| " "$out/front.md" ||
+  fail "round 2's front lacks its keys or holding ground: $(sed -n 8,9p "$out/front.md")"
 echo "test_disturbance_search: ok"

@@ -38,8 +38,7 @@ inline void curriculum_seed(const cbbg::parameters::Parameters& p, const cbbg::d
   int warm_up_trials = 0;
   for (int trial = 1; trial <= p.run.max_trials; ++trial) {
     if (!warmed_up) ++warm_up_trials;
-    const TrialRecord record =
-        next_trial(p, seed, trial, warmed_up ? p.trial.theta0 : first);
+    const TrialRecord record = next_trial(p, seed, trial, warmed_up ? p.trial.theta0 : first);
     run.trials.push_back(record);
     const bool success = record.outcome.status == TrialStatus::kSuccess;
     if (success && warmed_up) {

@@ -1,8 +1,6 @@
 """The protocols from Python: in memory, through the command line with its results
 directory, and one written in Python."""
 
-import os
-
 import numpy as np
 import pytest
 

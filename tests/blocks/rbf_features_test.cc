@@ -140,8 +140,9 @@ TEST(RbfFeatures, PerAxisUnitsSitOnEachAxisAlone) {
   const FeatureLayout per_axis = RbfFeatures("rbf", params).layout();
   ASSERT_EQ(per_axis.size(), 3U);
   EXPECT_EQ(per_axis[2], (LayoutEntry{"rbf.per_axis", {1.0}}));
-  EXPECT_EQ(RbfFeatures("rbf", params, 4).layout_note(),
-            "Weight k belongs to the unit at rbf.centres[k % m] on axis k / m alone (of 4), m = 3.");
+  EXPECT_EQ(
+      RbfFeatures("rbf", params, 4).layout_note(),
+      "Weight k belongs to the unit at rbf.centres[k % m] on axis k / m alone (of 4), m = 3.");
 }
 
 TEST(RbfFeatures, AreTheGradientOfTheValueWithRespectToTheWeights) {

@@ -359,7 +359,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "cbbg",
                 {"exploration.kind=gaussian", "exploration.half_life=5", "reward.kind=quadratic"}},
         Variant{"ou", "cbbg", {"exploration.kind=ou"}},
-        Variant{"per_axis_wheels", "cbbg", {"rbf.units=per_axis", "normaliser.inputs=pitch_wheels"}}),
+        Variant{
+            "per_axis_wheels", "cbbg", {"rbf.units=per_axis", "normaliser.inputs=pitch_wheels"}}),
     [](const auto& variant) { return std::string(variant.param.name); });
 
 }  // namespace

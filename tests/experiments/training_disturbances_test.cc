@@ -195,9 +195,9 @@ std::vector<double> trials_and_weights(const std::string& protocol,
   const SeedRun run = run_experiment(with(settings)).run(0, 0);
   std::vector<double> figures;
   for (const TrialRecord& trial : run.trials) {
-    figures.insert(figures.end(), {static_cast<double>(trial.outcome.status),
-                                   static_cast<double>(trial.outcome.steps),
-                                   trial.outcome.final_theta});
+    figures.insert(figures.end(),
+                   {static_cast<double>(trial.outcome.status),
+                    static_cast<double>(trial.outcome.steps), trial.outcome.final_theta});
   }
   EXPECT_TRUE(run.weights.has_value()) << protocol;
   if (run.weights) {
@@ -213,7 +213,8 @@ std::vector<double> trials_and_weights(const std::string& protocol,
 TEST(TrainingDisturbances, ARobotOfItsOwnCarriesTheLearningFromTrialToTrial) {
   for (const std::string protocol : {"exp1", "exp2", "exp3"}) {
     const std::vector<double> nominal = trials_and_weights(protocol, {});
-    const std::vector<double> tiny = trials_and_weights(protocol, {"training.body_mass_spread=1e-12"});
+    const std::vector<double> tiny =
+        trials_and_weights(protocol, {"training.body_mass_spread=1e-12"});
     ASSERT_EQ(nominal.size(), tiny.size()) << protocol;
     for (std::size_t i = 0; i < nominal.size(); ++i) {
       EXPECT_NEAR(tiny[i], nominal[i], 1e-6 * (1.0 + std::abs(nominal[i]))) << protocol << " " << i;
@@ -240,8 +241,9 @@ TEST(TrainingDisturbances, ASpreadOfBodyMassesRefusesARunnerOfItsLoopAndAPlantOf
           "training.body_mass_spread is 0.2, but plant 'cbbg/plant' is the arm's own, not "
           "plant.kind's, and would learn unchanged; keep training.body_mass_spread 0 for it, or "
           "register the plant as a kind (diagrams/plant_kinds.h)"));
-  EXPECT_THAT([] { with({"training.body_mass_spread=1"}); },
-              ThrowsMessage<config::ConfigError>(::testing::HasSubstr("training.body_mass_spread")));
+  EXPECT_THAT(
+      [] { with({"training.body_mass_spread=1"}); },
+      ThrowsMessage<config::ConfigError>(::testing::HasSubstr("training.body_mass_spread")));
 }
 
 // The first trial's outcome of every arm and seed of `protocol`.
