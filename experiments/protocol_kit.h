@@ -89,7 +89,8 @@ struct SeedLoop {
   // Trial number `trial` from `theta0` for `duration`, in `loop` as the protocol set up its
   // context (k1); under training.body_mass_spread in a loop built for the trial's robot
   // (TrainingDisturbances::trial_robot) that carries on this one's learning, its parameters
-  // and its random streams, and hands them back after the trial.
+  // and its random streams, and hands them back after the trial (runner.telemetry() then
+  // keeps no trial's ticks).
   TrialOutcome run_trial(double theta0, double duration, int trial);
 
   diagrams::ClosedLoop loop;

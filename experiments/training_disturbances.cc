@@ -57,10 +57,10 @@ void check_training(const parameters::Parameters& p) {
   }
   if (training.body_mass_spread > 0.0) {
     for (const double factor : {1.0 - training.body_mass_spread, 1.0 + training.body_mass_spread}) {
+      const parameters::Parameters robot = with_body_mass_scale(p, factor);
       try {
-        diagrams::validate_parameters(with_body_mass_scale(p, factor));
+        diagrams::validate_parameters(robot);
       } catch (const config::ConfigError& error) {
-        if (std::string(error.what()).starts_with("training.")) throw;
         throw config::ConfigError(
             "training.body_mass_spread is " + format_number(training.body_mass_spread) +
             ": the robot of body mass x" + format_number(factor) + " is invalid: " + error.what());

@@ -8,10 +8,10 @@
 // pitch and pitch-rate noise, a push block of the largest force); before each trial the
 // disturbances set that trial's share in the context: the sensors' noise_scale, the push's
 // pulse, and the initial pitch. A trial of another body mass runs in a loop built for that
-// robot (trial_robot), carrying on the seed's learning (SeedLoop::run_trial). The draws come from a
-// stream of the seed's own, derived from its root seed and "training" (framework/random.h), so
-// every arm of one seed meets the same pushes and angles in the same trials (common random
-// numbers), and a run is the same bytes on any thread count.
+// robot (trial_robot), carrying on the seed's learning (SeedLoop::run_trial). The draws come
+// from a stream of the seed's own, derived from its root seed and "training"
+// (framework/random.h), so every arm of one seed meets the same pushes, angles and masses in
+// the same trials (common random numbers), and a run is the same bytes on any thread count.
 
 #include <cstdint>
 

@@ -41,10 +41,9 @@ struct TrainingParams {
              "them, through plant.kind), the weights carried from trial to trial; 0 = none",
              interval(0.0, 1.0, kClosed, kOpen));
     a.integer("curriculum_trials", curriculum_trials,
-              "training only: the noise, the push, the initial pitch's and the body mass's spreads "
-              "grow linearly "
-              "from none at trial 1 to the values above at trial curriculum_trials + 1; 0 = "
-              "all of them from the first trial",
+              "training only: the noise, the push, the initial pitch's and the body mass's "
+              "spreads grow linearly from none at trial 1 to the values above at trial "
+              "curriculum_trials + 1; 0 = all of them from the first trial",
               kNonNegative);
   }
 

@@ -83,8 +83,12 @@ sweep() {
   } >>"$costs"
 }
 
-# A costs file left by a killed run speaks of sweeps that will be redone: start it again.
-[[ -d "$out" && ! -e "$out.partial" ]] || rm -f "$costs"
+# The costs are written once a sweep is merged, the transfer sweep's first: a costs file
+# beside no finished transfer sweep is not this search's to replace.
+if [[ -e "$costs" && ! (-d "$out" && ! -e "$out.partial") ]]; then
+  echo "$study: $costs exists, but $out is no finished search: move it away first" >&2
+  exit 2
+fi
 sweep transfer "$out" "${transfer[@]}"
 sweep exp2 "$out-holding" "${holding[@]}"
 cat "$costs"

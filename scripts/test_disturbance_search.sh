@@ -23,6 +23,13 @@ status=0
   fail "--round 3 was not refused (exit $status): $(cat "$scratch/err")"
 [[ ! -e "$scratch/no" ]] || fail "a refused search left a folder"
 
+touch "$scratch/theirs-costs.txt"
+status=0
+"$search" --seeds 1 --out "$scratch/theirs" 2>"$scratch/err" || status=$?
+[[ $status == 2 ]] && grep -qF "$scratch/theirs-costs.txt exists, but $scratch/theirs is no finished search: move it away first" "$scratch/err" ||
+  fail "a costs file of someone else's was not refused (exit $status): $(cat "$scratch/err")"
+[[ -e "$scratch/theirs-costs.txt" ]] || fail "a costs file of someone else's was removed"
+
 out="$scratch/search"
 "$search" --plant analytic --seeds 1 --jobs 2 --shards 3 --out "$out" >"$scratch/first" 2>&1 ||
   fail "the search failed: $(tail -3 "$scratch/first")"
