@@ -125,27 +125,32 @@ void Context::reset_trial_state() {
 
 namespace {
 
-bool same_parts(const Block& a, const Block& b) {
-  const auto& left = a.discrete_state_parts();
-  const auto& right = b.discrete_state_parts();
+// Whether two lists of declarations (state parts, parameters) have the same names and sizes,
+// in order; `size_of` gives a declaration's size.
+template <class List, class SizeOf>
+bool same_names_and_sizes(const List& left, const List& right, SizeOf size_of) {
   if (left.size() != right.size()) return false;
   for (std::size_t i = 0; i < left.size(); ++i) {
-    if (left[i].name != right[i].name || left[i].size != right[i].size) return false;
+    if (left[i].name != right[i].name || size_of(left[i]) != size_of(right[i])) return false;
   }
   return true;
 }
 
+bool same_parts(const Block& a, const Block& b) {
+  return same_names_and_sizes(a.discrete_state_parts(), b.discrete_state_parts(),
+                              [](const auto& part) { return part.size; });
+}
+
 bool same_parameters(const Block& a, const Block& b) {
-  const auto& left = a.parameters();
-  const auto& right = b.parameters();
-  if (left.size() != right.size()) return false;
-  for (std::size_t i = 0; i < left.size(); ++i) {
-    if (left[i].name != right[i].name ||
-        left[i].default_value.size() != right[i].default_value.size()) {
-      return false;
-    }
-  }
-  return true;
+  return same_names_and_sizes(a.parameters(), b.parameters(),
+                              [](const Parameter& p) { return p.default_value.size(); });
+}
+
+// The leaves of `diagram` by their path below its root (LeafLayout::stream_name).
+std::unordered_map<std::string_view, const LeafLayout*> leaves_by_path(const Diagram& diagram) {
+  std::unordered_map<std::string_view, const LeafLayout*> leaves;
+  for (const auto& leaf : diagram.leaves()) leaves[leaf.stream_name] = &leaf;
+  return leaves;
 }
 
 // Whether the block at `path` is the block at `outer` or inside it.
@@ -157,8 +162,7 @@ bool is_within(const std::string& path, const std::string& outer) {
 }  // namespace
 
 void Context::continue_from(const Context& other) {
-  std::unordered_map<std::string_view, const LeafLayout*> theirs;
-  for (const auto& leaf : other.diagram_->leaves()) theirs[leaf.stream_name] = &leaf;
+  const auto theirs = leaves_by_path(*other.diagram_);
   for (const auto& leaf : diagram_->leaves()) {
     const auto match = theirs.find(leaf.stream_name);
     if (match == theirs.end() || !same_parts(*leaf.block, *match->second->block)) continue;
@@ -174,8 +178,7 @@ void Context::continue_from(const Context& other) {
 }
 
 void Context::copy_parameters_from(const Context& other, const Block* own) {
-  std::unordered_map<std::string_view, const LeafLayout*> theirs;
-  for (const auto& leaf : other.diagram_->leaves()) theirs[leaf.stream_name] = &leaf;
+  const auto theirs = leaves_by_path(*other.diagram_);
   const std::string own_path = own == nullptr ? std::string() : own->path();
   for (const auto& leaf : diagram_->leaves()) {
     if (own != nullptr && is_within(leaf.block->path(), own_path)) continue;
