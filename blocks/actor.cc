@@ -42,54 +42,49 @@ Actor::Actor(std::string name, int num_features, const ActorParams& params, doub
   params_.validate();
   check_period(period);
   const int n = num_features_;
-  const InputPort& features = declare_input_port("features", n, "phi(s_t)");
-  const InputPort& td_error = declare_input_port("td_error", 1, "delta_{t-1}");
-  const InputPort& supervisor = declare_input_port("supervisor_action", 1, "a_S(t)");
-  const InputPort& exploration = declare_input_port("exploration_action", 1, "a_E(t)");
-  const InputPort& omega = declare_input_port("omega", 1, "omega(t)");
+  features_ = &declare_input_port("features", n, "phi(s_t)");
+  td_error_ = &declare_input_port("td_error", 1, "delta_{t-1}");
+  supervisor_action_ = &declare_input_port("supervisor_action", 1, "a_S(t)");
+  exploration_action_ = &declare_input_port("exploration_action", 1, "a_E(t)");
+  omega_ = &declare_input_port("omega", 1, "omega(t)");
   weights_ = declare_discrete_state("weights", Vector::Zero(n), StateLifetime::kPersistent);
   previous_features_ =
       declare_discrete_state("previous_features", Vector::Zero(n), StateLifetime::kPerTrial);
   previous_actions_ = declare_discrete_state("previous_actions", Vector::Zero(kPreviousActionsSize),
                                              StateLifetime::kPerTrial);
   has_previous_ = declare_discrete_state("has_previous", Vector::Zero(1), StateLifetime::kPerTrial);
-  const OutputPort& action_port = declare_output_port(
-      "actor_action", 1,
-      [this, &features](const BlockContext& context, VectorRef action) {
-        action[0] = weights_.of(context.discrete_state()).dot(context.input(features));
-      },
-      {&features}, "a_A(t) = theta . phi(s_t)");
-  declare_periodic_update(
-      period, 0.0,
-      [this, &features, &td_error, &supervisor, &exploration, &omega, &action_port](
-          BlockContext& context, VectorRef next) {
-        const auto state = context.discrete_state();
-        const auto theta = weights_.of(state);
-        const auto phi = context.input(features);
-        if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
-          const auto previous = previous_actions_.of(state);
-          const double delta = context.input(td_error)[0];
-          const double a_s = previous[kSupervisorAction];
-          const double a_e = previous[kExplorationAction];
-          const double a_a = previous[kActorAction];
-          const double w = previous[kOmega];
-          const double alpha = params_.alpha;
-          const double step =
-              params_.rule == ActorRule::kImproved
-                  ? alpha * delta * (w * (a_e - a_s) + (a_s - a_a))
-                  : w * alpha * delta * (a_e - a_a) + (1.0 - w) * alpha * (a_s - a_a);
-          weights_.of(next) = theta + step * previous_features_.of(state);
-        }
-        previous_features_.of(next) = phi;
-        auto stored = previous_actions_.of(next);
-        stored[kSupervisorAction] = context.input(supervisor)[0];
-        stored[kExplorationAction] = context.input(exploration)[0];
-        stored[kActorAction] = context.output(action_port)[0];  // a_A at t, before learning
-        stored[kOmega] = context.input(omega)[0];
-        has_previous_.of(next)[0] = 1.0;
-        return EventStatus::succeeded();
-      },
-      UpdateWrites::kInPlace);  // every part is read before it is written
+  action_ = &declare_output_port<&Actor::calc_action>("actor_action", 1, {features_},
+                                                      "a_A(t) = theta . phi(s_t)");
+  declare_periodic_update<&Actor::learn>(period, 0.0, UpdateWrites::kInPlace);
+}
+
+void Actor::calc_action(const BlockContext& context, VectorRef action) const {
+  action[0] = weights_.of(context.discrete_state()).dot(context.input(*features_));
+}
+
+EventStatus Actor::learn(BlockContext& context, VectorRef next) const {
+  const auto state = context.discrete_state();
+  if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
+    const auto previous = previous_actions_.of(state);
+    const double delta = context.input(*td_error_)[0];
+    const double a_s = previous[kSupervisorAction];
+    const double a_e = previous[kExplorationAction];
+    const double a_a = previous[kActorAction];
+    const double w = previous[kOmega];
+    const double alpha = params_.alpha;
+    const double step = params_.rule == ActorRule::kImproved
+                            ? alpha * delta * (w * (a_e - a_s) + (a_s - a_a))
+                            : w * alpha * delta * (a_e - a_a) + (1.0 - w) * alpha * (a_s - a_a);
+    weights_.of(next) = weights_.of(state) + step * previous_features_.of(state);
+  }
+  previous_features_.of(next) = context.input(*features_);
+  auto stored = previous_actions_.of(next);
+  stored[kSupervisorAction] = context.input(*supervisor_action_)[0];
+  stored[kExplorationAction] = context.input(*exploration_action_)[0];
+  stored[kActorAction] = context.output(*action_)[0];  // a_A at t, before learning
+  stored[kOmega] = context.input(*omega_)[0];
+  has_previous_.of(next)[0] = 1.0;
+  return EventStatus::succeeded();
 }
 
 codegen::CCalculation Actor::c_calculation(int, const Context&) const {

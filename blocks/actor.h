@@ -85,8 +85,20 @@ class Actor final : public Block, public Learner, public codegen::EmitsC {
   VectorView mutable_weights(Context& context) const;
 
  private:
+  // "actor_action": a_A(t) = theta . phi(s_t).
+  void calc_action(const BlockContext& context, VectorRef action) const;
+  // The learning rule of the class comment for the last transition, then this tick's values
+  // stored for the next one. Writes in place: every part is read before it is written.
+  EventStatus learn(BlockContext& context, VectorRef next) const;
+
   int num_features_;
   ActorParams params_;
+  const InputPort* features_;
+  const InputPort* td_error_;
+  const InputPort* supervisor_action_;
+  const InputPort* exploration_action_;
+  const InputPort* omega_;
+  const OutputPort* action_;
   StatePart weights_;
   StatePart previous_features_;
   StatePart previous_actions_;

@@ -14,22 +14,25 @@ BoltzmannSampler::BoltzmannSampler(std::string name, const SamplerParams& params
     : Block(std::move(name)), params_(params) {
   params_.validate();
   check_period(period);
-  const InputPort& actor_action = declare_input_port("actor_action", 1, "a_A(t)");
-  const InputPort& temperature = declare_input_port("temperature", 1, "T(t)");
+  actor_action_ = &declare_input_port("actor_action", 1, "a_A(t)");
+  temperature_ = &declare_input_port("temperature", 1, "T(t)");
   declare_discrete_state("noise", Vector::Zero(1), StateLifetime::kPerTrial);
-  declare_output_port(
-      "exploration_action", 1,
-      [this, &actor_action, &temperature](const BlockContext& context, VectorRef action) {
-        const double deviation = std::sqrt(params_.k_b * context.input(temperature)[0] / 2.0);
-        action[0] = context.input(actor_action)[0] + deviation * context.discrete_state()[0];
-      },
-      {&actor_action, &temperature}, "a_E(t) ~ N(a_A, K_B T / 2)");
-  const UpdateFunction draw = [](BlockContext& context, VectorRef next) {
-    next[0] = draw_standard_normal(context.random_generator());
-    return EventStatus::succeeded();
-  };
-  declare_initialization_update(draw);
-  declare_periodic_update(period, 0.0, draw, UpdateWrites::kInPlace);  // writes only
+  declare_output_port<&BoltzmannSampler::calc_exploration_action>(
+      "exploration_action", 1, {actor_action_, temperature_}, "a_E(t) ~ N(a_A, K_B T / 2)");
+  declare_initialization_update<&BoltzmannSampler::draw>();
+  declare_periodic_update<&BoltzmannSampler::draw>(period, 0.0,
+                                                   UpdateWrites::kInPlace);  // writes only
+}
+
+void BoltzmannSampler::calc_exploration_action(const BlockContext& context,
+                                               VectorRef action) const {
+  const double deviation = std::sqrt(params_.k_b * context.input(*temperature_)[0] / 2.0);
+  action[0] = context.input(*actor_action_)[0] + deviation * context.discrete_state()[0];
+}
+
+EventStatus BoltzmannSampler::draw(BlockContext& context, VectorRef next) const {
+  next[0] = draw_standard_normal(context.random_generator());
+  return EventStatus::succeeded();
 }
 
 codegen::CCalculation BoltzmannSampler::c_calculation(int, const Context&) const {

@@ -50,7 +50,14 @@ class BoltzmannSampler final : public Block, public codegen::EmitsC {
   codegen::CCalculation c_initialization(int update, const Context& context) const override;
 
  private:
+  // "exploration_action": a_E = a_A + sqrt(K_B T / 2) eps.
+  void calc_exploration_action(const BlockContext& context, VectorRef action) const;
+  // Draws eps for the next tick (the initialization update and each periodic update).
+  EventStatus draw(BlockContext& context, VectorRef next) const;
+
   SamplerParams params_;
+  const InputPort* actor_action_;
+  const InputPort* temperature_;
 };
 
 }  // namespace cbbg::blocks

@@ -40,28 +40,29 @@ Critic::Critic(std::string name, int num_features, const CriticParams& params, d
   previous_features_ =
       declare_discrete_state("previous_features", Vector::Zero(n), StateLifetime::kPerTrial);
   has_previous_ = declare_discrete_state("has_previous", Vector::Zero(1), StateLifetime::kPerTrial);
-  declare_output_port(
-      "value", 1,
-      [this](const BlockContext& context, VectorRef value) {
-        value[0] = weights_.of(context.discrete_state()).dot(context.input(*features_));
-      },
-      {features_}, "V(s_t) = w . phi(s_t)");
-  const OutputPort& td_error_port = declare_output_port(
-      "td_error", 1,
-      [this](const BlockContext& context, VectorRef delta) { delta[0] = td_error(context); },
-      {features_, reward_, failed_}, "delta_{t-1}");
-  declare_periodic_update(
-      period, 0.0,
-      [this, &td_error_port](BlockContext& context, VectorRef next) {
-        const auto state = context.discrete_state();
-        if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
-          learn(state, next, context.output(td_error_port)[0]);  // delta at this instant
-        }
-        previous_features_.of(next) = context.input(*features_);
-        has_previous_.of(next)[0] = 1.0;
-        return EventStatus::succeeded();
-      },
-      UpdateWrites::kInPlace);  // every part is read before it is written
+  declare_output_port<&Critic::calc_value>("value", 1, {features_}, "V(s_t) = w . phi(s_t)");
+  td_error_ = &declare_output_port<&Critic::calc_td_error>(
+      "td_error", 1, {features_, reward_, failed_}, "delta_{t-1}");
+  declare_periodic_update<&Critic::learn_and_remember>(
+      period, 0.0, UpdateWrites::kInPlace);  // every part is read before it is written
+}
+
+void Critic::calc_value(const BlockContext& context, VectorRef value) const {
+  value[0] = weights_.of(context.discrete_state()).dot(context.input(*features_));
+}
+
+void Critic::calc_td_error(const BlockContext& context, VectorRef delta) const {
+  delta[0] = td_error(context);
+}
+
+EventStatus Critic::learn_and_remember(BlockContext& context, VectorRef next) const {
+  const auto state = context.discrete_state();
+  if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
+    learn(state, next, context.output(*td_error_)[0]);  // delta at this instant
+  }
+  previous_features_.of(next) = context.input(*features_);
+  has_previous_.of(next)[0] = 1.0;
+  return EventStatus::succeeded();
 }
 
 double Critic::td_error(const BlockContext& context) const {

@@ -89,6 +89,13 @@ class Critic final : public Block, public Learner, public codegen::EmitsC {
   VectorView mutable_weights(Context& context) const;
 
  private:
+  // "value": V(s_t) = w . phi(s_t).
+  void calc_value(const BlockContext& context, VectorRef value) const;
+  // "td_error": delta_{t-1}, as td_error() computes it.
+  void calc_td_error(const BlockContext& context, VectorRef delta) const;
+  // The periodic update: learns from the last transition (unless frozen), then remembers
+  // phi(s_t) for the next one. Writes in place: every part is read before it is written.
+  EventStatus learn_and_remember(BlockContext& context, VectorRef next) const;
   // delta_{t-1} from the context at tick t (0 without a previous tick).
   double td_error(const BlockContext& context) const;
   // The rule's step on w (and z) from the transition s_{t-1} -> s_t, into `next`.
@@ -103,6 +110,7 @@ class Critic final : public Block, public Learner, public codegen::EmitsC {
   const InputPort* features_;
   const InputPort* reward_;
   const InputPort* failed_;
+  const OutputPort* td_error_;
 };
 
 }  // namespace cbbg::blocks

@@ -28,7 +28,11 @@ class Entropy final : public Block {
   Entropy(std::string name, const EntropyParams& params);
 
  private:
+  // "entropy": E = (1/2) log2(pi e K_B T).
+  void calc_entropy(const BlockContext& context, VectorRef entropy) const;
+
   EntropyParams params_;
+  const InputPort* temperature_;
 };
 
 }  // namespace cbbg::blocks

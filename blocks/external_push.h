@@ -29,6 +29,11 @@ class ExternalPush final : public Block {
   ExternalPush(std::string name, const PushParams& params, double period);
 
  private:
+  // "disturbance": the held [F, tau_ext] of the discrete state.
+  void calc_disturbance(const BlockContext& context, VectorRef disturbance) const;
+  // (F, tau_ext) of the context's pulse if it is on at this tick, else (0, 0). Writes only.
+  EventStatus update_push(BlockContext& context, VectorRef next) const;
+
   PushParams params_;
   int pulse_;  // the context parameter's index
 };

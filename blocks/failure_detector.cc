@@ -17,23 +17,25 @@ FailureDetector::FailureDetector(std::string name, const FailureDetectorParams& 
     : Block(std::move(name)), params_(params) {
   params_.validate();
   check_period(period);
-  const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");
-  declare_output_port(
-      "failed", 1,
-      [this, &measured](const BlockContext& context, VectorRef failed) {
-        const auto y = context.input(measured);
-        const bool fell = std::abs(y[kMeasuredThetaB]) > params_.failure_angle;
-        failed[0] = fell || !y.allFinite() ? 1.0 : 0.0;
-      },
-      {&measured}, "1 when |theta_b| > trial.failure_angle or a signal is not finite");
-  declare_periodic_update(period, 0.0, [this, &measured](BlockContext& context, VectorRef) {
-    const auto y = context.input(measured);
-    if (!y.allFinite()) return EventStatus::terminate("a measured signal is not finite");
-    if (std::abs(y[kMeasuredThetaB]) > params_.failure_angle) {
-      return EventStatus::terminate("|theta_b| exceeded trial.failure_angle");
-    }
-    return EventStatus::succeeded();
-  });
+  measured_ = &declare_input_port("measured", kMeasuredSize, "measured signals");
+  declare_output_port<&FailureDetector::calc_failed>(
+      "failed", 1, {measured_}, "1 when |theta_b| > trial.failure_angle or a signal is not finite");
+  declare_periodic_update<&FailureDetector::check_failure>(period, 0.0);
+}
+
+void FailureDetector::calc_failed(const BlockContext& context, VectorRef failed) const {
+  const auto y = context.input(*measured_);
+  const bool fell = std::abs(y[kMeasuredThetaB]) > params_.failure_angle;
+  failed[0] = fell || !y.allFinite() ? 1.0 : 0.0;
+}
+
+EventStatus FailureDetector::check_failure(BlockContext& context, VectorRef) const {
+  const auto y = context.input(*measured_);
+  if (!y.allFinite()) return EventStatus::terminate("a measured signal is not finite");
+  if (std::abs(y[kMeasuredThetaB]) > params_.failure_angle) {
+    return EventStatus::terminate("|theta_b| exceeded trial.failure_angle");
+  }
+  return EventStatus::succeeded();
 }
 
 namespace {

@@ -36,7 +36,13 @@ class FailureDetector final : public Block, public codegen::EmitsC {
   codegen::CCalculation c_update(int update, const Context& context) const override;
 
  private:
+  // "failed": 1 if |theta_b| > failure_angle or a measured signal is not finite, else 0.
+  void calc_failed(const BlockContext& context, VectorRef failed) const;
+  // Ends the simulation when the trial fails; writes no state.
+  EventStatus check_failure(BlockContext& context, VectorRef next) const;
+
   FailureDetectorParams params_;
+  const InputPort* measured_;
 };
 
 }  // namespace cbbg::blocks

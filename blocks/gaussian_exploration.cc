@@ -13,30 +13,34 @@ GaussianExploration::GaussianExploration(std::string name, const ExplorationPara
     : Block(std::move(name)), params_(params), period_(period) {
   params_.validate();
   check_period(period);
-  const InputPort& actor_action = declare_input_port("actor_action", 1, "a_A(t)");
+  actor_action_ = &declare_input_port("actor_action", 1, "a_A(t)");
   noise_ = declare_discrete_state("noise", Vector::Zero(1), StateLifetime::kPerTrial);
   elapsed_ = declare_discrete_state("elapsed", Vector::Zero(1), StateLifetime::kPersistent);
-  declare_output_port(
-      "exploration_action", 1,
-      [this, &actor_action](const BlockContext& context, VectorRef action) {
-        const auto state = context.discrete_state();
-        action[0] =
-            context.input(actor_action)[0] + sigma_at(elapsed_.of(state)[0]) * noise_.of(state)[0];
-      },
-      {&actor_action}, "a_E(t) = a_A + sigma(t) eps");
+  declare_output_port<&GaussianExploration::calc_exploration_action>(
+      "exploration_action", 1, {actor_action_}, "a_E(t) = a_A + sigma(t) eps");
   // The draws of the BoltzmannSampler, in the same order: common random numbers.
-  declare_initialization_update([this](BlockContext& context, VectorRef next) {
-    noise_.of(next)[0] = draw_standard_normal(context.random_generator());
-    return EventStatus::succeeded();
-  });
-  declare_periodic_update(
+  declare_initialization_update<&GaussianExploration::draw_first>();
+  declare_periodic_update<&GaussianExploration::draw_next>(
       period, 0.0,
-      [this, period](BlockContext& context, VectorRef next) {
-        noise_.of(next)[0] = draw_standard_normal(context.random_generator());
-        elapsed_.of(next)[0] = elapsed_.of(context.discrete_state())[0] + period;
-        return EventStatus::succeeded();
-      },
       UpdateWrites::kInPlace);  // noise is only written, elapsed read before it is written
+}
+
+void GaussianExploration::calc_exploration_action(const BlockContext& context,
+                                                  VectorRef action) const {
+  const auto state = context.discrete_state();
+  action[0] =
+      context.input(*actor_action_)[0] + sigma_at(elapsed_.of(state)[0]) * noise_.of(state)[0];
+}
+
+EventStatus GaussianExploration::draw_first(BlockContext& context, VectorRef next) const {
+  noise_.of(next)[0] = draw_standard_normal(context.random_generator());
+  return EventStatus::succeeded();
+}
+
+EventStatus GaussianExploration::draw_next(BlockContext& context, VectorRef next) const {
+  noise_.of(next)[0] = draw_standard_normal(context.random_generator());
+  elapsed_.of(next)[0] = elapsed_.of(context.discrete_state())[0] + period_;
+  return EventStatus::succeeded();
 }
 
 double GaussianExploration::sigma_at(double elapsed) const {

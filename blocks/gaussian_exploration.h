@@ -43,8 +43,16 @@ class GaussianExploration final : public Block, public codegen::EmitsC {
   double elapsed(const Context& context) const;
 
  private:
+  // "exploration_action": a_E = a_A + sigma(t) eps.
+  void calc_exploration_action(const BlockContext& context, VectorRef action) const;
+  // The initialization update: draws eps for the first tick.
+  EventStatus draw_first(BlockContext& context, VectorRef next) const;
+  // The periodic update: draws eps for the next tick and advances elapsed by the period.
+  EventStatus draw_next(BlockContext& context, VectorRef next) const;
+
   ExplorationParams params_;
   double period_;
+  const InputPort* actor_action_;
   StatePart noise_;
   StatePart elapsed_;
 };

@@ -44,17 +44,17 @@ LqrSupervisor::LqrSupervisor(std::string name, const plant::LinearModel& model,
         error.what());
   }
 
-  const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");
-  declare_output_port(
-      "action", 1,
-      [this, &measured](const BlockContext& context, VectorRef action) {
-        const auto y = context.input(measured);
-        const Eigen::Vector4d x(
-            y[kMeasuredThetaB], (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0,
-            y[kMeasuredThetaBDot], (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0);
-        action[0] = -gain_.dot(x);
-      },
-      {&measured}, "a_S = -K x, the LQR torque");
+  measured_ = &declare_input_port("measured", kMeasuredSize, "measured signals");
+  declare_output_port<&LqrSupervisor::calc_action>("action", 1, {measured_},
+                                                   "a_S = -K x, the LQR torque");
+}
+
+void LqrSupervisor::calc_action(const BlockContext& context, VectorRef action) const {
+  const auto y = context.input(*measured_);
+  const Eigen::Vector4d x(y[kMeasuredThetaB], (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0,
+                          y[kMeasuredThetaBDot],
+                          (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0);
+  action[0] = -gain_.dot(x);
 }
 
 codegen::CCalculation LqrSupervisor::c_calculation(int, const Context&) const {

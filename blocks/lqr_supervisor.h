@@ -64,7 +64,11 @@ class LqrSupervisor final : public Block, public codegen::EmitsC {
   codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
  private:
+  // "action": a_S = -K x.
+  void calc_action(const BlockContext& context, VectorRef action) const;
+
   Eigen::RowVector4d gain_;
+  const InputPort* measured_;
 };
 
 }  // namespace cbbg::blocks

@@ -24,6 +24,14 @@ class Mixer final : public Block, public codegen::EmitsC {
 
   // "action" as C (cbbg export --omega).
   codegen::CCalculation c_calculation(int output, const Context& context) const override;
+
+ private:
+  // "action": a = omega a_E + (1 - omega) a_S.
+  void calc_action(const BlockContext& context, VectorRef action) const;
+
+  const InputPort* exploration_action_;
+  const InputPort* supervisor_action_;
+  const InputPort* omega_;
 };
 
 }  // namespace cbbg::blocks

@@ -17,25 +17,26 @@ int NormaliserParams::size() const {
 Normaliser::Normaliser(std::string name, const NormaliserParams& params)
     : Block(std::move(name)), params_(params) {
   params_.validate();
-  const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");
-  declare_output_port(
-      "x", params_.size(),
-      [this, &measured](const BlockContext& context, VectorRef x) {
-        const auto y = context.input(measured);
-        const double limit = params_.saturation;
-        x[0] = std::clamp(y[kMeasuredThetaB] / params_.scale_theta, -limit, limit);
-        x[1] = std::clamp(y[kMeasuredThetaBDot] / params_.scale_dtheta, -limit, limit);
-        int next = 2;
-        if (params_.sees_wheel_angle()) {
-          const double phi = (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0;
-          x[next++] = std::clamp(phi / params_.scale_phi, -limit, limit);
-        }
-        if (params_.sees_wheel_rate()) {
-          const double phi_dot = (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
-          x[next] = std::clamp(phi_dot / params_.scale_dphi, -limit, limit);
-        }
-      },
-      {&measured}, "normalised (theta_b, theta_b'[, phi][, phi']), saturated to the grid");
+  measured_ = &declare_input_port("measured", kMeasuredSize, "measured signals");
+  declare_output_port<&Normaliser::calc_x>(
+      "x", params_.size(), {measured_},
+      "normalised (theta_b, theta_b'[, phi][, phi']), saturated to the grid");
+}
+
+void Normaliser::calc_x(const BlockContext& context, VectorRef x) const {
+  const auto y = context.input(*measured_);
+  const double limit = params_.saturation;
+  x[0] = std::clamp(y[kMeasuredThetaB] / params_.scale_theta, -limit, limit);
+  x[1] = std::clamp(y[kMeasuredThetaBDot] / params_.scale_dtheta, -limit, limit);
+  int next = 2;
+  if (params_.sees_wheel_angle()) {
+    const double phi = (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0;
+    x[next++] = std::clamp(phi / params_.scale_phi, -limit, limit);
+  }
+  if (params_.sees_wheel_rate()) {
+    const double phi_dot = (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
+    x[next] = std::clamp(phi_dot / params_.scale_dphi, -limit, limit);
+  }
 }
 
 codegen::CCalculation Normaliser::c_calculation(int, const Context&) const {

@@ -75,7 +75,11 @@ class Normaliser final : public Block, public DescribesLayout, public codegen::E
   codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
  private:
+  // "x": the measured signals it sees, each over its scale and saturated to +-S.
+  void calc_x(const BlockContext& context, VectorRef x) const;
+
   NormaliserParams params_;
+  const InputPort* measured_;
 };
 
 }  // namespace cbbg::blocks

@@ -51,19 +51,18 @@ OmegaSchedule::OmegaSchedule(std::string name, const OmegaParams& params, double
   params_.validate();
   check_period(period);
   declare_discrete_state("ticks", Vector::Zero(1), StateLifetime::kPersistent);
-  declare_output_port(
-      "omega", 1,
-      [this](const BlockContext& context, VectorRef omega) {
-        omega[0] = omega_at(context.discrete_state()[0]);
-      },
-      {}, "omega(t)");
-  declare_periodic_update(
-      period, 0.0,
-      [](BlockContext& context, VectorRef next) {
-        next[0] = context.discrete_state()[0] + 1.0;
-        return EventStatus::succeeded();
-      },
-      UpdateWrites::kInPlace);  // reads the count, then writes it
+  declare_output_port<&OmegaSchedule::calc_omega>("omega", 1, {}, "omega(t)");
+  declare_periodic_update<&OmegaSchedule::count_tick>(
+      period, 0.0, UpdateWrites::kInPlace);  // reads the count, then writes it
+}
+
+void OmegaSchedule::calc_omega(const BlockContext& context, VectorRef omega) const {
+  omega[0] = omega_at(context.discrete_state()[0]);
+}
+
+EventStatus OmegaSchedule::count_tick(BlockContext& context, VectorRef next) const {
+  next[0] = context.discrete_state()[0] + 1.0;
+  return EventStatus::succeeded();
 }
 
 double OmegaSchedule::omega_at(double ticks) const {

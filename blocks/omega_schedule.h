@@ -67,6 +67,11 @@ class OmegaSchedule final : public Block, public codegen::EmitsC {
   double ticks(const Context& context) const;
 
  private:
+  // "omega": omega_at the ticks counted so far.
+  void calc_omega(const BlockContext& context, VectorRef omega) const;
+  // Advances the tick count by one.
+  EventStatus count_tick(BlockContext& context, VectorRef next) const;
+
   OmegaParams params_;
 };
 

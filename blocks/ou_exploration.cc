@@ -16,26 +16,28 @@ OuExploration::OuExploration(std::string name, const ExplorationParams& params, 
   decay_ = std::exp(-rate);
   // expm1 keeps the innovation accurate when theta Ts is small.
   innovation_ = params_.sigma * std::sqrt(-std::expm1(-2.0 * rate));
-  const InputPort& actor_action = declare_input_port("actor_action", 1, "a_A(t)");
+  actor_action_ = &declare_input_port("actor_action", 1, "a_A(t)");
   declare_discrete_state("noise", Vector::Zero(1), StateLifetime::kPerTrial);
-  declare_output_port(
-      "exploration_action", 1,
-      [&actor_action](const BlockContext& context, VectorRef action) {
-        action[0] = context.input(actor_action)[0] + context.discrete_state()[0];
-      },
-      {&actor_action}, "a_E(t) = a_A + x(t)");
-  declare_initialization_update([this](BlockContext& context, VectorRef next) {
-    next[0] = params_.sigma * draw_standard_normal(context.random_generator());
-    return EventStatus::succeeded();
-  });
-  declare_periodic_update(
-      period, 0.0,
-      [this](BlockContext& context, VectorRef next) {
-        const double x = context.discrete_state()[0];
-        next[0] = decay_ * x + innovation_ * draw_standard_normal(context.random_generator());
-        return EventStatus::succeeded();
-      },
-      UpdateWrites::kInPlace);  // x is read before it is written
+  declare_output_port<&OuExploration::calc_exploration_action>(
+      "exploration_action", 1, {actor_action_}, "a_E(t) = a_A + x(t)");
+  declare_initialization_update<&OuExploration::draw_stationary>();
+  declare_periodic_update<&OuExploration::evolve>(
+      period, 0.0, UpdateWrites::kInPlace);  // x is read before it is written
+}
+
+void OuExploration::calc_exploration_action(const BlockContext& context, VectorRef action) const {
+  action[0] = context.input(*actor_action_)[0] + context.discrete_state()[0];
+}
+
+EventStatus OuExploration::draw_stationary(BlockContext& context, VectorRef next) const {
+  next[0] = params_.sigma * draw_standard_normal(context.random_generator());
+  return EventStatus::succeeded();
+}
+
+EventStatus OuExploration::evolve(BlockContext& context, VectorRef next) const {
+  const double x = context.discrete_state()[0];
+  next[0] = decay_ * x + innovation_ * draw_standard_normal(context.random_generator());
+  return EventStatus::succeeded();
 }
 
 codegen::CCalculation OuExploration::c_calculation(int, const Context&) const {

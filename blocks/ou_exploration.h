@@ -38,9 +38,17 @@ class OuExploration final : public Block, public codegen::EmitsC {
   codegen::CCalculation c_initialization(int update, const Context& context) const override;
 
  private:
+  // "exploration_action": a_E = a_A + x.
+  void calc_exploration_action(const BlockContext& context, VectorRef action) const;
+  // The initialization update: x = sigma eps_0, from the stationary law.
+  EventStatus draw_stationary(BlockContext& context, VectorRef next) const;
+  // The periodic update: x <- x e^(-theta Ts) + sigma sqrt(1 - e^(-2 theta Ts)) eps_k.
+  EventStatus evolve(BlockContext& context, VectorRef next) const;
+
   ExplorationParams params_;
   double decay_;       // e^(-theta Ts)
   double innovation_;  // sigma sqrt(1 - e^(-2 theta Ts))
+  const InputPort* actor_action_;
 };
 
 }  // namespace cbbg::blocks

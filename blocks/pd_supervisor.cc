@@ -11,17 +11,16 @@ void PdSupervisorParams::validate() const { check_declared(*this, kSection); }
 PdSupervisor::PdSupervisor(std::string name, const PdSupervisorParams& params)
     : Block(std::move(name)), params_(params) {
   params_.validate();
-  const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");
-  declare_output_port(
-      "action", 1,
-      [this, &measured](const BlockContext& context, VectorRef action) {
-        const auto y = context.input(measured);
-        action[0] = params_.k_theta * y[kMeasuredThetaB] +
-                    params_.k_dtheta * y[kMeasuredThetaBDot] +
-                    params_.k_phi * (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0 +
-                    params_.k_dphi * (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
-      },
-      {&measured}, "a_S, the supervisor's torque");
+  measured_ = &declare_input_port("measured", kMeasuredSize, "measured signals");
+  declare_output_port<&PdSupervisor::calc_action>("action", 1, {measured_},
+                                                  "a_S, the supervisor's torque");
+}
+
+void PdSupervisor::calc_action(const BlockContext& context, VectorRef action) const {
+  const auto y = context.input(*measured_);
+  action[0] = params_.k_theta * y[kMeasuredThetaB] + params_.k_dtheta * y[kMeasuredThetaBDot] +
+              params_.k_phi * (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0 +
+              params_.k_dphi * (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
 }
 
 codegen::CCalculation PdSupervisor::c_calculation(int, const Context&) const {

@@ -46,7 +46,11 @@ class PdSupervisor final : public Block, public codegen::EmitsC {
   codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
  private:
+  // "action": a_S, the PD law of the class comment.
+  void calc_action(const BlockContext& context, VectorRef action) const;
+
   PdSupervisorParams params_;
+  const InputPort* measured_;
 };
 
 }  // namespace cbbg::blocks

@@ -10,24 +10,24 @@ QuadraticReward::QuadraticReward(std::string name, const RewardParams& params, d
     : Block(std::move(name)), params_(params) {
   params_.validate();
   check_period(period);
-  const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");
-  const InputPort& failed = declare_input_port("failed", 1, "1 when the trial fails");
-  declare_output_port(
-      "reward", 1,
-      [this, &measured, &failed](const BlockContext& context, VectorRef reward) {
-        if (context.input(failed)[0] > 0.5) {
-          reward[0] = -1.0;
-          return;
-        }
-        const auto y = context.input(measured);
-        const double theta = y[kMeasuredThetaB];
-        const double theta_dot = y[kMeasuredThetaBDot];
-        const double phi_dot = (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
-        const auto& q = params_.q;
-        reward[0] =
-            -(q[0] * theta * theta + q[1] * theta_dot * theta_dot + q[2] * phi_dot * phi_dot);
-      },
-      {&measured, &failed}, "r_{t-1} = -(q0 theta_b^2 + q1 theta_b'^2 + q2 phi'^2), -1 on failure");
+  measured_ = &declare_input_port("measured", kMeasuredSize, "measured signals");
+  failed_ = &declare_input_port("failed", 1, "1 when the trial fails");
+  declare_output_port<&QuadraticReward::calc_reward>(
+      "reward", 1, {measured_, failed_},
+      "r_{t-1} = -(q0 theta_b^2 + q1 theta_b'^2 + q2 phi'^2), -1 on failure");
+}
+
+void QuadraticReward::calc_reward(const BlockContext& context, VectorRef reward) const {
+  if (context.input(*failed_)[0] > 0.5) {
+    reward[0] = -1.0;
+    return;
+  }
+  const auto y = context.input(*measured_);
+  const double theta = y[kMeasuredThetaB];
+  const double theta_dot = y[kMeasuredThetaBDot];
+  const double phi_dot = (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
+  const auto& q = params_.q;
+  reward[0] = -(q[0] * theta * theta + q[1] * theta_dot * theta_dot + q[2] * phi_dot * phi_dot);
 }
 
 codegen::CCalculation QuadraticReward::c_calculation(int, const Context&) const {

@@ -29,7 +29,12 @@ class QuadraticReward final : public Block, public codegen::EmitsC {
   codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
  private:
+  // "reward": -1 on failure, else -(q0 theta_b^2 + q1 theta_b'^2 + q2 phi'^2).
+  void calc_reward(const BlockContext& context, VectorRef reward) const;
+
   RewardParams params_;
+  const InputPort* measured_;
+  const InputPort* failed_;
 };
 
 }  // namespace cbbg::blocks

@@ -34,29 +34,29 @@ RbfFeatures::RbfFeatures(std::string name, const RbfParams& params, int dimensio
         std::to_string(kMaxDimensions) + "; got " + std::to_string(dimensions));
   }
   inverse_two_width_squared_ = 1.0 / (2.0 * params_.width * params_.width);
-  const InputPort& x = declare_input_port("x", dimensions, "normalised inputs, grid units");
-  declare_output_port(
-      "features", num_features(),
-      [this, &x](const BlockContext& context, VectorRef features) {
-        const auto point = context.input(x);
-        if (params_.units == RbfUnits::kPerAxis) {
-          per_axis_features(point, features);
-          return;
-        }
-        if (dimensions_ != 2) {
-          grid_features(point, features);
-          return;
-        }
-        const int m = static_cast<int>(params_.centres.size());
-        for (int i = 0; i < m; ++i) {
-          const double d0 = point[0] - params_.centres[static_cast<size_t>(i)];
-          for (int j = 0; j < m; ++j) {
-            const double d1 = point[1] - params_.centres[static_cast<size_t>(j)];
-            features[i * m + j] = std::exp(-(d0 * d0 + d1 * d1) * inverse_two_width_squared_);
-          }
-        }
-      },
-      {&x}, "Gaussian features on the grid of centres per axis");
+  x_ = &declare_input_port("x", dimensions, "normalised inputs, grid units");
+  declare_output_port<&RbfFeatures::calc_features>(
+      "features", num_features(), {x_}, "Gaussian features on the grid of centres per axis");
+}
+
+void RbfFeatures::calc_features(const BlockContext& context, VectorRef features) const {
+  const auto point = context.input(*x_);
+  if (params_.units == RbfUnits::kPerAxis) {
+    per_axis_features(point, features);
+    return;
+  }
+  if (dimensions_ != 2) {
+    grid_features(point, features);
+    return;
+  }
+  const int m = static_cast<int>(params_.centres.size());
+  for (int i = 0; i < m; ++i) {
+    const double d0 = point[0] - params_.centres[static_cast<size_t>(i)];
+    for (int j = 0; j < m; ++j) {
+      const double d1 = point[1] - params_.centres[static_cast<size_t>(j)];
+      features[i * m + j] = std::exp(-(d0 * d0 + d1 * d1) * inverse_two_width_squared_);
+    }
+  }
 }
 
 void RbfFeatures::grid_features(const ConstVectorView& point, VectorRef features) const {

@@ -73,6 +73,8 @@ class RbfFeatures final : public Block, public DescribesLayout, public codegen::
   codegen::CCalculation c_calculation(int output, const Context& context) const override;
 
  private:
+  // "features": phi(x), the grid of two axes here, the others by the functions below.
+  void calc_features(const BlockContext& context, VectorRef features) const;
   // The grid of d > 2 axes, an odometer over the units that keeps each axis's partial sum.
   void grid_features(const ConstVectorView& point, VectorRef features) const;
   // rbf.units per_axis: m units along each axis alone.
@@ -82,6 +84,7 @@ class RbfFeatures final : public Block, public DescribesLayout, public codegen::
   RbfParams params_;
   int dimensions_;
   double inverse_two_width_squared_;
+  const InputPort* x_;
 };
 
 }  // namespace cbbg::blocks

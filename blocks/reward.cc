@@ -33,46 +33,46 @@ Reward::Reward(std::string name, const RewardParams& params, double period)
     : Block(std::move(name)), params_(params) {
   params_.validate();
   check_period(period);
-  const InputPort& measured = declare_input_port("measured", kMeasuredSize, "measured signals");
-  const InputPort& failed = declare_input_port("failed", 1, "1 when the trial fails");
-  const StatePart previous_surface =
+  measured_ = &declare_input_port("measured", kMeasuredSize, "measured signals");
+  failed_ = &declare_input_port("failed", 1, "1 when the trial fails");
+  previous_surface_ =
       declare_discrete_state("previous_surface", Vector::Zero(1), StateLifetime::kPerTrial);
-  const StatePart has_previous =
-      declare_discrete_state("has_previous", Vector::Zero(1), StateLifetime::kPerTrial);
-  auto surface = [this, &measured](const BlockContext& context) {
-    const auto y = context.input(measured);
-    const double s = params_.a1 * y[kMeasuredThetaB] + params_.a2 * y[kMeasuredThetaBDot];
-    if (params_.k_phi == 0.0) return s;  // the paper's surface, bit for bit
-    return s + params_.k_phi * (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
-  };
-  declare_output_port(
-      "reward", 1,
-      [surface, &failed, previous_surface, has_previous](const BlockContext& context,
-                                                         VectorRef reward) {
-        const auto state = context.discrete_state();
-        if (context.input(failed)[0] > 0.5) {
-          reward[0] = -1.0;
-        } else if (has_previous.of(state)[0] == 0.0) {
-          reward[0] = 0.0;
-        } else {
-          const double s = surface(context);
-          const double s_previous = previous_surface.of(state)[0];
-          reward[0] = s * s <= s_previous * s_previous ? 0.0 : -1.0;
-        }
-      },
-      {&measured, &failed}, "r_{t-1}: 0 if s^2 did not grow, -1 if it did or on failure");
-  declare_periodic_update(
-      period, 0.0,
-      [=](BlockContext& context, VectorRef next) {
-        previous_surface.of(next)[0] = surface(context);
-        has_previous.of(next)[0] = 1.0;
-        return EventStatus::succeeded();
-      },
-      UpdateWrites::kInPlace);  // reads no state
+  has_previous_ = declare_discrete_state("has_previous", Vector::Zero(1), StateLifetime::kPerTrial);
+  declare_output_port<&Reward::calc_reward>(
+      "reward", 1, {measured_, failed_},
+      "r_{t-1}: 0 if s^2 did not grow, -1 if it did or on failure");
+  declare_periodic_update<&Reward::remember_surface>(period, 0.0,
+                                                     UpdateWrites::kInPlace);  // reads no state
 }
 
-// C statements declaring `s`, the sliding surface of the measured signals in0, as the
-// constructor's `surface` computes it.
+void Reward::calc_reward(const BlockContext& context, VectorRef reward) const {
+  const auto state = context.discrete_state();
+  if (context.input(*failed_)[0] > 0.5) {
+    reward[0] = -1.0;
+  } else if (has_previous_.of(state)[0] == 0.0) {
+    reward[0] = 0.0;
+  } else {
+    const double s = surface(context);
+    const double s_previous = previous_surface_.of(state)[0];
+    reward[0] = s * s <= s_previous * s_previous ? 0.0 : -1.0;
+  }
+}
+
+EventStatus Reward::remember_surface(BlockContext& context, VectorRef next) const {
+  previous_surface_.of(next)[0] = surface(context);
+  has_previous_.of(next)[0] = 1.0;
+  return EventStatus::succeeded();
+}
+
+double Reward::surface(const BlockContext& context) const {
+  const auto y = context.input(*measured_);
+  const double s = params_.a1 * y[kMeasuredThetaB] + params_.a2 * y[kMeasuredThetaBDot];
+  if (params_.k_phi == 0.0) return s;  // the paper's surface, bit for bit
+  return s + params_.k_phi * (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
+}
+
+// C statements declaring `s`, the sliding surface of the measured signals in0, as surface()
+// computes it.
 std::string Reward::c_surface(std::vector<codegen::CConstant>& constants) const {
   constants = {codegen::c_number("a1", params_.a1), codegen::c_number("a2", params_.a2)};
   std::string body = "  real s = $a1 * in0[" + std::to_string(kMeasuredThetaB) + "] + $a2 * in0[" +

@@ -79,8 +79,18 @@ class Reward final : public Block, public codegen::EmitsC {
   codegen::CCalculation c_update(int update, const Context& context) const override;
 
  private:
+  // "reward": -1 on failure, 0 on the first tick, else 0 if s^2 did not grow and -1 if it did.
+  void calc_reward(const BlockContext& context, VectorRef reward) const;
+  // Remembers s(t) for the next tick. Reads no state.
+  EventStatus remember_surface(BlockContext& context, VectorRef next) const;
+  // s(t), the sliding surface of the measured signals.
+  double surface(const BlockContext& context) const;
   std::string c_surface(std::vector<codegen::CConstant>& constants) const;
   RewardParams params_;
+  const InputPort* measured_;
+  const InputPort* failed_;
+  StatePart previous_surface_;
+  StatePart has_previous_;
 };
 
 }  // namespace cbbg::blocks

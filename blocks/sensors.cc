@@ -27,32 +27,32 @@ Sensors::Sensors(std::string name, const SensorsParams& params, double period,
                                   std::to_string(state_size) + " signals");
     }
   }
-  const InputPort& plant_state =
-      declare_input_port("plant_state", state_size, "the plant's signals (plant/plant_signals.h)");
+  plant_state_ =
+      &declare_input_port("plant_state", state_size, "the plant's signals (plant/plant_signals.h)");
   declare_discrete_state("noise", Vector::Zero(kMeasuredSize), StateLifetime::kPerTrial);
   noise_scale_ = declare_parameter("noise_scale", Vector::Ones(kMeasuredSize));
-  declare_output_port(
-      "measured", kMeasuredSize,
-      [this, &plant_state](const BlockContext& context, VectorRef measured) {
-        const auto state = context.input(plant_state);
-        const auto noise = context.discrete_state();
-        const auto scale = context.parameter(noise_scale_);
-        for (int i = 0; i < kMeasuredSize; ++i) {
-          const auto index = static_cast<size_t>(i);
-          double value =
-              state[plant_index_[index]] + params_.noise_std[index] * scale[i] * noise[i];
-          const double step = params_.quantisation[index];
-          if (step > 0.0) value = step * std::round(value / step);
-          measured[i] = value;
-        }
-      },
-      {&plant_state}, "theta_b, theta_b', phi_l, phi_r, phi_l', phi_r'");
-  const UpdateFunction draw = [this](BlockContext& context, VectorRef next) {
-    draw_noise(context.random_generator(), next);
-    return EventStatus::succeeded();
-  };
-  declare_initialization_update(draw);
-  declare_periodic_update(period, 0.0, draw, UpdateWrites::kInPlace);  // writes only
+  declare_output_port<&Sensors::calc_measured>("measured", kMeasuredSize, {plant_state_},
+                                               "theta_b, theta_b', phi_l, phi_r, phi_l', phi_r'");
+  declare_initialization_update<&Sensors::draw>();
+  declare_periodic_update<&Sensors::draw>(period, 0.0, UpdateWrites::kInPlace);  // writes only
+}
+
+void Sensors::calc_measured(const BlockContext& context, VectorRef measured) const {
+  const auto state = context.input(*plant_state_);
+  const auto noise = context.discrete_state();
+  const auto scale = context.parameter(noise_scale_);
+  for (int i = 0; i < kMeasuredSize; ++i) {
+    const auto index = static_cast<size_t>(i);
+    double value = state[plant_index_[index]] + params_.noise_std[index] * scale[i] * noise[i];
+    const double step = params_.quantisation[index];
+    if (step > 0.0) value = step * std::round(value / step);
+    measured[i] = value;
+  }
+}
+
+EventStatus Sensors::draw(BlockContext& context, VectorRef next) const {
+  draw_noise(context.random_generator(), next);
+  return EventStatus::succeeded();
 }
 
 void Sensors::draw_noise(RandomGenerator& generator, VectorRef noise) const {

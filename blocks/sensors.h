@@ -58,12 +58,17 @@ class Sensors final : public Block {
           int state_size = plant::kStateSize);
 
  private:
+  // "measured": y_i = Q_i(x_i + sigma_i n_i), sigma_i times its "noise_scale" entry.
+  void calc_measured(const BlockContext& context, VectorRef measured) const;
+  // Draws n for the next tick (the initialization update and each periodic update).
+  EventStatus draw(BlockContext& context, VectorRef next) const;
   // Writes fresh noise samples n_i into `noise` (size 6).
   void draw_noise(RandomGenerator& generator, VectorRef noise) const;
 
   SensorsParams params_;
   int noise_scale_;                             // the context parameter's index
   std::array<int, kMeasuredSize> plant_index_;  // the plant state's index of each measured signal
+  const InputPort* plant_state_;
 };
 
 }  // namespace cbbg::blocks

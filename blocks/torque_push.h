@@ -31,7 +31,13 @@ class TorquePush final : public Block {
   TorquePush(std::string name, const PushParams& params, double period);
 
  private:
+  // "torque": a + p.
+  void calc_torque(const BlockContext& context, VectorRef torque) const;
+  // p = torque if the push is on at this tick, else 0. Writes only.
+  EventStatus update_push(BlockContext& context, VectorRef next) const;
+
   PushParams params_;
+  const InputPort* action_;
 };
 
 }  // namespace cbbg::blocks

@@ -26,19 +26,19 @@ Tropism::Tropism(std::string name, const TropismParams& params)
     : Block(std::move(name)), params_(params) {
   params_.validate();
   k1_index_ = declare_parameter("k1", Vector::Constant(1, params_.k1));
-  const InputPort& value = declare_input_port("value", 1, "V(s_t)");
-  declare_output_port(
-      "temperature", 1,
-      [this, &value](const BlockContext& context, VectorRef temperature) {
-        const double k1 = context.parameter(k1_index_)[0];
-        if (params_.kind == TropismKind::kFixed) {
-          temperature[0] = k1 / 2.0;
-          return;
-        }
-        temperature[0] = k1 / (1.0 + std::exp(params_.k2 * context.input(value)[0]));
-      },
-      {&value},  // read by "value" only; "fixed" keeps the same topology
+  value_ = &declare_input_port("value", 1, "V(s_t)");
+  declare_output_port<&Tropism::calc_temperature>(
+      "temperature", 1, {value_},  // read by "value" only; "fixed" keeps the same topology
       params_.kind == TropismKind::kFixed ? "T = k1 / 2" : "T = k1 / (1 + exp(k2 V))");
+}
+
+void Tropism::calc_temperature(const BlockContext& context, VectorRef temperature) const {
+  const double k1 = context.parameter(k1_index_)[0];
+  if (params_.kind == TropismKind::kFixed) {
+    temperature[0] = k1 / 2.0;
+    return;
+  }
+  temperature[0] = k1 / (1.0 + std::exp(params_.k2 * context.input(*value_)[0]));
 }
 
 void Tropism::set_k1(Context& context, double k1) const {

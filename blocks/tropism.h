@@ -65,8 +65,12 @@ class Tropism final : public Block, public codegen::EmitsC {
   double k1(const Context& context) const;
 
  private:
+  // "temperature": T = k1 / (1 + exp(k2 V)), or k1 / 2 with kind fixed.
+  void calc_temperature(const BlockContext& context, VectorRef temperature) const;
+
   TropismParams params_;
   int k1_index_;
+  const InputPort* value_;
 };
 
 }  // namespace cbbg::blocks

@@ -6,10 +6,12 @@ namespace cbbg::environment {
 
 HeldAction::HeldAction(std::string name) : Block(std::move(name)) {
   declare_discrete_state("action", Vector::Zero(1), StateLifetime::kPerTrial);
-  declare_output_port(
-      "action", 1,
-      [](const BlockContext& context, VectorRef action) { action = context.discrete_state(); }, {},
-      "the action last set from outside, N m", OutputSources::kDiscreteState);
+  declare_output_port<&HeldAction::calc_action>(
+      "action", 1, {}, "the action last set from outside, N m", OutputSources::kDiscreteState);
+}
+
+void HeldAction::calc_action(const BlockContext& context, VectorRef action) const {
+  action = context.discrete_state();
 }
 
 void HeldAction::set(Context& context, double action) const {

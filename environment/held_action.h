@@ -23,6 +23,10 @@ class HeldAction final : public Block {
 
   // Writes `action` into this block's state in `context` (a context of the root diagram).
   void set(Context& context, double action) const;
+
+ private:
+  // "action": the discrete state, the last action set.
+  void calc_action(const BlockContext& context, VectorRef action) const;
 };
 
 }  // namespace cbbg::environment

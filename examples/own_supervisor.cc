@@ -56,21 +56,25 @@ struct SaturatedPdParams {
 class SaturatedPd final : public Block {
  public:
   SaturatedPd(std::string name, const SaturatedPdParams& gains, double limit)
-      : Block(std::move(name)) {
-    const InputPort& measured = declare_input_port("measured", blocks::kMeasuredSize);
-    declare_output_port("action", 1,
-                        [&measured, gains, limit](const BlockContext& context, VectorRef action) {
-                          const auto y = context.input(measured);
-                          const double wheel_speed =
-                              (y[blocks::kMeasuredPhiLeftDot] + y[blocks::kMeasuredPhiRightDot]) /
-                              2.0;
-                          const double law = gains.k_theta * y[blocks::kMeasuredThetaB] +
-                                             gains.k_dtheta * y[blocks::kMeasuredThetaBDot] +
-                                             gains.k_v * wheel_speed;
-                          action[0] = std::clamp(law, -limit, limit);
-                        },
-                        {&measured});
+      : Block(std::move(name)), gains_(gains), limit_(limit) {
+    measured_ = &declare_input_port("measured", blocks::kMeasuredSize);
+    declare_output_port<&SaturatedPd::calc_action>("action", 1, {measured_});
   }
+
+ private:
+  // "action": the PD law above, clamped to the limit.
+  void calc_action(const BlockContext& context, VectorRef action) const {
+    const auto y = context.input(*measured_);
+    const double wheel_speed =
+        (y[blocks::kMeasuredPhiLeftDot] + y[blocks::kMeasuredPhiRightDot]) / 2.0;
+    const double law = gains_.k_theta * y[blocks::kMeasuredThetaB] +
+                       gains_.k_dtheta * y[blocks::kMeasuredThetaBDot] + gains_.k_v * wheel_speed;
+    action[0] = std::clamp(law, -limit_, limit_);
+  }
+
+  SaturatedPdParams gains_;
+  double limit_;
+  const InputPort* measured_;
 };
 
 void render(const diagrams::Arm& arm, const parameters::Parameters& parameters,

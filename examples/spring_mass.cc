@@ -20,41 +20,63 @@ namespace {
 
 using cbbg::Block;
 using cbbg::BlockContext;
+using cbbg::InputPort;
 using cbbg::Vector;
 using cbbg::VectorRef;
 
 // x'' = (-k x - c x' + force) / m. Input "force" (1); output "state" = (x, x').
+//
+// The constructor declares; each calculation is a const member function of the block, named
+// in its declaration (declare_continuous_state<&MassSpring::calc_derivatives>). A lambda is
+// accepted too, where a block is as small as this one:
+//   declare_output_port("state", 2, [](const BlockContext& context, VectorRef y) { ... }, {});
 class MassSpring final : public Block {
  public:
   MassSpring(std::string name, double mass, double stiffness, double damping)
-      : Block(std::move(name)) {
-    const auto& force = declare_input_port("force", 1, "applied force, N");
-    declare_continuous_state(
-        Vector::Zero(2),
-        [&force, mass, stiffness, damping](const BlockContext& context, VectorRef derivatives) {
-          const auto x = context.continuous_state();
-          derivatives[0] = x[1];
-          derivatives[1] = (-stiffness * x[0] - damping * x[1] + context.input(force)[0]) / mass;
-        });
-    declare_output_port(
-        "state", 2,
-        [](const BlockContext& context, VectorRef y) { y = context.continuous_state(); }, {},
-        "position (m) and velocity (m/s)");
+      : Block(std::move(name)), mass_(mass), stiffness_(stiffness), damping_(damping) {
+    force_ = &declare_input_port("force", 1, "applied force, N");
+    declare_continuous_state<&MassSpring::calc_derivatives>(Vector::Zero(2));
+    declare_output_port<&MassSpring::calc_state>("state", 2, {}, "position (m) and velocity (m/s)");
   }
+
+ private:
+  // (x', x''): the equation above.
+  void calc_derivatives(const BlockContext& context, VectorRef derivatives) const {
+    const auto x = context.continuous_state();
+    derivatives[0] = x[1];
+    derivatives[1] = (-stiffness_ * x[0] - damping_ * x[1] + context.input(*force_)[0]) / mass_;
+  }
+  // "state": the continuous state; it reads no input directly (no feedthrough).
+  void calc_state(const BlockContext& context, VectorRef y) const {
+    y = context.continuous_state();
+  }
+
+  double mass_;
+  double stiffness_;
+  double damping_;
+  const InputPort* force_;
 };
 
 // force = kp (target - x) - kd x', read directly from the state (direct feedthrough).
 class PdController final : public Block {
  public:
-  PdController(std::string name, double target, double kp, double kd) : Block(std::move(name)) {
-    const auto& state = declare_input_port("state", 2);
-    declare_output_port("force", 1,
-                        [&state, target, kp, kd](const BlockContext& context, VectorRef force) {
-                          const auto x = context.input(state);
-                          force[0] = kp * (target - x[0]) - kd * x[1];
-                        },
-                        {&state});
+  PdController(std::string name, double target, double kp, double kd)
+      : Block(std::move(name)), target_(target), kp_(kp), kd_(kd) {
+    state_ = &declare_input_port("state", 2);
+    declare_output_port<&PdController::calc_force>("force", 1, {state_});
   }
+
+ private:
+  // "force": the PD law on the state.
+  void calc_force(const BlockContext& context, VectorRef force) const {
+    const auto x = context.input(*state_);
+    force[0] = kp_ * (target_ - x[0]) - kd_ * x[1];
+  }
+
+  double target_;
+  double kp_;
+  double kd_;
+  const InputPort* state_;
 };
 
 }  // namespace

@@ -136,6 +136,13 @@ const InputPort& Block::declare_input_port(std::string name, int size, std::stri
 const OutputPort& Block::declare_output_port(std::string name, int size, OutputFunction calc,
                                              std::vector<const InputPort*> reads,
                                              std::string description, OutputSources sources) {
+  return declare_output(std::move(name), size, OutputCalculation::callable(std::move(calc)),
+                        std::move(reads), std::move(description), sources);
+}
+
+const OutputPort& Block::declare_output(std::string name, int size, OutputCalculation calc,
+                                        std::vector<const InputPort*> reads,
+                                        std::string description, OutputSources sources) {
   check_new_port_name(name, size);
   for (const auto& port : outputs_) {
     if (port.name() == name) {
@@ -151,7 +158,7 @@ const OutputPort& Block::declare_output_port(std::string name, int size, OutputF
     }
     read_indices.push_back(input->index());
   }
-  output_functions_.push_back(std::move(calc));
+  output_calculations_.push_back(std::move(calc));
   output_reads_.push_back(std::move(read_indices));
   output_sources_.push_back(sources);
   return outputs_.emplace_back(*this, num_output_ports(), std::move(name), size,
@@ -198,6 +205,11 @@ const StatePart& Block::discrete_state_part(std::string_view name) const {
 
 void Block::declare_periodic_update(double period, double offset, UpdateFunction update,
                                     UpdateWrites writes) {
+  declare_periodic(period, offset, UpdateCalculation::callable(std::move(update)), writes);
+}
+
+void Block::declare_periodic(double period, double offset, UpdateCalculation update,
+                             UpdateWrites writes) {
   if (!std::isfinite(period) || period <= 0.0) {
     throw std::invalid_argument("block '" + path() +
                                 "': a periodic update needs a positive, finite period; got " +
@@ -223,7 +235,7 @@ void Block::declare_periodic_update(double period, double offset, UpdateFunction
 }
 
 void Block::declare_initialization_update(UpdateFunction update) {
-  init_updates_.push_back(std::move(update));
+  init_updates_.push_back(UpdateCalculation::callable(std::move(update)));
 }
 
 void Block::check_no_continuous_state() const {
@@ -233,12 +245,21 @@ void Block::check_no_continuous_state() const {
 }
 
 void Block::declare_continuous_state(Vector initial_value, DerivativeFunction derivatives) {
+  declare_derivatives(std::move(initial_value),
+                      DerivativeCalculation::callable(std::move(derivatives)));
+}
+
+void Block::declare_derivatives(Vector initial_value, DerivativeCalculation derivatives) {
   check_no_continuous_state();
   initial_continuous_state_ = std::move(initial_value);
   derivatives_ = std::move(derivatives);
 }
 
 void Block::declare_self_integrated_state(Vector initial_value, AdvanceFunction advance) {
+  declare_advance(std::move(initial_value), AdvanceCalculation::callable(std::move(advance)));
+}
+
+void Block::declare_advance(Vector initial_value, AdvanceCalculation advance) {
   check_no_continuous_state();
   initial_continuous_state_ = std::move(initial_value);
   advance_ = std::move(advance);

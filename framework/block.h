@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cbbg/framework/calculation.h"
 #include "cbbg/framework/port.h"
 #include "cbbg/framework/types.h"
 
@@ -41,15 +42,23 @@ class BlockScratch {
   virtual std::unique_ptr<BlockScratch> clone() const = 0;
 };
 
+// What a block calculates. Each is declared either as a named calculation, a const member
+// function of the block given as a template argument (declare_output_port<&Adder::calc_sum>), or
+// as a callable (a lambda) of the std::function type below; calculation.h says how each is called.
+
 // Computes an output port's value from the context. Must not change anything.
 using OutputFunction = std::function<void(const BlockContext&, VectorRef value)>;
+using OutputCalculation = Calculation<void, const BlockContext&, VectorRef>;
 // Writes the block's next discrete state; `next_state` holds the current one on entry. Every
 // update at one instant reads the values from before any of them ran.
 using UpdateFunction = std::function<EventStatus(BlockContext&, VectorRef next_state)>;
+using UpdateCalculation = Calculation<EventStatus, BlockContext&, VectorRef>;
 // Time derivatives of the block's continuous state, for the simulator's integrator.
 using DerivativeFunction = std::function<void(const BlockContext&, VectorRef derivatives)>;
+using DerivativeCalculation = Calculation<void, const BlockContext&, VectorRef>;
 // Advances a self-integrating block's continuous state to `end_time`; its inputs are held.
 using AdvanceFunction = std::function<void(BlockContext&, double end_time)>;
+using AdvanceCalculation = Calculation<void, BlockContext&, double>;
 
 // Where a periodic update writes its block's next discrete state.
 enum class UpdateWrites {
@@ -65,7 +74,7 @@ enum class UpdateWrites {
 struct PeriodicUpdate {
   double period;
   double offset;
-  UpdateFunction update;
+  UpdateCalculation update;
   UpdateWrites writes = UpdateWrites::kCopy;
 };
 
@@ -134,8 +143,8 @@ class Block {
   std::string output_port_names() const;
 
   // What a leaf block declared (empty for a Diagram).
-  const OutputFunction& output_function(int output_index) const {
-    return output_functions_[static_cast<std::size_t>(output_index)];
+  const OutputCalculation& output_calculation(int output_index) const {
+    return output_calculations_[static_cast<std::size_t>(output_index)];
   }
   // Inputs that the output reads directly (direct feedthrough), by input index.
   const std::vector<int>& output_reads(int output_index) const;
@@ -149,13 +158,13 @@ class Block {
   const StatePart& discrete_state_part(std::string_view name) const;
   const Vector& initial_continuous_state() const { return initial_continuous_state_; }
   bool has_continuous_state() const { return initial_continuous_state_.size() > 0; }
-  // True where the block advances its own continuous state (advance_function), false where
-  // the simulator integrates it from derivative_function.
+  // True where the block advances its own continuous state (advance_calculation), false where
+  // the simulator integrates it from derivative_calculation.
   bool integrates_itself() const { return static_cast<bool>(advance_); }
-  const DerivativeFunction& derivative_function() const { return derivatives_; }
-  const AdvanceFunction& advance_function() const { return advance_; }
+  const DerivativeCalculation& derivative_calculation() const { return derivatives_; }
+  const AdvanceCalculation& advance_calculation() const { return advance_; }
   const std::vector<PeriodicUpdate>& periodic_updates() const { return periodic_updates_; }
-  const std::vector<UpdateFunction>& initialization_updates() const { return init_updates_; }
+  const std::vector<UpdateCalculation>& initialization_updates() const { return init_updates_; }
   const std::vector<Parameter>& parameters() const { return parameters_; }
   // Index of the named parameter; an unknown name throws, listing the parameters.
   int parameter_index(std::string_view name) const;
@@ -166,7 +175,17 @@ class Block {
  protected:
   const InputPort& declare_input_port(std::string name, int size, std::string description = {});
   // `reads` lists the inputs the output reads directly; an output that reads only state lists
-  // none, which is what breaks feedback loops.
+  // none, which is what breaks feedback loops. `Calc` is a const member function
+  // void (const BlockContext&, VectorRef value) of the block.
+  template <auto Calc>
+  const OutputPort& declare_output_port(std::string name, int size,
+                                        std::vector<const InputPort*> reads,
+                                        std::string description = {},
+                                        OutputSources sources = OutputSources::kAnything) {
+    return declare_output(std::move(name), size, OutputCalculation::member<Calc>(*this),
+                          std::move(reads), std::move(description), sources);
+  }
+  // The same with a callable for a calculation.
   const OutputPort& declare_output_port(std::string name, int size, OutputFunction calc,
                                         std::vector<const InputPort*> reads,
                                         std::string description = {},
@@ -177,17 +196,45 @@ class Block {
   // Appends a named part to the discrete state and returns where it lies. Parts marked
   // kPerTrial are reset to `initial_value` at each trial; the others persist.
   StatePart declare_discrete_state(std::string name, Vector initial_value, StateLifetime lifetime);
+  // `Update` is a const member function EventStatus (BlockContext&, VectorRef next_state).
+  template <auto Update>
+  void declare_periodic_update(double period, double offset,
+                               UpdateWrites writes = UpdateWrites::kCopy) {
+    declare_periodic(period, offset, UpdateCalculation::member<Update>(*this), writes);
+  }
   void declare_periodic_update(double period, double offset, UpdateFunction update,
                                UpdateWrites writes = UpdateWrites::kCopy);
   // Runs once when a simulation is initialised, before the events at the initial time.
+  template <auto Update>
+  void declare_initialization_update() {
+    init_updates_.push_back(UpdateCalculation::member<Update>(*this));
+  }
   void declare_initialization_update(UpdateFunction update);
+  // `Derivatives` is a const member function void (const BlockContext&, VectorRef derivatives).
+  template <auto Derivatives>
+  void declare_continuous_state(Vector initial_value) {
+    declare_derivatives(std::move(initial_value),
+                        DerivativeCalculation::member<Derivatives>(*this));
+  }
   void declare_continuous_state(Vector initial_value, DerivativeFunction derivatives);
+  // `Advance` is a const member function void (BlockContext&, double end_time).
+  template <auto Advance>
+  void declare_self_integrated_state(Vector initial_value) {
+    declare_advance(std::move(initial_value), AdvanceCalculation::member<Advance>(*this));
+  }
   void declare_self_integrated_state(Vector initial_value, AdvanceFunction advance);
 
  private:
   friend class DiagramBuilder;
   friend class Diagram;  // a diagram that ends releases its children (~Diagram)
 
+  const OutputPort& declare_output(std::string name, int size, OutputCalculation calc,
+                                   std::vector<const InputPort*> reads, std::string description,
+                                   OutputSources sources);
+  void declare_periodic(double period, double offset, UpdateCalculation update,
+                        UpdateWrites writes);
+  void declare_derivatives(Vector initial_value, DerivativeCalculation derivatives);
+  void declare_advance(Vector initial_value, AdvanceCalculation advance);
   void check_new_port_name(const std::string& name, int size) const;
   void check_no_continuous_state() const;
 
@@ -196,16 +243,16 @@ class Block {
   // Deques keep port references valid as more ports are declared.
   std::deque<InputPort> inputs_;
   std::deque<OutputPort> outputs_;
-  std::vector<OutputFunction> output_functions_;
+  std::vector<OutputCalculation> output_calculations_;
   std::vector<std::vector<int>> output_reads_;
   std::vector<OutputSources> output_sources_;
   Vector initial_discrete_state_;
   std::vector<StatePart> state_parts_;
   Vector initial_continuous_state_;
-  DerivativeFunction derivatives_;
-  AdvanceFunction advance_;
+  DerivativeCalculation derivatives_;
+  AdvanceCalculation advance_;
   std::vector<PeriodicUpdate> periodic_updates_;
-  std::vector<UpdateFunction> init_updates_;
+  std::vector<UpdateCalculation> init_updates_;
   std::vector<Parameter> parameters_;
 };
 

@@ -2,6 +2,8 @@
 // BlockContext: one leaf block's view of a Context, handed to its output, update, derivative
 // and advance functions. Everything is a view into the context's storage: no copies.
 
+#include <cassert>
+
 #include "cbbg/framework/context.h"
 #include "cbbg/framework/layout.h"
 #include "cbbg/framework/port.h"
@@ -21,6 +23,16 @@ class BlockContext {
                            layout_->input_sizes[i]);
   }
   ConstVectorView input(const InputPort& port) const { return input(port.index()); }
+  // The same with the size fixed at compile time, for a port the block declared of that size:
+  // Eigen then unrolls what reads it (a plant's torques). The size is the block's promise,
+  // checked in debug builds only.
+  template <int Size>
+  Eigen::Map<const Eigen::Matrix<double, Size, 1>> input(const InputPort& port) const {
+    const auto i = static_cast<size_t>(port.index());
+    assert(layout_->input_sizes[i] == Size);
+    return Eigen::Map<const Eigen::Matrix<double, Size, 1>>(context_->signals().data() +
+                                                            layout_->input_offsets[i]);
+  }
 
   // In an update: this block's own output `port` as evaluated at this instant (every output
   // is evaluated before any update runs, simulator.h step 2), so an update can use a value
@@ -38,6 +50,13 @@ class BlockContext {
   ConstVectorView continuous_state() const {
     return ConstVectorView(context_->continuous_states().data() + layout_->continuous_offset,
                            layout_->block->initial_continuous_state().size());
+  }
+  // The same with the size fixed at compile time (checked in debug builds only).
+  template <int Size>
+  Eigen::Map<const Eigen::Matrix<double, Size, 1>> continuous_state() const {
+    assert(layout_->block->initial_continuous_state().size() == Size);
+    return Eigen::Map<const Eigen::Matrix<double, Size, 1>>(context_->continuous_states().data() +
+                                                            layout_->continuous_offset);
   }
   ConstVectorView parameter(int index) const {
     const auto size = layout_->block->parameters()[static_cast<size_t>(index)].default_value.size();

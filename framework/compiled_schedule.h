@@ -1,13 +1,17 @@
 #pragma once
 // CompiledSchedule: a simulation's per-tick work on one Context, laid out once, when the
 // simulator initialises, as flat arrays of calls on views into the context's storage.
-//  - Outputs: each call carries its block's view and its value's place, so no layout or
-//    offset is looked up per call.
+//  - Outputs: each call carries its calculation's function pointer and target (calculation.h),
+//    its block's view and its value's place, so nothing is looked up and no std::function is
+//    crossed per call.
 //  - Continuous inputs: the outputs that hold still between events
 //    (Diagram::interval_input_order) are computed once per interval, not at every stage of
 //    the integrator.
-//  - Updates: a block whose update writes in place (UpdateWrites::kInPlace) is spared the copy
-//    of its state; the others copy their own part only, not the whole state vector.
+//  - Updates: the updates due at an instant are laid out as a plan (UpdatePlan), once per
+//    group of events: the calls, the copies and the finiteness checks, each a flat array. A
+//    block whose update writes in place (UpdateWrites::kInPlace) is spared the copy of its
+//    state; the others copy their own part only, not the whole state vector. The finiteness
+//    check reads only the states the updates wrote.
 // Every value computed is the one the interpreted schedule computes (SimulatorOptions), bit for
 // bit: the same functions run on the same values, fewer times.
 
@@ -21,11 +25,42 @@
 
 namespace cbbg {
 
+// (leaf, update): the updates due at one instant, in leaf order.
+using Updates = std::vector<std::pair<int, const UpdateCalculation*>>;
+
+// The updates due at one instant as the compiled schedule runs them (CompiledSchedule::plan).
+class UpdatePlan {
+ private:
+  friend class CompiledSchedule;
+  struct Call {
+    UpdateCalculation::Direct update;
+    BlockContext view;
+    double* next;
+    Eigen::Index size;
+    const Block* block;
+  };
+  // A kCopy leaf's state and its next state, copied before the calls and back after them.
+  struct Copy {
+    double* state;
+    double* next;
+    Eigen::Index size;
+  };
+  // The committed states of leaves that lie back to back in the context, checked in one pass
+  // after the commit; the leaves are searched only when the pass fails.
+  struct Check {
+    const double* state;
+    Eigen::Index size;
+    std::size_t first_leaf;  // its leaves: checked_leaves_[first_leaf, end_leaf)
+    std::size_t end_leaf;
+  };
+  std::vector<Call> calls_;
+  std::vector<Copy> copies_;
+  std::vector<Check> checks_;
+  std::vector<std::pair<const Block*, Eigen::Index>> checked_leaves_;  // (block, state size)
+};
+
 class CompiledSchedule {
  public:
-  // (leaf, update): the updates due at one instant, in leaf order.
-  using Updates = std::vector<std::pair<int, const UpdateFunction*>>;
-
   // Lays out the calls for `context`, a context of `diagram`, whose storage must stay where
   // it is while the schedule runs (a Context's does: its sizes never change).
   void compile(const Diagram& diagram, Context& context);
@@ -40,19 +75,25 @@ class CompiledSchedule {
   // as the context's continuous state.
   void compute_derivatives(double* derivatives) const;
 
-  // Runs `updates` and commits their new states at once; reports the first that terminates.
-  // `terminated_by` is left alone when none does.
-  const char* run_updates(const Updates& updates, const Block** terminated_by) const;
+  // Lays out `updates` (of this schedule's diagram) as `plan`, reusing its storage: planning
+  // again for the same number of updates allocates nothing.
+  void plan(const Updates& updates, UpdatePlan& plan) const;
+  // Runs a plan's updates and commits their new states at once; reports the first that
+  // terminates. `terminated_by` is left alone when none does.
+  static const char* run_updates(const UpdatePlan& plan, const Block** terminated_by);
+  // The first leaf of the plan whose discrete state is not finite, or null: only the states
+  // the plan's updates wrote are read.
+  static const Block* first_non_finite_state(const UpdatePlan& plan);
 
  private:
   struct OutputCall {
-    const OutputFunction* calc;
+    OutputCalculation::Direct calc;
     BlockContext view;
     double* value;
     Eigen::Index size;
   };
   struct DerivativeCall {
-    const DerivativeFunction* derivatives;
+    DerivativeCalculation::Direct derivatives;
     BlockContext view;
     int offset;
     Eigen::Index size;
@@ -67,12 +108,10 @@ class CompiledSchedule {
   };
 
   static void run(const std::vector<OutputCall>& calls) {
-    for (const OutputCall& call : calls) (*call.calc)(call.view, VectorView(call.value, call.size));
+    for (const OutputCall& call : calls) call.calc(call.view, VectorView(call.value, call.size));
   }
   void compile_outputs(const Diagram& diagram, Context& context,
                        const std::vector<OutputSlot>& order, std::vector<OutputCall>& calls);
-  // Copies each kCopy leaf's state between its place and its next place, once per leaf.
-  void copy_states(const Updates& updates, bool commit) const;
 
   std::vector<OutputCall> outputs_;
   std::vector<OutputCall> interval_inputs_;

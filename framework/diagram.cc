@@ -54,7 +54,7 @@ void Diagram::evaluate(Context& context, const std::vector<OutputSlot>& order) c
     const LeafLayout& leaf = leaves_[static_cast<size_t>(slot.leaf)];
     const BlockContext view(context, leaf);
     const auto port = static_cast<size_t>(slot.port);
-    leaf.block->output_function(slot.port)(
+    leaf.block->output_calculation(slot.port)(
         view, VectorView(signals + leaf.output_offsets[port], leaf.output_sizes[port]));
   }
 }

@@ -8,6 +8,7 @@
 
 #include "cbbg/framework/block_context.h"
 #include "cbbg/framework/interrupt.h"
+#include "cbbg/framework/short_vectors.h"
 
 namespace cbbg {
 namespace odeint = boost::numeric::odeint;
@@ -16,10 +17,6 @@ namespace {
 
 constexpr double kSimultaneous = 1e-9;  // relative tolerance for simultaneous events
 constexpr double kFirstStep = 1e-3;     // the integrator's first trial step, s
-
-// True when no element is NaN or infinite: x * 0 is 0 for a finite x and NaN otherwise,
-// and the sum is a loop the compiler vectorises, unlike a test per element.
-bool all_finite(const Vector& x) { return (x.array() * 0.0).sum() == 0.0; }
 
 bool same_instant(double a, double b) {
   return std::abs(a - b) <= kSimultaneous * std::max(1.0, std::abs(b));
@@ -101,7 +98,7 @@ Simulator::EventGroup& Simulator::group_of(double period, double offset, long lo
   for (EventGroup& group : groups_) {
     if (group.period == period && group.offset == offset && group.next == next) return group;
   }
-  return groups_.emplace_back(EventGroup{period, offset, next, {}, {}});
+  return groups_.emplace_back(EventGroup{period, offset, next, {}, {}, {}});
 }
 
 void Simulator::schedule_events() {
@@ -128,15 +125,15 @@ void Simulator::find_next_event() {
   for (const auto& group : groups_) next_event_ = std::min(next_event_, group.next_time());
 }
 
-SimulationStatus Simulator::run_updates(const Updates& updates) {
+SimulationStatus Simulator::run_updates(const Updates& updates, const UpdatePlan& plan) {
   if (options_.schedule == Schedule::kInterpreted) return run_interpreted_updates(updates);
   SimulationStatus status;
-  const char* reason = compiled_.run_updates(updates, &status.terminated_by);
+  const char* reason = CompiledSchedule::run_updates(plan, &status.terminated_by);
   if (reason != nullptr) {
     status.terminated = true;
     status.reason = reason;
   }
-  check_discrete_state_finite(updates);
+  check_discrete_state_finite(CompiledSchedule::first_non_finite_state(plan));
   return status;
 }
 
@@ -158,7 +155,7 @@ SimulationStatus Simulator::run_interpreted_updates(const Updates& updates) {
   }
   // Swapped, not copied back: the two buffers trade places at every instant.
   context.discrete_states().swap(context.next_discrete_states());
-  check_discrete_state_finite(updates);
+  check_discrete_state_finite(first_non_finite_state(updates));
   return status;
 }
 
@@ -170,19 +167,27 @@ void Simulator::evaluate_outputs() {
   }
 }
 
-void Simulator::check_discrete_state_finite(const Updates& updates) const {
+void Simulator::check_discrete_state_finite(const Block* culprit) const {
+  if (culprit != nullptr) {
+    throw SimulationError(
+        "block '" + culprit->path() +
+        "': discrete state became non-finite at t = " + std::to_string(context_->time()));
+  }
+}
+
+const Block* Simulator::first_non_finite_state(const Updates& updates) const {
   // One vectorised pass over the whole state on every instant; the search for the block
   // only when it fails.
-  if (all_finite(context_->discrete_states())) return;
+  const Vector& state = context_->discrete_states();
+  if (all_finite(state.data(), state.size())) return nullptr;
   for (const auto& [leaf_index, update] : updates) {
     const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(leaf_index)];
     const auto size = leaf.block->initial_discrete_state().size();
     if (!context_->discrete_states().segment(leaf.discrete_offset, size).allFinite()) {
-      throw SimulationError(
-          "block '" + leaf.block->path() +
-          "': discrete state became non-finite at t = " + std::to_string(context_->time()));
+      return leaf.block;
     }
   }
+  return nullptr;
 }
 
 SimulationStatus Simulator::initialize() {
@@ -205,41 +210,65 @@ SimulationStatus Simulator::initialize() {
     diagram_->evaluate_outputs(*context_);
     last_status_ = run_interpreted_updates(due_updates_);
   }
-  if (options_.schedule == Schedule::kCompiled) compiled_.compile(*diagram_, *context_);
+  if (options_.schedule == Schedule::kCompiled) {
+    compiled_.compile(*diagram_, *context_);
+    plan_groups();
+  }
   last_status_.time = context_->time();
   terminated_ = last_status_.terminated;
   initialized_ = true;
   return last_status_;
 }
 
+void Simulator::plan_groups() {
+  for (EventGroup& group : groups_) compiled_.plan(group.updates, group.plan);
+}
+
 SimulationStatus Simulator::handle_events(double time) {
   ++num_event_instants_;
-  Context& context = *context_;
   evaluate_outputs();
-  const Updates* due = nullptr;  // one group's list, or due_updates_ when groups coincide
+  if (groups_.size() == 1) return handle_single_group(time);
+  const EventGroup* due = nullptr;  // the one group due, unless groups coincide
+  bool coincide = false;            // then due_updates_ lists their updates
   next_event_ = std::numeric_limits<double>::infinity();  // found in the same pass
   for (EventGroup& group : groups_) {
     if (same_instant(group.next_time(), time)) {
       ++group.next;
-      for (const int l : group.logs) {
-        logs_[static_cast<size_t>(l)].record(
-            time, context.signals().data() + log_offsets_[static_cast<size_t>(l)]);
-      }
+      record_logs(group, time);
       if (!group.updates.empty() && due == nullptr) {
-        due = &group.updates;
+        due = &group;
       } else if (!group.updates.empty()) {
-        if (due != &due_updates_) due_updates_.assign(due->begin(), due->end());
+        if (!coincide) due_updates_.assign(due->updates.begin(), due->updates.end());
         due_updates_.insert(due_updates_.end(), group.updates.begin(), group.updates.end());
-        due = &due_updates_;
+        coincide = true;
       }
     }
     next_event_ = std::min(next_event_, group.next_time());
   }
   if (due == nullptr) return SimulationStatus{};
+  if (!coincide) return run_updates(due->updates, due->plan);
   // Coinciding groups run in leaf order, each leaf's updates in declaration order (an
-  // update's function lives in its leaf's array, so the pointers order them).
-  if (due == &due_updates_) std::sort(due_updates_.begin(), due_updates_.end());
-  return run_updates(*due);
+  // update's calculation lives in its leaf's array, so the pointers order them).
+  std::sort(due_updates_.begin(), due_updates_.end());
+  if (options_.schedule == Schedule::kCompiled) compiled_.plan(due_updates_, due_plan_);
+  return run_updates(due_updates_, due_plan_);
+}
+
+SimulationStatus Simulator::handle_single_group(double time) {
+  // A single-rate diagram: its one group is due whenever an instant is.
+  EventGroup& group = groups_.front();
+  ++group.next;
+  next_event_ = group.next_time();
+  if (!group.logs.empty()) record_logs(group, time);
+  if (group.updates.empty()) return SimulationStatus{};
+  return run_updates(group.updates, group.plan);
+}
+
+void Simulator::record_logs(const EventGroup& group, double time) {
+  for (const int l : group.logs) {
+    logs_[static_cast<size_t>(l)].record(
+        time, context_->signals().data() + log_offsets_[static_cast<size_t>(l)]);
+  }
 }
 
 SimulationStatus Simulator::advance_to(double end_time) {
@@ -286,7 +315,7 @@ void Simulator::integrate_to(double end_time) {
   for (const int index : diagram_->self_integrating_leaves()) {
     const LeafLayout& leaf = diagram_->leaves()[static_cast<size_t>(index)];
     BlockContext view(context, leaf);
-    leaf.block->advance_function()(view, end_time);
+    leaf.block->advance_calculation()(view, end_time);
     context.set_time(start_time);
   }
   if (diagram_->ode_size() > 0) integrate_ode(start_time, end_time);
@@ -321,9 +350,9 @@ void Simulator::integrate_ode(double start_time, double end_time) {
     for (const int index : diagram.ode_leaves()) {
       const LeafLayout& leaf = diagram.leaves()[static_cast<size_t>(index)];
       const BlockContext view(context, leaf);
-      leaf.block->derivative_function()(view,
-                                        VectorView(dxdt.data() + leaf.continuous_offset,
-                                                   leaf.block->initial_continuous_state().size()));
+      leaf.block->derivative_calculation()(
+          view, VectorView(dxdt.data() + leaf.continuous_offset,
+                           leaf.block->initial_continuous_state().size()));
     }
   };
 

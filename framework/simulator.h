@@ -105,7 +105,6 @@ class Simulator {
   long long num_event_instants() const { return num_event_instants_; }
 
  private:
-  using Updates = std::vector<std::pair<int, const UpdateFunction*>>;  // (leaf, update)
   // The events of one period, offset and next instant: they always fire together, so the
   // updates and logs due at an instant are listed once, at initialize(), not every tick.
   struct EventGroup {
@@ -113,6 +112,7 @@ class Simulator {
     double offset;
     long long next;   // fires next at offset + next * period
     Updates updates;  // in leaf order, each leaf's in declaration order
+    UpdatePlan plan;  // the updates laid out for the compiled schedule
     std::vector<int> logs;
     double next_time() const { return offset + static_cast<double>(next) * period; }
   };
@@ -123,14 +123,23 @@ class Simulator {
   // The earliest instant of any group, into next_event_ (handle_events keeps it as it goes).
   void find_next_event();
   SimulationStatus handle_events(double time);
+  // handle_events for a diagram whose events form one group: no search, no merge.
+  SimulationStatus handle_single_group(double time);
+  void record_logs(const EventGroup& group, double time);
   void integrate_to(double end_time);
   void integrate_ode(double start_time, double end_time);
   void check_continuous_state_finite() const;
   // The group of (period, offset, next), added at the end if there is none.
   EventGroup& group_of(double period, double offset, long long next);
-  void check_discrete_state_finite(const Updates& updates) const;
-  SimulationStatus run_updates(const Updates& updates);
+  // Throws naming `culprit`, the first updated block whose state is not finite, if any.
+  void check_discrete_state_finite(const Block* culprit) const;
+  // The interpreted schedule's search: the first updated leaf whose state is not finite.
+  const Block* first_non_finite_state(const Updates& updates) const;
+  // Runs the updates of one group (`plan` laid out from `updates` for the compiled schedule).
+  SimulationStatus run_updates(const Updates& updates, const UpdatePlan& plan);
   SimulationStatus run_interpreted_updates(const Updates& updates);
+  // Lays out each group's updates for the compiled schedule.
+  void plan_groups();
   void evaluate_outputs();
 
   const Diagram* diagram_;
@@ -141,6 +150,7 @@ class Simulator {
   std::vector<EventGroup> groups_;
   double next_event_ = 0.0;
   Updates due_updates_;  // initialization updates, or those of groups due together
+  UpdatePlan due_plan_;  // due_updates_ laid out, when groups coincide
   std::unique_ptr<Integrator> integrator_;
   CompiledSchedule compiled_;  // laid out at initialize() when options_.schedule is kCompiled
   bool initialized_ = false;

@@ -22,7 +22,9 @@ enum ContinuousIndex : int {
 
 using Output = Eigen::Matrix<double, kStateSize, 1>;
 
-Output to_output(const RobotParams& params, const ConstVectorView& x) {
+// x: the continuous state, a view of any size type.
+template <typename State>
+Output to_output(const RobotParams& params, const State& x) {
   Output y;
   y[kThetaB] = x[kQ];
   y[kThetaBDot] = x[kQDot];
@@ -61,42 +63,45 @@ AnalyticPlant::AnalyticPlant(std::string name, const RobotParams& params, double
                              DisturbanceInput disturbance)
     : RobotPlant(std::move(name)), params_(params) {
   params_.validate();
-  const InputPort& torque = declare_input_port(
-      "torque", kTorqueSize, "tau_l, tau_r: motor torques body -> wheel, N m (saturated here)");
-  const InputPort* pushed = declare_disturbance_input(disturbance);
-  declare_output_port(
-      "state", kStateSize,
-      [this](const BlockContext& context, VectorRef y) {
-        y = to_output(params_, context.continuous_state());
-      },
-      {}, "theta_b, theta_b', phi_l, phi_r, phi_l', phi_r', x, y, yaw, yaw rate");
-  declare_continuous_state(
-      to_continuous(initial_state_vector(initial_pitch)),
-      [this, &torque, pushed](const BlockContext& context, VectorRef x_dot) {
-        const ConstVectorView tau = context.input(torque);
-        // One inline test at every stage; the call that names the culprit only when it fails
-        // (a sum of finite torques is finite unless they are huge, which the call then clears).
-        if (!std::isfinite(tau[kTauLeft] + tau[kTauRight])) check_torque_finite(*this, tau);
-        const ConstVectorView x = context.continuous_state();
-        if (!x.allFinite()) {
-          const Output y = to_output(params_, x);
-          check_state_finite(*this, ConstVectorView(y.data(), kStateSize), context.time());
-        }
-        const Coordinates q = x.segment<3>(kQ);
-        const Coordinates q_dot = x.segment<3>(kQDot);
-        const Torques applied =
-            saturate_torque(Torques(tau[kTauLeft], tau[kTauRight]), params_.torque_limit);
-        const double v = forward_speed(params_, q_dot[1], q_dot[2]);
-        const double yaw = x[kPose + 2];
-        x_dot.segment<3>(kQ) = q_dot;
-        const std::optional<Coordinates> external =
-            external_forces(*this, params_, context, pushed, q[0]);
-        x_dot.segment<3>(kQDot) = external ? accelerations(params_, q, q_dot, applied, *external)
-                                           : accelerations(params_, q, q_dot, applied);
-        x_dot[kPose] = v * std::cos(yaw);
-        x_dot[kPose + 1] = v * std::sin(yaw);
-        x_dot[kPose + 2] = yaw_rate(params_, q_dot[1], q_dot[2]);
-      });
+  torque_ = &declare_input_port("torque", kTorqueSize,
+                                "tau_l, tau_r: motor torques body -> wheel, N m (saturated here)");
+  disturbance_ = declare_disturbance_input(disturbance);
+  declare_output_port<&AnalyticPlant::calc_state>(
+      "state", kStateSize, {},
+      "theta_b, theta_b', phi_l, phi_r, phi_l', phi_r', x, y, yaw, yaw rate");
+  declare_continuous_state<&AnalyticPlant::calc_derivatives>(
+      to_continuous(initial_state_vector(initial_pitch)));
+}
+
+void AnalyticPlant::calc_state(const BlockContext& context, VectorRef y) const {
+  y = to_output(params_, context.continuous_state<kContinuousSize>());
+}
+
+void AnalyticPlant::calc_derivatives(const BlockContext& context, VectorRef x_dot) const {
+  // Fixed-size views: Eigen unrolls the reads and the finiteness test below.
+  const auto tau = context.input<kTorqueSize>(*torque_);
+  // One inline test at every stage; the call that names the culprit only when it fails
+  // (a sum of finite torques is finite unless they are huge, which the call then clears).
+  if (!std::isfinite(tau[kTauLeft] + tau[kTauRight])) check_torque_finite(*this, tau);
+  const auto x = context.continuous_state<kContinuousSize>();
+  if (!x.allFinite()) {
+    const Output y = to_output(params_, x);
+    check_state_finite(*this, ConstVectorView(y.data(), kStateSize), context.time());
+  }
+  const Coordinates q = x.segment<3>(kQ);
+  const Coordinates q_dot = x.segment<3>(kQDot);
+  const Torques applied =
+      saturate_torque(Torques(tau[kTauLeft], tau[kTauRight]), params_.torque_limit);
+  const double v = forward_speed(params_, q_dot[1], q_dot[2]);
+  const double yaw = x[kPose + 2];
+  x_dot.segment<3>(kQ) = q_dot;
+  const std::optional<Coordinates> external =
+      external_forces(*this, params_, context, disturbance_, q[0]);
+  x_dot.segment<3>(kQDot) = external ? accelerations(params_, q, q_dot, applied, *external)
+                                     : accelerations(params_, q, q_dot, applied);
+  x_dot[kPose] = v * std::cos(yaw);
+  x_dot[kPose + 1] = v * std::sin(yaw);
+  x_dot[kPose + 2] = yaw_rate(params_, q_dot[1], q_dot[2]);
 }
 
 void AnalyticPlant::reset(Context& context, double initial_pitch) const {

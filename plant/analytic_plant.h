@@ -51,7 +51,16 @@ class AnalyticPlant final : public RobotPlant {
   void set_state(Context& context, const Vector& state) const;
 
  private:
+  // "state": the continuous state in the output layout (plant_ports.h), the yaw rate from the
+  // wheel rates.
+  void calc_state(const BlockContext& context, VectorRef y) const;
+  // The equations of motion of the class comment, the torque saturated, the disturbance's
+  // forces added when there is one; throws on a non-finite torque or state.
+  void calc_derivatives(const BlockContext& context, VectorRef x_dot) const;
+
   RobotParams params_;
+  const InputPort* torque_;
+  const InputPort* disturbance_;  // null without DisturbanceInput::kDeclared
 };
 
 }  // namespace cbbg::plant

@@ -58,43 +58,46 @@ SimbodyPlant::SimbodyPlant(std::string name, const RobotParams& params, double i
                            DisturbanceInput disturbance)
     : RobotPlant(std::move(name)), params_(params) {
   params_.validate_rigid_bodies();
-  const InputPort& torque = declare_input_port(
-      "torque", kTorqueSize, "tau_l, tau_r: motor torques body -> wheel, N m (saturated here)");
-  const InputPort* pushed = declare_disturbance_input(disturbance);
-  declare_output_port(
-      "state", kStateSize,
-      [](const BlockContext& context, VectorRef y) { y = context.continuous_state(); }, {},
+  torque_ = &declare_input_port("torque", kTorqueSize,
+                                "tau_l, tau_r: motor torques body -> wheel, N m (saturated here)");
+  disturbance_ = declare_disturbance_input(disturbance);
+  declare_output_port<&SimbodyPlant::calc_state>(
+      "state", kStateSize, {},
       "theta_b, theta_b', phi_l, phi_r, phi_l', phi_r', x, y, yaw, yaw rate");
-  declare_self_integrated_state(
-      initial_state_vector(initial_pitch),
-      [this, &torque, pushed](BlockContext& context, double end_time) {
-        const ConstVectorView tau = context.input(torque);
-        check_torque_finite(*this, tau);
-        Scratch& scratch = context.scratch<Scratch>();
-        VectorView state = context.mutable_continuous_state();
-        const double start_time = context.time();
-        scratch.sync(*this, start_time, state);
-        const Torques applied =
-            saturate_torque(Torques(tau[kTauLeft], tau[kTauRight]), params_.torque_limit);
-        scratch.run.set_torque(applied[kTauLeft], applied[kTauRight]);
-        if (pushed != nullptr) {
-          const ConstVectorView push = context.input(*pushed);
-          check_disturbance_finite(*this, push);
-          scratch.run.set_disturbance(push[kPushForce], push[kPushPitchTorque]);
-        }
-        try {
-          scratch.run.advance_to(end_time);
-        } catch (const std::exception& error) {
-          scratch.synced_time = std::numeric_limits<double>::quiet_NaN();  // restart next time
-          throw SimulationError("block '" + path() + "': Simbody could not advance from t = " +
-                                format_number(start_time) + " to " + format_number(end_time) +
-                                ": " + error.what());
-        }
-        scratch.run.get_state(state);
-        check_state_finite(*this, state, end_time);
-        scratch.synced_time = end_time;
-        scratch.synced_state = state;
-      });
+  declare_self_integrated_state<&SimbodyPlant::advance>(initial_state_vector(initial_pitch));
+}
+
+void SimbodyPlant::calc_state(const BlockContext& context, VectorRef y) const {
+  y = context.continuous_state();
+}
+
+void SimbodyPlant::advance(BlockContext& context, double end_time) const {
+  const ConstVectorView tau = context.input(*torque_);
+  check_torque_finite(*this, tau);
+  Scratch& scratch = context.scratch<Scratch>();
+  VectorView state = context.mutable_continuous_state();
+  const double start_time = context.time();
+  scratch.sync(*this, start_time, state);
+  const Torques applied =
+      saturate_torque(Torques(tau[kTauLeft], tau[kTauRight]), params_.torque_limit);
+  scratch.run.set_torque(applied[kTauLeft], applied[kTauRight]);
+  if (disturbance_ != nullptr) {
+    const ConstVectorView push = context.input(*disturbance_);
+    check_disturbance_finite(*this, push);
+    scratch.run.set_disturbance(push[kPushForce], push[kPushPitchTorque]);
+  }
+  try {
+    scratch.run.advance_to(end_time);
+  } catch (const std::exception& error) {
+    scratch.synced_time = std::numeric_limits<double>::quiet_NaN();  // restart next time
+    throw SimulationError("block '" + path() +
+                          "': Simbody could not advance from t = " + format_number(start_time) +
+                          " to " + format_number(end_time) + ": " + error.what());
+  }
+  scratch.run.get_state(state);
+  check_state_finite(*this, state, end_time);
+  scratch.synced_time = end_time;
+  scratch.synced_state = state;
 }
 
 SimbodyPlant::~SimbodyPlant() = default;

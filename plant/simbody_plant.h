@@ -69,9 +69,18 @@ class SimbodyPlant final : public RobotPlant {
 
  private:
   class Scratch;
+
+  // "state": the continuous state itself.
+  void calc_state(const BlockContext& context, VectorRef y) const;
+  // Advances the multibody system to `end_time` with the saturated torque (and the
+  // disturbance) held, restarting the scratch's run first when the context moved elsewhere.
+  void advance(BlockContext& context, double end_time) const;
+
   Scratch& synced_scratch(Context& context) const;
 
   RobotParams params_;
+  const InputPort* torque_;
+  const InputPort* disturbance_;  // null without DisturbanceInput::kDeclared
 };
 
 }  // namespace cbbg::plant

@@ -34,10 +34,15 @@ class RemotePlant final : public plant::RobotPlant {
   RobotLink& link() const { return *link_; }
 
  private:
-  void advance(BlockContext& context, double end_time, const InputPort& torque) const;
+  // "state": the continuous state, the last measurement.
+  void calc_state(const BlockContext& context, VectorRef y) const;
+  // Sends the held torque and waits for the robot's next measurement, its new state; refuses
+  // a step that is not one whole period.
+  void advance(BlockContext& context, double end_time) const;
 
   std::unique_ptr<RobotLink> link_;  // one session per plant, opened at its first trial
   plant::RobotParams robot_;
+  const InputPort* torque_;
 };
 
 }  // namespace cbbg::realtime

@@ -53,30 +53,10 @@ inline CartPoleParams cart_pole_params(const cbbg::parameters::Parameters& param
 class CartPole final : public cbbg::plant::RobotPlant {
  public:
   CartPole(std::string name, const CartPoleParams& p) : RobotPlant(std::move(name)), p_(p) {
-    const cbbg::InputPort& torque = declare_input_port("torque", 2);
-    declare_continuous_state(
-        cbbg::Vector::Zero(4),  // theta, phi, theta', phi'
-        [this, &torque](const cbbg::BlockContext& context, cbbg::VectorRef d) {
-          const auto u = context.input(torque);
-          const double tau = std::clamp(u[0], -p_.torque_limit, p_.torque_limit) +
-                             std::clamp(u[1], -p_.torque_limit, p_.torque_limit);
-          const auto s = context.continuous_state();
-          const double sin = std::sin(s[0]), cos = std::cos(s[0]);
-          const double ml = p_.pole_mass * p_.pole_length;
-          const double cart = tau / p_.wheel_radius + ml * sin * s[2] * s[2];
-          const double pole = ml * p_.gravity * sin - tau;
-          const double det =
-              (p_.cart_mass + p_.pole_mass) * ml * p_.pole_length - ml * ml * cos * cos;
-          const double x_dd = (cart * ml * p_.pole_length - ml * cos * pole) / det;
-          const double theta_dd = ((p_.cart_mass + p_.pole_mass) * pole - ml * cos * cart) / det;
-          d << s[2], s[3], theta_dd, x_dd / p_.wheel_radius;
-        });
-    declare_output_port("state", 5,
-                        [this](const cbbg::BlockContext& context, cbbg::VectorRef y) {
-                          const auto s = context.continuous_state();
-                          y << s[0], s[2], s[1], s[3], p_.wheel_radius * s[1];
-                        },
-                        {});
+    torque_ = &declare_input_port("torque", 2);
+    declare_continuous_state<&CartPole::calc_derivatives>(
+        cbbg::Vector::Zero(4));  // theta, phi, theta', phi'
+    declare_output_port<&CartPole::calc_state>("state", 5, {});
   }
 
   std::vector<std::string> signals() const override {
@@ -104,7 +84,29 @@ class CartPole final : public cbbg::plant::RobotPlant {
   }
 
  private:
+  // The equations of motion above, each wheel's torque clamped to the limit.
+  void calc_derivatives(const cbbg::BlockContext& context, cbbg::VectorRef d) const {
+    const auto u = context.input(*torque_);
+    const double tau = std::clamp(u[0], -p_.torque_limit, p_.torque_limit) +
+                       std::clamp(u[1], -p_.torque_limit, p_.torque_limit);
+    const auto s = context.continuous_state();
+    const double sin = std::sin(s[0]), cos = std::cos(s[0]);
+    const double ml = p_.pole_mass * p_.pole_length;
+    const double cart = tau / p_.wheel_radius + ml * sin * s[2] * s[2];
+    const double pole = ml * p_.gravity * sin - tau;
+    const double det = (p_.cart_mass + p_.pole_mass) * ml * p_.pole_length - ml * ml * cos * cos;
+    const double x_dd = (cart * ml * p_.pole_length - ml * cos * pole) / det;
+    const double theta_dd = ((p_.cart_mass + p_.pole_mass) * pole - ml * cos * cart) / det;
+    d << s[2], s[3], theta_dd, x_dd / p_.wheel_radius;
+  }
+  // "state": pitch, pitch_rate, wheel, wheel_rate, x from the continuous state.
+  void calc_state(const cbbg::BlockContext& context, cbbg::VectorRef y) const {
+    const auto s = context.continuous_state();
+    y << s[0], s[2], s[1], s[3], p_.wheel_radius * s[1];
+  }
+
   CartPoleParams p_;
+  const cbbg::InputPort* torque_;
 };
 
 // Linearised upright at rest, both wheels driven alike: x = (theta, phi, theta', phi'), u the

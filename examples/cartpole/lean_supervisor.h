@@ -34,21 +34,25 @@ struct LeanPdParams {
 /// phi the mean of the measured wheel angles. Input "measured" (6), output "action" (1).
 class LeanPd final : public cbbg::Block {
  public:
-  LeanPd(std::string name, const LeanPdParams& k) : Block(std::move(name)) {
-    using namespace cbbg::blocks;
-    const cbbg::InputPort& measured = declare_input_port("measured", kMeasuredSize);
-    declare_output_port(
-        "action", 1,
-        [&measured, k](const cbbg::BlockContext& context, cbbg::VectorRef action) {
-          const auto y = context.input(measured);
-          const double phi = (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0;
-          const double dphi = (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
-          const double law = k.k_theta * y[kMeasuredThetaB] + k.k_dtheta * y[kMeasuredThetaBDot] +
-                             k.k_phi * phi + k.k_dphi * dphi;
-          action[0] = std::clamp(law, -k.limit, k.limit);
-        },
-        {&measured});
+  LeanPd(std::string name, const LeanPdParams& k) : Block(std::move(name)), k_(k) {
+    measured_ = &declare_input_port("measured", cbbg::blocks::kMeasuredSize);
+    declare_output_port<&LeanPd::calc_action>("action", 1, {measured_});
   }
+
+ private:
+  // "action": the clamped PD law above.
+  void calc_action(const cbbg::BlockContext& context, cbbg::VectorRef action) const {
+    using namespace cbbg::blocks;
+    const auto y = context.input(*measured_);
+    const double phi = (y[kMeasuredPhiLeft] + y[kMeasuredPhiRight]) / 2.0;
+    const double dphi = (y[kMeasuredPhiLeftDot] + y[kMeasuredPhiRightDot]) / 2.0;
+    const double law = k_.k_theta * y[kMeasuredThetaB] + k_.k_dtheta * y[kMeasuredThetaBDot] +
+                       k_.k_phi * phi + k_.k_dphi * dphi;
+    action[0] = std::clamp(law, -k_.limit, k_.limit);
+  }
+
+  LeanPdParams k_;
+  const cbbg::InputPort* measured_;
 };
 
 inline void register_lean_pd() { cbbg::config::register_section<LeanPdParams>("lean_pd"); }

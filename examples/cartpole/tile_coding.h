@@ -31,29 +31,37 @@ struct TileParams {
 /// in each grid, the tile holding x is 1 / tilings, the rest 0.
 class TileCoding final : public cbbg::Block, public cbbg::blocks::DescribesLayout {
  public:
-  TileCoding(std::string name, const TileParams& p) : Block(std::move(name)), p_(p) {
-    const int n = static_cast<int>(p.per_axis), grids = static_cast<int>(p.tilings);
-    const cbbg::InputPort& x = declare_input_port("x", 2);
-    declare_output_port("features", grids * n * n,
-                        [&x, n, grids](const cbbg::BlockContext& context, cbbg::VectorRef phi) {
-                          const auto v = context.input(x);
-                          phi.setZero();
-                          for (int g = 0; g < grids; ++g) {
-                            const double offset = static_cast<double>(g) / grids;  // in tiles
-                            auto tile = [n, offset](double value) {
-                              const int i = static_cast<int>((value + 3.0) / 6.0 * n + offset);
-                              return std::clamp(i, 0, n - 1);
-                            };
-                            phi[g * n * n + tile(v[0]) * n + tile(v[1])] = 1.0 / grids;
-                          }
-                        },
-                        {&x});
+  TileCoding(std::string name, const TileParams& p)
+      : Block(std::move(name)),
+        p_(p),
+        n_(static_cast<int>(p.per_axis)),
+        grids_(static_cast<int>(p.tilings)) {
+    x_ = &declare_input_port("x", 2);
+    declare_output_port<&TileCoding::calc_features>("features", grids_ * n_ * n_, {x_});
   }
 
   cbbg::blocks::FeatureLayout layout() const override { return cbbg::blocks::declared_layout(p_); }
 
  private:
+  // "features": in each grid, 1 / tilings at the tile holding x.
+  void calc_features(const cbbg::BlockContext& context, cbbg::VectorRef phi) const {
+    const int n = n_, grids = grids_;
+    const auto v = context.input(*x_);
+    phi.setZero();
+    for (int g = 0; g < grids; ++g) {
+      const double offset = static_cast<double>(g) / grids;  // in tiles
+      auto tile = [n, offset](double value) {
+        const int i = static_cast<int>((value + 3.0) / 6.0 * n + offset);
+        return std::clamp(i, 0, n - 1);
+      };
+      phi[g * n * n + tile(v[0]) * n + tile(v[1])] = 1.0 / grids;
+    }
+  }
+
   TileParams p_;
+  int n_;      // tiles per axis
+  int grids_;  // tilings
+  const cbbg::InputPort* x_;
 };
 
 inline void register_tiles() { cbbg::config::register_section<TileParams>(TileParams::kSection); }

@@ -15,17 +15,22 @@ namespace own_blocks {
 class PitchCostReward final : public cbbg::Block {
  public:
   PitchCostReward(std::string name, const cbbg::parameters::Parameters& p)
-      : Block(std::move(name)) {
-    const double failure_angle = p.trial.failure_angle;
-    const auto& measured = declare_input_port("measured", cbbg::blocks::kMeasuredSize);
-    const auto& failed = declare_input_port("failed", 1);
-    declare_output_port("reward", 1,
-                        [=, &measured, &failed](const cbbg::BlockContext& c, cbbg::VectorRef r) {
-                          const double pitch = c.input(measured)[cbbg::blocks::kMeasuredThetaB];
-                          r[0] = c.input(failed)[0] > 0.5 ? -1.0 : -std::abs(pitch) / failure_angle;
-                        },
-                        {&measured, &failed});
+      : Block(std::move(name)), failure_angle_(p.trial.failure_angle) {
+    measured_ = &declare_input_port("measured", cbbg::blocks::kMeasuredSize);
+    failed_ = &declare_input_port("failed", 1);
+    declare_output_port<&PitchCostReward::calc_reward>("reward", 1, {measured_, failed_});
   }
+
+ private:
+  // "reward": -1 when the trial fails, else -|theta_b| / failure_angle.
+  void calc_reward(const cbbg::BlockContext& c, cbbg::VectorRef r) const {
+    const double pitch = c.input(*measured_)[cbbg::blocks::kMeasuredThetaB];
+    r[0] = c.input(*failed_)[0] > 0.5 ? -1.0 : -std::abs(pitch) / failure_angle_;
+  }
+
+  double failure_angle_;
+  const cbbg::InputPort* measured_;
+  const cbbg::InputPort* failed_;
 };
 
 }  // namespace own_blocks

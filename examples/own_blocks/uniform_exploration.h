@@ -17,25 +17,31 @@ namespace own_blocks {
 class UniformExploration final : public cbbg::Block {
  public:
   UniformExploration(std::string name, const cbbg::parameters::Parameters& p)
-      : Block(std::move(name)) {
-    const double k_b = p.sampler.k_b;
-    const auto& actor_action = declare_input_port("actor_action", 1);
-    const auto& temperature = declare_input_port("temperature", 1);
+      : Block(std::move(name)), k_b_(p.sampler.k_b) {
+    actor_action_ = &declare_input_port("actor_action", 1);
+    temperature_ = &declare_input_port("temperature", 1);
     declare_discrete_state("u", cbbg::Vector::Constant(1, 0.5), cbbg::StateLifetime::kPerTrial);
-    declare_output_port(
-        "exploration_action", 1,
-        [=, &actor_action, &temperature](const cbbg::BlockContext& c, cbbg::VectorRef a) {
-          const double width = k_b * c.input(temperature)[0];
-          a[0] = c.input(actor_action)[0] + width * (2.0 * c.discrete_state()[0] - 1.0);
-        },
-        {&actor_action, &temperature});
-    const cbbg::UpdateFunction draw = [](cbbg::BlockContext& c, cbbg::VectorRef next) {
-      next[0] = cbbg::draw_uniform(c.random_generator());
-      return cbbg::EventStatus::succeeded();
-    };
-    declare_initialization_update(draw);
-    declare_periodic_update(p.trial.period, 0.0, draw);
+    declare_output_port<&UniformExploration::calc_exploration_action>(
+        "exploration_action", 1, {actor_action_, temperature_});
+    declare_initialization_update<&UniformExploration::draw>();
+    declare_periodic_update<&UniformExploration::draw>(p.trial.period, 0.0);
   }
+
+ private:
+  // "exploration_action": a_A + w (2u - 1), the u of the last draw.
+  void calc_exploration_action(const cbbg::BlockContext& c, cbbg::VectorRef a) const {
+    const double width = k_b_ * c.input(*temperature_)[0];
+    a[0] = c.input(*actor_action_)[0] + width * (2.0 * c.discrete_state()[0] - 1.0);
+  }
+  // A new u from the block's own generator: at the start and at every tick.
+  cbbg::EventStatus draw(cbbg::BlockContext& c, cbbg::VectorRef next) const {
+    next[0] = cbbg::draw_uniform(c.random_generator());
+    return cbbg::EventStatus::succeeded();
+  }
+
+  double k_b_;
+  const cbbg::InputPort* actor_action_;
+  const cbbg::InputPort* temperature_;
 };
 
 }  // namespace own_blocks

@@ -21,44 +21,23 @@ class VisitCritic final : public cbbg::Block, public cbbg::blocks::Learner {
   // `learns` false: act, never change w or v (an evaluation of what was learnt).
   VisitCritic(std::string name, int num_features, const cbbg::parameters::Parameters& p,
               bool learns)
-      : Block(std::move(name)), num_features_(num_features) {
+      : Block(std::move(name)),
+        num_features_(num_features),
+        beta_(p.critic.beta),
+        gamma_(p.critic.gamma),
+        learns_(learns) {
     using cbbg::StateLifetime;
-    const double beta = p.critic.beta, gamma = p.critic.gamma;
-    const auto& features = declare_input_port("features", num_features);
-    const auto& reward = declare_input_port("reward", 1);
-    const auto& failed = declare_input_port("failed", 1);
+    features_ = &declare_input_port("features", num_features);
+    reward_ = &declare_input_port("reward", 1);
+    failed_ = &declare_input_port("failed", 1);
     const cbbg::Vector zeros = cbbg::Vector::Zero(num_features);
-    const auto weights = declare_discrete_state("weights", zeros, StateLifetime::kPersistent);
-    const auto visits = declare_discrete_state("visits", zeros, StateLifetime::kPersistent);
-    const auto previous = declare_discrete_state("previous", zeros, StateLifetime::kPerTrial);
-    const auto started =
-        declare_discrete_state("started", cbbg::Vector::Zero(1), StateLifetime::kPerTrial);
-    auto delta = [=, &features, &reward, &failed](const cbbg::BlockContext& c) {
-      const auto x = c.discrete_state();
-      if (started.of(x)[0] == 0.0) return 0.0;
-      const double next = c.input(failed)[0] > 0.5 ? 0.0 : weights.of(x).dot(c.input(features));
-      return c.input(reward)[0] + gamma * next - weights.of(x).dot(previous.of(x));
-    };
-    declare_output_port("value", 1,
-                        [=, &features](const cbbg::BlockContext& c, cbbg::VectorRef v) {
-                          v[0] = weights.of(c.discrete_state()).dot(c.input(features));
-                        },
-                        {&features});
-    declare_output_port(
-        "td_error", 1, [delta](const cbbg::BlockContext& c, cbbg::VectorRef d) { d[0] = delta(c); },
-        {&features, &reward, &failed});
-    declare_periodic_update(
-        p.trial.period, 0.0, [=, &features](cbbg::BlockContext& c, cbbg::VectorRef next) {
-          const auto x = c.discrete_state();
-          if (started.of(x)[0] != 0.0 && learns) {
-            visits.of(next) = visits.of(x) + previous.of(x);
-            weights.of(next) = weights.of(x).array() + beta * delta(c) * previous.of(x).array() /
-                                                           (1.0 + visits.of(next).array());
-          }
-          previous.of(next) = c.input(features);
-          started.of(next)[0] = 1.0;
-          return cbbg::EventStatus::succeeded();
-        });
+    weights_ = declare_discrete_state("weights", zeros, StateLifetime::kPersistent);
+    visits_ = declare_discrete_state("visits", zeros, StateLifetime::kPersistent);
+    previous_ = declare_discrete_state("previous", zeros, StateLifetime::kPerTrial);
+    started_ = declare_discrete_state("started", cbbg::Vector::Zero(1), StateLifetime::kPerTrial);
+    declare_output_port<&VisitCritic::calc_value>("value", 1, {features_});
+    declare_output_port<&VisitCritic::calc_td_error>("td_error", 1, {features_, reward_, failed_});
+    declare_periodic_update<&VisitCritic::learn>(p.trial.period, 0.0);
   }
 
   Role learner_role() const override { return Role::kCritic; }
@@ -66,7 +45,44 @@ class VisitCritic final : public cbbg::Block, public cbbg::blocks::Learner {
   int num_features() const override { return num_features_; }
 
  private:
+  // delta of the header comment for the last transition; 0 before the first.
+  double delta(const cbbg::BlockContext& c) const {
+    const auto x = c.discrete_state();
+    if (started_.of(x)[0] == 0.0) return 0.0;
+    const double next = c.input(*failed_)[0] > 0.5 ? 0.0 : weights_.of(x).dot(c.input(*features_));
+    return c.input(*reward_)[0] + gamma_ * next - weights_.of(x).dot(previous_.of(x));
+  }
+  // "value": w . phi(s_t).
+  void calc_value(const cbbg::BlockContext& c, cbbg::VectorRef v) const {
+    v[0] = weights_.of(c.discrete_state()).dot(c.input(*features_));
+  }
+  // "td_error": delta.
+  void calc_td_error(const cbbg::BlockContext& c, cbbg::VectorRef d) const { d[0] = delta(c); }
+  // The rule of the header comment for the last transition (when it learns), then phi(s_t)
+  // kept for the next one.
+  cbbg::EventStatus learn(cbbg::BlockContext& c, cbbg::VectorRef next) const {
+    const auto x = c.discrete_state();
+    if (started_.of(x)[0] != 0.0 && learns_) {
+      visits_.of(next) = visits_.of(x) + previous_.of(x);
+      weights_.of(next) = weights_.of(x).array() + beta_ * delta(c) * previous_.of(x).array() /
+                                                       (1.0 + visits_.of(next).array());
+    }
+    previous_.of(next) = c.input(*features_);
+    started_.of(next)[0] = 1.0;
+    return cbbg::EventStatus::succeeded();
+  }
+
   int num_features_;
+  double beta_;
+  double gamma_;
+  bool learns_;
+  const cbbg::InputPort* features_;
+  const cbbg::InputPort* reward_;
+  const cbbg::InputPort* failed_;
+  cbbg::StatePart weights_;
+  cbbg::StatePart visits_;
+  cbbg::StatePart previous_;
+  cbbg::StatePart started_;
 };
 
 }  // namespace own_blocks

@@ -46,7 +46,7 @@ class Model {
 
   // Discrete time: x is the discrete state of `leaves`, stepped by `updates`.
   void use_discrete_state(const std::vector<int>& leaves,
-                          std::vector<std::pair<int, const UpdateFunction*>> updates) {
+                          std::vector<std::pair<int, const UpdateCalculation*>> updates) {
     discrete_ = true;
     updates_ = std::move(updates);
     for (const int leaf : leaves) {
@@ -85,7 +85,7 @@ class Model {
       for (const int index : diagram_.ode_leaves()) {
         const LeafLayout& leaf = diagram_.leaves()[static_cast<size_t>(index)];
         const BlockContext view(context, leaf);
-        leaf.block->derivative_function()(
+        leaf.block->derivative_calculation()(
             view,
             x_dot.segment(leaf.continuous_offset, leaf.block->initial_continuous_state().size()));
       }
@@ -149,7 +149,7 @@ class Model {
   std::vector<Slice> inputs_;   // root inputs in the signals
   std::vector<Slice> outputs_;  // root outputs in the signals
   std::vector<Slice> states_;   // discrete: the state's parts in the discrete states
-  std::vector<std::pair<int, const UpdateFunction*>> updates_;
+  std::vector<std::pair<int, const UpdateCalculation*>> updates_;
   bool discrete_ = false;
   int num_states_ = 0;
   int num_inputs_ = 0;
@@ -187,7 +187,7 @@ double choose_state(const Diagram& diagram, Model& model) {
   }
   const PeriodicUpdate& first =
       diagram.leaves()[static_cast<size_t>(updated.front())].block->periodic_updates().front();
-  std::vector<std::pair<int, const UpdateFunction*>> updates;
+  std::vector<std::pair<int, const UpdateCalculation*>> updates;
   for (const int index : updated) {
     const Block& block = *diagram.leaves()[static_cast<size_t>(index)].block;
     for (const PeriodicUpdate& update : block.periodic_updates()) {

@@ -25,24 +25,24 @@ Adder::Adder(std::string name, const std::vector<Input>& inputs, int size)
     ports.push_back(&declare_input_port(input.name, size));
     terms_.push_back({ports.back(), input.sign < 0});
   }
-  declare_output_port(
-      "y", size,
-      [this](const BlockContext& context, VectorRef y) {
-        const Term& first = terms_.front();
-        if (first.subtract) {
-          y = -context.input(*first.port);
-        } else {
-          y = context.input(*first.port);
-        }
-        for (std::size_t i = 1; i < terms_.size(); ++i) {
-          if (terms_[i].subtract) {
-            y -= context.input(*terms_[i].port);
-          } else {
-            y += context.input(*terms_[i].port);
-          }
-        }
-      },
-      ports, "the signed sum of the inputs", OutputSources::kDiscreteState);
+  declare_output_port<&Adder::calc_sum>("y", size, ports, "the signed sum of the inputs",
+                                        OutputSources::kDiscreteState);
+}
+
+void Adder::calc_sum(const BlockContext& context, VectorRef y) const {
+  const Term& first = terms_.front();
+  if (first.subtract) {
+    y = -context.input(*first.port);
+  } else {
+    y = context.input(*first.port);
+  }
+  for (std::size_t i = 1; i < terms_.size(); ++i) {
+    if (terms_[i].subtract) {
+      y -= context.input(*terms_[i].port);
+    } else {
+      y += context.input(*terms_[i].port);
+    }
+  }
 }
 
 }  // namespace cbbg

@@ -29,6 +29,9 @@ class Adder final : public Block {
   Adder(std::string name, const std::vector<Input>& inputs, int size);
 
  private:
+  // "y": the signed sum of the inputs, in order.
+  void calc_sum(const BlockContext& context, VectorRef y) const;
+
   struct Term {
     const InputPort* port;
     bool subtract;

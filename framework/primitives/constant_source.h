@@ -16,6 +16,9 @@ class ConstantSource final : public Block {
   const Vector& value() const { return value_; }
 
  private:
+  // "y": the value.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+
   Vector value_;
 };
 

@@ -67,14 +67,18 @@ CsvSink::CsvSink(std::string name, fs::path path, const std::vector<Input>& inpu
                                                 : input.name + "[" + std::to_string(i) + "]");
     }
   }
-  declare_initialization_update([this](BlockContext&, VectorRef) {
-    if (!stream_.is_open()) open();
-    return EventStatus::succeeded();
-  });
-  declare_periodic_update(period, offset, [this](BlockContext& context, VectorRef) {
-    write_row(context.time(), context);
-    return EventStatus::succeeded();
-  });
+  declare_initialization_update<&CsvSink::open_file>();
+  declare_periodic_update<&CsvSink::write_sample>(period, offset);
+}
+
+EventStatus CsvSink::open_file(BlockContext&, VectorRef) const {
+  if (!stream_.is_open()) open();
+  return EventStatus::succeeded();
+}
+
+EventStatus CsvSink::write_sample(BlockContext& context, VectorRef) const {
+  write_row(context.time(), context);
+  return EventStatus::succeeded();
 }
 
 void CsvSink::check_writable() const {
@@ -90,7 +94,7 @@ void CsvSink::check_writable() const {
   }
 }
 
-void CsvSink::open() {
+void CsvSink::open() const {
   check_writable();  // again: something may have appeared there since the constructor
   stream_.open(path_, std::ios::out | std::ios::trunc);
   if (!stream_) {
@@ -102,7 +106,7 @@ void CsvSink::open() {
   rows_ = 0;
 }
 
-void CsvSink::write_row(double time, const BlockContext& context) {
+void CsvSink::write_row(double time, const BlockContext& context) const {
   if (!stream_.is_open()) return;  // only an update outside a simulation could get here
   // Formatted into a stack buffer: a row never allocates.
   std::array<char, 32> buffer{};

@@ -74,17 +74,23 @@ class CsvSink final : public Block {
   void flush();
 
  private:
+  // Initialization update: opens the file, the first time, with the tag and the header.
+  EventStatus open_file(BlockContext& context, VectorRef next_state) const;
+  // Periodic update: writes the row of t_k.
+  EventStatus write_sample(BlockContext& context, VectorRef next_state) const;
   // Throws unless the path may be written now (owned_files.h).
   void check_writable() const;
-  void open();
-  void write_row(double time, const BlockContext& context);
+  void open() const;
+  void write_row(double time, const BlockContext& context) const;
 
   std::string label_;
   std::filesystem::path path_;
   std::vector<const InputPort*> inputs_;
   std::vector<std::string> columns_;
-  std::ofstream stream_;
-  long long rows_ = 0;
+  // The open file and its count of rows live in the block (see Limits above), so the updates,
+  // const as every calculation, change them.
+  mutable std::ofstream stream_;
+  mutable long long rows_ = 0;
 };
 
 }  // namespace cbbg

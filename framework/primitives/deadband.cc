@@ -23,21 +23,21 @@ Deadband::Deadband(std::string name, Vector lower, Vector upper)
 void Deadband::declare_ports(bool per_element) {
   primitive_checks::check_limits(label("Deadband", name()), lower_, upper_, per_element);
   const int size = static_cast<int>(lower_.size());
-  const InputPort& u = declare_input_port("u", size);
-  declare_output_port(
-      "y", size,
-      [this, &u](const BlockContext& context, VectorRef y) {
-        const ConstVectorView input = context.input(u);
-        for (Eigen::Index i = 0; i < input.size(); ++i) {
-          const double v = input[i];
-          if (v >= lower_[i] && v <= upper_[i]) {
-            y[i] = 0.0;
-          } else {
-            y[i] = v > upper_[i] ? v - upper_[i] : v - lower_[i];  // NaN falls through
-          }
-        }
-      },
-      {&u}, "u less the dead zone", OutputSources::kDiscreteState);
+  u_ = &declare_input_port("u", size);
+  declare_output_port<&Deadband::calc_y>("y", size, {u_}, "u less the dead zone",
+                                         OutputSources::kDiscreteState);
+}
+
+void Deadband::calc_y(const BlockContext& context, VectorRef y) const {
+  const ConstVectorView input = context.input(*u_);
+  for (Eigen::Index i = 0; i < input.size(); ++i) {
+    const double v = input[i];
+    if (v >= lower_[i] && v <= upper_[i]) {
+      y[i] = 0.0;
+    } else {
+      y[i] = v > upper_[i] ? v - upper_[i] : v - lower_[i];  // NaN falls through
+    }
+  }
 }
 
 }  // namespace cbbg

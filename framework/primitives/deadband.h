@@ -30,9 +30,12 @@ class Deadband final : public Block {
 
  private:
   void declare_ports(bool per_element);
+  // "y": u less the dead zone, elementwise.
+  void calc_y(const BlockContext& context, VectorRef y) const;
 
   Vector lower_;
   Vector upper_;
+  const InputPort* u_;
 };
 
 }  // namespace cbbg

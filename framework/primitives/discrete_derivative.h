@@ -40,7 +40,14 @@ class DiscreteDerivative final : public Block {
                      InitialTransient transient = InitialTransient::kSuppress, double offset = 0.0);
 
  private:
+  // "y": (x_last - x_before) / h, zero while fewer than two samples are stored.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+  // Stores u_k as the last sample, the last as the one before, and counts it. Writes in
+  // place: it reads and writes its state through `next` alone.
+  EventStatus sample(BlockContext& context, VectorRef next) const;
+
   double period_;
+  const InputPort* u_;
   StatePart last_;
   StatePart before_;
   StatePart count_;

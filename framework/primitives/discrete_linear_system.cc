@@ -18,23 +18,26 @@ DiscreteLinearSystem::DiscreteLinearSystem(std::string name, const Eigen::Matrix
   check_state_space(label, A_, B_, C_, D_, initial_state);
   primitive_checks::check_period(label, period, offset);
   feedthrough_ = (D_.array() != 0.0).any();
-  const InputPort& u = declare_input_port("u", static_cast<int>(B_.cols()), "the input");
+  u_ = &declare_input_port("u", static_cast<int>(B_.cols()), "the input");
   declare_discrete_state("x", initial_state, StateLifetime::kPerTrial);
   std::vector<const InputPort*> reads;
-  if (feedthrough_) reads.push_back(&u);
-  declare_output_port(
-      "y", static_cast<int>(C_.rows()),
-      [this, &u](const BlockContext& context, VectorRef y) {
-        y.noalias() = C_ * context.discrete_state();
-        if (feedthrough_) y.noalias() += D_ * context.input(u);
-      },
-      std::move(reads), "C x + D u", OutputSources::kDiscreteState);
+  if (feedthrough_) reads.push_back(u_);
+  declare_output_port<&DiscreteLinearSystem::calc_y>("y", static_cast<int>(C_.rows()),
+                                                     std::move(reads), "C x + D u",
+                                                     OutputSources::kDiscreteState);
+  declare_periodic_update<&DiscreteLinearSystem::step>(period, offset);
+}
+
+void DiscreteLinearSystem::calc_y(const BlockContext& context, VectorRef y) const {
+  y.noalias() = C_ * context.discrete_state();
+  if (feedthrough_) y.noalias() += D_ * context.input(*u_);
+}
+
+EventStatus DiscreteLinearSystem::step(BlockContext& context, VectorRef next) const {
   // `next` and the state the context holds are separate storage: no aliasing.
-  declare_periodic_update(period, offset, [this, &u](BlockContext& context, VectorRef next) {
-    next.noalias() = A_ * context.discrete_state();
-    next.noalias() += B_ * context.input(u);
-    return EventStatus::succeeded();
-  });
+  next.noalias() = A_ * context.discrete_state();
+  next.noalias() += B_ * context.input(*u_);
+  return EventStatus::succeeded();
 }
 
 }  // namespace cbbg

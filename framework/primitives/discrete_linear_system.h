@@ -43,11 +43,17 @@ class DiscreteLinearSystem final : public Block {
   bool has_direct_feedthrough() const { return feedthrough_; }
 
  private:
+  // "y": C x + D u (C x alone when D = 0).
+  void calc_y(const BlockContext& context, VectorRef y) const;
+  // x_{k+1} = A x_k + B u_k.
+  EventStatus step(BlockContext& context, VectorRef next) const;
+
   Eigen::MatrixXd A_;
   Eigen::MatrixXd B_;
   Eigen::MatrixXd C_;
   Eigen::MatrixXd D_;
   bool feedthrough_;
+  const InputPort* u_;
 };
 
 }  // namespace cbbg

@@ -24,14 +24,17 @@ FirstOrderLowPass::FirstOrderLowPass(std::string name, double time_constant,
   }
   const int size = primitive_checks::checked_size(label, static_cast<int>(initial_value.size()));
   primitive_checks::check_finite(label, "initial value", initial_value);
-  const InputPort& u = declare_input_port("u", size, "the signal to smooth");
-  declare_continuous_state(
-      initial_value, [this, &u](const BlockContext& context, VectorRef derivatives) {
-        derivatives = (context.input(u) - context.continuous_state()) / time_constant_;
-      });
-  declare_output_port(
-      "y", size, [](const BlockContext& context, VectorRef y) { y = context.continuous_state(); },
-      {}, "the smoothed signal");
+  u_ = &declare_input_port("u", size, "the signal to smooth");
+  declare_continuous_state<&FirstOrderLowPass::calc_derivatives>(initial_value);
+  declare_output_port<&FirstOrderLowPass::calc_y>("y", size, {}, "the smoothed signal");
+}
+
+void FirstOrderLowPass::calc_derivatives(const BlockContext& context, VectorRef derivatives) const {
+  derivatives = (context.input(*u_) - context.continuous_state()) / time_constant_;
+}
+
+void FirstOrderLowPass::calc_y(const BlockContext& context, VectorRef y) const {
+  y = context.continuous_state();
 }
 
 }  // namespace cbbg

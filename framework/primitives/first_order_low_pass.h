@@ -32,7 +32,13 @@ class FirstOrderLowPass final : public Block {
   double time_constant() const { return time_constant_; }
 
  private:
+  // x' = (u - x) / tau.
+  void calc_derivatives(const BlockContext& context, VectorRef derivatives) const;
+  // "y": x.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+
   double time_constant_;
+  const InputPort* u_;
 };
 
 }  // namespace cbbg

@@ -11,11 +11,8 @@
 namespace cbbg {
 
 Gain::Gain(std::string name, double gain, int size) : Block(std::move(name)), gain_(gain) {
-  const InputPort& u = declare_input_port("u", size);
-  declare_output_port(
-      "y", size,
-      [this, &u](const BlockContext& context, VectorRef y) { y = gain_ * context.input(u); }, {&u},
-      "k u", OutputSources::kDiscreteState);
+  u_ = &declare_input_port("u", size);
+  declare_output_port<&Gain::calc_y_scalar>("y", size, {u_}, "k u", OutputSources::kDiscreteState);
 }
 
 Gain::Gain(std::string name, Eigen::MatrixXd matrix)
@@ -35,13 +32,17 @@ Gain::Gain(std::string name, Eigen::MatrixXd matrix)
       }
     }
   }
-  const InputPort& u = declare_input_port("u", static_cast<int>(matrix_.cols()));
-  declare_output_port(
-      "y", static_cast<int>(matrix_.rows()),
-      [this, &u](const BlockContext& context, VectorRef y) {
-        y.noalias() = matrix_ * context.input(u);
-      },
-      {&u}, "K u", OutputSources::kDiscreteState);
+  u_ = &declare_input_port("u", static_cast<int>(matrix_.cols()));
+  declare_output_port<&Gain::calc_y_matrix>("y", static_cast<int>(matrix_.rows()), {u_}, "K u",
+                                            OutputSources::kDiscreteState);
+}
+
+void Gain::calc_y_scalar(const BlockContext& context, VectorRef y) const {
+  y = gain_ * context.input(*u_);
+}
+
+void Gain::calc_y_matrix(const BlockContext& context, VectorRef y) const {
+  y.noalias() = matrix_ * context.input(*u_);
 }
 
 }  // namespace cbbg

@@ -23,8 +23,14 @@ class Gain final : public Block {
   Gain(std::string name, Eigen::MatrixXd matrix);
 
  private:
+  // "y" of a scalar gain: k u.
+  void calc_y_scalar(const BlockContext& context, VectorRef y) const;
+  // "y" of a matrix gain: K u.
+  void calc_y_matrix(const BlockContext& context, VectorRef y) const;
+
   double gain_ = 0.0;
   Eigen::MatrixXd matrix_;  // empty for a scalar gain
+  const InputPort* u_;
 };
 
 }  // namespace cbbg

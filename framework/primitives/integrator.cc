@@ -16,13 +16,17 @@ Integrator::Integrator(std::string name, const Vector& initial_value) : Block(st
   const std::string block = label("Integrator", this->name());
   const int size = primitive_checks::checked_size(block, static_cast<int>(initial_value.size()));
   primitive_checks::check_finite(block, "initial value", initial_value);
-  const InputPort& u = declare_input_port("u", size, "the rate");
-  declare_continuous_state(initial_value, [&u](const BlockContext& context, VectorRef x_dot) {
-    x_dot = context.input(u);
-  });
-  declare_output_port(
-      "y", size, [](const BlockContext& context, VectorRef y) { y = context.continuous_state(); },
-      {}, "the integral");
+  u_ = &declare_input_port("u", size, "the rate");
+  declare_continuous_state<&Integrator::calc_derivatives>(initial_value);
+  declare_output_port<&Integrator::calc_y>("y", size, {}, "the integral");
+}
+
+void Integrator::calc_derivatives(const BlockContext& context, VectorRef x_dot) const {
+  x_dot = context.input(*u_);
+}
+
+void Integrator::calc_y(const BlockContext& context, VectorRef y) const {
+  y = context.continuous_state();
 }
 
 }  // namespace cbbg

@@ -24,6 +24,14 @@ class Integrator final : public Block {
   // From `initial_value` (n = its size). Throws std::invalid_argument naming the block
   // unless it has at least one element and every element is finite.
   Integrator(std::string name, const Vector& initial_value);
+
+ private:
+  // x' = u.
+  void calc_derivatives(const BlockContext& context, VectorRef x_dot) const;
+  // "y": x.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+
+  const InputPort* u_;
 };
 
 }  // namespace cbbg

@@ -86,21 +86,22 @@ LinearSystem::LinearSystem(std::string name, const Eigen::MatrixXd& A, const Eig
   check_state_space(primitive_checks::label("LinearSystem", this->name()), A_, B_, C_, D_,
                     initial_state);
   feedthrough_ = (D_.array() != 0.0).any();
-  const InputPort& u = declare_input_port("u", static_cast<int>(B_.cols()), "the input");
-  declare_continuous_state(initial_state,
-                           [this, &u](const BlockContext& context, VectorRef derivatives) {
-                             derivatives.noalias() = A_ * context.continuous_state();
-                             derivatives.noalias() += B_ * context.input(u);
-                           });
+  u_ = &declare_input_port("u", static_cast<int>(B_.cols()), "the input");
+  declare_continuous_state<&LinearSystem::calc_derivatives>(initial_state);
   std::vector<const InputPort*> reads;
-  if (feedthrough_) reads.push_back(&u);
-  declare_output_port(
-      "y", static_cast<int>(C_.rows()),
-      [this, &u](const BlockContext& context, VectorRef y) {
-        y.noalias() = C_ * context.continuous_state();
-        if (feedthrough_) y.noalias() += D_ * context.input(u);
-      },
-      std::move(reads), "C x + D u");
+  if (feedthrough_) reads.push_back(u_);
+  declare_output_port<&LinearSystem::calc_y>("y", static_cast<int>(C_.rows()), std::move(reads),
+                                             "C x + D u");
+}
+
+void LinearSystem::calc_derivatives(const BlockContext& context, VectorRef derivatives) const {
+  derivatives.noalias() = A_ * context.continuous_state();
+  derivatives.noalias() += B_ * context.input(*u_);
+}
+
+void LinearSystem::calc_y(const BlockContext& context, VectorRef y) const {
+  y.noalias() = C_ * context.continuous_state();
+  if (feedthrough_) y.noalias() += D_ * context.input(*u_);
 }
 
 }  // namespace cbbg

@@ -43,11 +43,17 @@ class LinearSystem final : public Block {
   bool has_direct_feedthrough() const { return feedthrough_; }
 
  private:
+  // x' = A x + B u.
+  void calc_derivatives(const BlockContext& context, VectorRef derivatives) const;
+  // "y": C x + D u (C x alone when D = 0).
+  void calc_y(const BlockContext& context, VectorRef y) const;
+
   Eigen::MatrixXd A_;
   Eigen::MatrixXd B_;
   Eigen::MatrixXd C_;
   Eigen::MatrixXd D_;
   bool feedthrough_;
+  const InputPort* u_;
 };
 
 // The checks of LinearSystem and DiscreteLinearSystem: A square with n >= 1 rows, B with n

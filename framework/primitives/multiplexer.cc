@@ -8,28 +8,27 @@ namespace cbbg {
 
 Multiplexer::Multiplexer(std::string name, const std::vector<Input>& inputs)
     : Block(std::move(name)) {
-  std::vector<const InputPort*> ports;
   int total = 0;
   for (const auto& input : inputs) {
-    ports.push_back(&declare_input_port(input.name, input.size));
+    inputs_.push_back(&declare_input_port(input.name, input.size));
     total += input.size;
   }
-  declare_output_port(
-      "y", total,
-      [ports](const BlockContext& context, VectorRef y) {
-        // Plain copies: most inputs are one value, where a call to memcpy, or Eigen's sized
-        // segment assignment, costs more than the copy.
-        double* out = y.data();
-        for (const InputPort* port : ports) {
-          const double* in = context.input(*port).data();
-          if (port->size() == 1) {
-            *out++ = *in;
-          } else {
-            out = std::copy_n(in, port->size(), out);
-          }
-        }
-      },
-      ports, "the inputs, concatenated", OutputSources::kDiscreteState);
+  declare_output_port<&Multiplexer::calc_y>("y", total, inputs_, "the inputs, concatenated",
+                                            OutputSources::kDiscreteState);
+}
+
+void Multiplexer::calc_y(const BlockContext& context, VectorRef y) const {
+  // Plain copies: most inputs are one value, where a call to memcpy, or Eigen's sized
+  // segment assignment, costs more than the copy.
+  double* out = y.data();
+  for (const InputPort* port : inputs_) {
+    const double* in = context.input(*port).data();
+    if (port->size() == 1) {
+      *out++ = *in;
+    } else {
+      out = std::copy_n(in, port->size(), out);
+    }
+  }
 }
 
 }  // namespace cbbg

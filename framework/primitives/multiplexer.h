@@ -20,6 +20,12 @@ class Multiplexer final : public Block {
     int size;
   };
   Multiplexer(std::string name, const std::vector<Input>& inputs);
+
+ private:
+  // "y": the inputs, copied one after the other.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+
+  std::vector<const InputPort*> inputs_;
 };
 
 }  // namespace cbbg

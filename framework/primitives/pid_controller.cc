@@ -44,7 +44,7 @@ PidController::PidController(std::string name, const Params& params, double peri
   primitive_checks::check_period(label, period, offset);
   primitive_checks::checked_size(label, size);
 
-  const InputPort& e = declare_input_port("e", size, "the error, reference - measurement");
+  e_ = &declare_input_port("e", size, "the error, reference - measurement");
   integral_ = declare_discrete_state("integral", Vector::Zero(size), StateLifetime::kPerTrial);
   previous_error_ =
       declare_discrete_state("previous_error", Vector::Zero(size), StateLifetime::kPerTrial);
@@ -52,31 +52,33 @@ PidController::PidController(std::string name, const Params& params, double peri
       "command", Vector::Constant(size, std::clamp(0.0, params.u_min, params.u_max)),
       StateLifetime::kPerTrial);
   started_ = declare_discrete_state("started", Vector::Zero(1), StateLifetime::kPerTrial);
-  declare_output_port(
-      "u", size,
-      [this](const BlockContext& context, VectorRef u) {
-        u = command_.of(context.discrete_state());
-      },
-      {}, "the command u_k, held until the next sample", OutputSources::kDiscreteState);
-  declare_periodic_update(period, offset, [this, &e](BlockContext& context, VectorRef next) {
-    const ConstVectorView error = context.input(e);
-    const ConstVectorView state = context.discrete_state();
-    const bool started = started_.of(state)[0] != 0.0;
-    const Params& p = params_;
-    for (Eigen::Index i = 0; i < error.size(); ++i) {
-      const double e_k = error[i];  // 1.
-      const double integral = state[integral_.offset + i];
-      const double e_previous = started ? state[previous_error_.offset + i] : e_k;
-      const double derivative = (e_k - e_previous) / period_;             // 2.
-      const double v = p.kp * e_k + p.ki * integral + p.kd * derivative;  // 3.
-      next[command_.offset + i] = std::clamp(v, p.u_min, p.u_max);        // 4.
-      const bool winds_up = (v > p.u_max && e_k > 0.0) || (v < p.u_min && e_k < 0.0);
-      next[integral_.offset + i] = winds_up ? integral : integral + period_ * e_k;  // 5.
-      next[previous_error_.offset + i] = e_k;                                       // 6.
-    }
-    next[started_.offset] = 1.0;
-    return EventStatus::succeeded();
-  });
+  declare_output_port<&PidController::calc_u>(
+      "u", size, {}, "the command u_k, held until the next sample", OutputSources::kDiscreteState);
+  declare_periodic_update<&PidController::sample>(period, offset);
+}
+
+void PidController::calc_u(const BlockContext& context, VectorRef u) const {
+  u = command_.of(context.discrete_state());
+}
+
+EventStatus PidController::sample(BlockContext& context, VectorRef next) const {
+  const ConstVectorView error = context.input(*e_);
+  const ConstVectorView state = context.discrete_state();
+  const bool started = started_.of(state)[0] != 0.0;
+  const Params& p = params_;
+  for (Eigen::Index i = 0; i < error.size(); ++i) {
+    const double e_k = error[i];  // 1.
+    const double integral = state[integral_.offset + i];
+    const double e_previous = started ? state[previous_error_.offset + i] : e_k;
+    const double derivative = (e_k - e_previous) / period_;             // 2.
+    const double v = p.kp * e_k + p.ki * integral + p.kd * derivative;  // 3.
+    next[command_.offset + i] = std::clamp(v, p.u_min, p.u_max);        // 4.
+    const bool winds_up = (v > p.u_max && e_k > 0.0) || (v < p.u_min && e_k < 0.0);
+    next[integral_.offset + i] = winds_up ? integral : integral + period_ * e_k;  // 5.
+    next[previous_error_.offset + i] = e_k;                                       // 6.
+  }
+  next[started_.offset] = 1.0;
+  return EventStatus::succeeded();
 }
 
 }  // namespace cbbg

@@ -59,8 +59,14 @@ class PidController final : public Block {
   double period() const { return period_; }
 
  private:
+  // "u": the command u_k held in the state.
+  void calc_u(const BlockContext& context, VectorRef u) const;
+  // Steps 1 to 6 of the class comment at a sample t_k.
+  EventStatus sample(BlockContext& context, VectorRef next) const;
+
   Params params_;
   double period_;
+  const InputPort* e_;
   StatePart integral_;
   StatePart previous_error_;
   StatePart command_;

@@ -34,12 +34,11 @@ RampSource::RampSource(std::string name, const Vector& slope, double start_time,
     throw std::invalid_argument(label + ": start time " + format_number(start_time) +
                                 " must be finite");
   }
-  declare_output_port(
-      "y", size,
-      [this](const BlockContext& context, VectorRef y) {
-        y = initial_value_ + std::max(0.0, context.time() - start_time_) * slope_;
-      },
-      {}, "y0 + s max(0, t - t_start)");
+  declare_output_port<&RampSource::calc_y>("y", size, {}, "y0 + s max(0, t - t_start)");
+}
+
+void RampSource::calc_y(const BlockContext& context, VectorRef y) const {
+  y = initial_value_ + std::max(0.0, context.time() - start_time_) * slope_;
 }
 
 }  // namespace cbbg

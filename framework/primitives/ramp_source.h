@@ -24,6 +24,9 @@ class RampSource final : public Block {
   RampSource(std::string name, double slope, double start_time, double initial_value = 0.0);
 
  private:
+  // "y": y0 + s max(0, t - t_start).
+  void calc_y(const BlockContext& context, VectorRef y) const;
+
   Vector slope_;
   double start_time_;
   Vector initial_value_;

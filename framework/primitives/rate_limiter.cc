@@ -38,29 +38,32 @@ RateLimiter::RateLimiter(std::string name, const Vector& initial_value, double r
   check_rate(block, "rising rate", rising_rate);
   check_rate(block, "falling rate", falling_rate);
   primitive_checks::check_period(block, period, offset);
-  const InputPort& u = declare_input_port("u", size, "the signal to limit");
+  u_ = &declare_input_port("u", size, "the signal to limit");
   declare_discrete_state("output", initial_value, StateLifetime::kPerTrial);
-  declare_output_port(
-      "y", size, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {},
-      "the rate-limited signal", OutputSources::kDiscreteState);
-  declare_periodic_update(
-      period, offset,
-      [this, &u](BlockContext& context, VectorRef next) {
-        // `next` holds y_{k-1} on entry.
-        const ConstVectorView input = context.input(u);
-        for (Eigen::Index i = 0; i < input.size(); ++i) {
-          const double step = input[i] - next[i];
-          if (step > max_rise_) {
-            next[i] += max_rise_;
-          } else if (step < -max_fall_) {
-            next[i] -= max_fall_;
-          } else {
-            next[i] = input[i];  // within the limits (or NaN, which the simulator reports)
-          }
-        }
-        return EventStatus::succeeded();
-      },
-      UpdateWrites::kInPlace);  // reads and writes its state through `next` alone
+  declare_output_port<&RateLimiter::calc_y>("y", size, {}, "the rate-limited signal",
+                                            OutputSources::kDiscreteState);
+  // In place: it reads and writes its state through `next` alone
+  declare_periodic_update<&RateLimiter::limit>(period, offset, UpdateWrites::kInPlace);
+}
+
+void RateLimiter::calc_y(const BlockContext& context, VectorRef y) const {
+  y = context.discrete_state();
+}
+
+EventStatus RateLimiter::limit(BlockContext& context, VectorRef next) const {
+  // `next` holds y_{k-1} on entry.
+  const ConstVectorView input = context.input(*u_);
+  for (Eigen::Index i = 0; i < input.size(); ++i) {
+    const double step = input[i] - next[i];
+    if (step > max_rise_) {
+      next[i] += max_rise_;
+    } else if (step < -max_fall_) {
+      next[i] -= max_fall_;
+    } else {
+      next[i] = input[i];  // within the limits (or NaN, which the simulator reports)
+    }
+  }
+  return EventStatus::succeeded();
 }
 
 }  // namespace cbbg

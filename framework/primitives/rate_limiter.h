@@ -36,8 +36,15 @@ class RateLimiter final : public Block {
               double falling_rate, double period, double offset = 0.0);
 
  private:
+  // "y": the state, y_{k-1} until the update at t_k.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+  // y_k = y_{k-1} + clamp(u_k - y_{k-1}, -falling h, rising h). Writes in place: it reads and
+  // writes its state through `next` alone.
+  EventStatus limit(BlockContext& context, VectorRef next) const;
+
   double max_rise_;  // rising h
   double max_fall_;  // falling h
+  const InputPort* u_;
 };
 
 }  // namespace cbbg

@@ -23,13 +23,13 @@ Saturation::Saturation(std::string name, Vector lower, Vector upper)
 void Saturation::declare_ports(bool per_element) {
   primitive_checks::check_limits(label("Saturation", name()), lower_, upper_, per_element);
   const int size = static_cast<int>(lower_.size());
-  const InputPort& u = declare_input_port("u", size);
-  declare_output_port(
-      "y", size,
-      [this, &u](const BlockContext& context, VectorRef y) {
-        y = context.input(u).cwiseMax(lower_).cwiseMin(upper_);
-      },
-      {&u}, "u clamped to the limits", OutputSources::kDiscreteState);
+  u_ = &declare_input_port("u", size);
+  declare_output_port<&Saturation::calc_y>("y", size, {u_}, "u clamped to the limits",
+                                           OutputSources::kDiscreteState);
+}
+
+void Saturation::calc_y(const BlockContext& context, VectorRef y) const {
+  y = context.input(*u_).cwiseMax(lower_).cwiseMin(upper_);
 }
 
 }  // namespace cbbg

@@ -26,9 +26,12 @@ class Saturation final : public Block {
 
  private:
   void declare_ports(bool per_element);
+  // "y": u clamped to the limits, elementwise.
+  void calc_y(const BlockContext& context, VectorRef y) const;
 
   Vector lower_;
   Vector upper_;
+  const InputPort* u_;
 };
 
 }  // namespace cbbg

@@ -19,15 +19,15 @@ Selector::Selector(std::string name, int input_size, std::vector<int> indices)
                                   std::to_string(input_size));
     }
   }
-  const InputPort& u = declare_input_port("u", input_size);
-  declare_output_port(
-      "y", static_cast<int>(indices_.size()),
-      [this, &u](const BlockContext& context, VectorRef y) {
-        const ConstVectorView input = context.input(u);
-        for (std::size_t i = 0; i < indices_.size(); ++i)
-          y[static_cast<Eigen::Index>(i)] = input[indices_[i]];
-      },
-      {&u}, "u at the indices", OutputSources::kDiscreteState);
+  u_ = &declare_input_port("u", input_size);
+  declare_output_port<&Selector::calc_y>("y", static_cast<int>(indices_.size()), {u_},
+                                         "u at the indices", OutputSources::kDiscreteState);
+}
+
+void Selector::calc_y(const BlockContext& context, VectorRef y) const {
+  const ConstVectorView input = context.input(*u_);
+  for (std::size_t i = 0; i < indices_.size(); ++i)
+    y[static_cast<Eigen::Index>(i)] = input[indices_[i]];
 }
 
 }  // namespace cbbg

@@ -19,7 +19,11 @@ class Selector final : public Block {
   Selector(std::string name, int input_size, std::vector<int> indices);
 
  private:
+  // "y": u at the indices, in order.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+
   std::vector<int> indices_;
+  const InputPort* u_;
 };
 
 }  // namespace cbbg

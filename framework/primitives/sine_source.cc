@@ -35,14 +35,13 @@ SineSource::SineSource(std::string name, const Vector& amplitude, const Vector& 
   check("angular frequency", angular_frequency);
   check("phase", phase);
   check("bias", bias);
-  declare_output_port(
-      "y", size,
-      [this](const BlockContext& context, VectorRef y) {
-        y.array() = bias_.array() +
-                    amplitude_.array() *
-                        (angular_frequency_.array() * context.time() + phase_.array()).sin();
-      },
-      {}, "b + a sin(omega t + phi)");
+  declare_output_port<&SineSource::calc_y>("y", size, {}, "b + a sin(omega t + phi)");
+}
+
+void SineSource::calc_y(const BlockContext& context, VectorRef y) const {
+  y.array() =
+      bias_.array() +
+      amplitude_.array() * (angular_frequency_.array() * context.time() + phase_.array()).sin();
 }
 
 }  // namespace cbbg

@@ -29,6 +29,9 @@ class SineSource final : public Block {
              double bias = 0.0);
 
  private:
+  // "y": b + a sin(omega t + phi).
+  void calc_y(const BlockContext& context, VectorRef y) const;
+
   Vector amplitude_;
   Vector angular_frequency_;
   Vector phase_;

@@ -33,12 +33,12 @@ StepSource::StepSource(std::string name, const Vector& initial_value, const Vect
     throw std::invalid_argument(label + ": step time " + format_number(step_time) +
                                 " must be finite");
   }
-  declare_output_port(
-      "y", size,
-      [this](const BlockContext& context, VectorRef y) {
-        y = context.time() < step_time_ ? initial_value_ : final_value_;
-      },
-      {}, "the initial value before the step time, the final value from it on");
+  declare_output_port<&StepSource::calc_y>(
+      "y", size, {}, "the initial value before the step time, the final value from it on");
+}
+
+void StepSource::calc_y(const BlockContext& context, VectorRef y) const {
+  y = context.time() < step_time_ ? initial_value_ : final_value_;
 }
 
 }  // namespace cbbg

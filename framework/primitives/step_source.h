@@ -26,6 +26,9 @@ class StepSource final : public Block {
   StepSource(std::string name, double initial_value, double final_value, double step_time);
 
  private:
+  // "y": y0 before t_step, y1 from it on.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+
   Vector initial_value_;
   Vector final_value_;
   double step_time_;

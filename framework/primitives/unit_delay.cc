@@ -18,18 +18,21 @@ UnitDelay::UnitDelay(std::string name, const Vector& initial_value, double perio
   const int size = primitive_checks::checked_size(block, static_cast<int>(initial_value.size()));
   primitive_checks::check_finite(block, "initial value", initial_value);
   primitive_checks::check_period(block, period, offset);
-  const InputPort& u = declare_input_port("u", size, "the signal to delay");
+  u_ = &declare_input_port("u", size, "the signal to delay");
   declare_discrete_state("delayed", initial_value, StateLifetime::kPerTrial);
-  declare_output_port(
-      "y", size, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {},
-      "the sample before", OutputSources::kDiscreteState);
-  declare_periodic_update(
-      period, offset,
-      [&u](BlockContext& context, VectorRef next) {
-        next = context.input(u);
-        return EventStatus::succeeded();
-      },
-      UpdateWrites::kInPlace);  // writes only
+  declare_output_port<&UnitDelay::calc_y>("y", size, {}, "the sample before",
+                                          OutputSources::kDiscreteState);
+  // In place: it writes only
+  declare_periodic_update<&UnitDelay::latch>(period, offset, UpdateWrites::kInPlace);
+}
+
+void UnitDelay::calc_y(const BlockContext& context, VectorRef y) const {
+  y = context.discrete_state();
+}
+
+EventStatus UnitDelay::latch(BlockContext& context, VectorRef next) const {
+  next = context.input(*u_);
+  return EventStatus::succeeded();
 }
 
 }  // namespace cbbg

@@ -28,6 +28,14 @@ class UnitDelay final : public Block {
   UnitDelay(std::string name, int size, double period, double offset = 0.0);
   // From `initial_value` (n = its size, every element finite), checked as above.
   UnitDelay(std::string name, const Vector& initial_value, double period, double offset = 0.0);
+
+ private:
+  // "y": the state, the sample before.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+  // Stores u_k. Writes in place: it writes only.
+  EventStatus latch(BlockContext& context, VectorRef next) const;
+
+  const InputPort* u_;
 };
 
 }  // namespace cbbg

@@ -39,18 +39,23 @@ WhiteNoise::WhiteNoise(std::string name, const Vector& mean, const Vector& stand
   }
   primitive_checks::check_period(label, period, offset);
   declare_discrete_state("value", mean, StateLifetime::kPerTrial);
-  declare_output_port(
-      "y", size, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {},
-      "the last draw, mu + sigma z", OutputSources::kDiscreteState);
-  const UpdateFunction draw = [this](BlockContext& context, VectorRef next) {
-    RandomGenerator& generator = context.random_generator();
-    for (Eigen::Index i = 0; i < next.size(); ++i) {
-      next[i] = mean_[i] + standard_deviation_[i] * draw_standard_normal(generator);
-    }
-    return EventStatus::succeeded();
-  };
-  declare_initialization_update(draw);
-  declare_periodic_update(period, offset, draw, UpdateWrites::kInPlace);  // writes only
+  declare_output_port<&WhiteNoise::calc_y>("y", size, {}, "the last draw, mu + sigma z",
+                                           OutputSources::kDiscreteState);
+  declare_initialization_update<&WhiteNoise::draw>();
+  // In place: it writes only
+  declare_periodic_update<&WhiteNoise::draw>(period, offset, UpdateWrites::kInPlace);
+}
+
+void WhiteNoise::calc_y(const BlockContext& context, VectorRef y) const {
+  y = context.discrete_state();
+}
+
+EventStatus WhiteNoise::draw(BlockContext& context, VectorRef next) const {
+  RandomGenerator& generator = context.random_generator();
+  for (Eigen::Index i = 0; i < next.size(); ++i) {
+    next[i] = mean_[i] + standard_deviation_[i] * draw_standard_normal(generator);
+  }
+  return EventStatus::succeeded();
 }
 
 }  // namespace cbbg

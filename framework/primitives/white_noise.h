@@ -36,6 +36,12 @@ class WhiteNoise final : public Block {
              double offset = 0.0);
 
  private:
+  // "y": the state, the last draw.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+  // A fresh draw, mu + sigma z, at initialisation and at each sample. Writes in place: it
+  // writes only.
+  EventStatus draw(BlockContext& context, VectorRef next) const;
+
   Vector mean_;
   Vector standard_deviation_;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "cbbg/framework/block_context.h"
+#include "cbbg/framework/short_vectors.h"
 
 namespace cbbg {
 
@@ -13,18 +14,21 @@ ZeroOrderHold::ZeroOrderHold(std::string name, const Vector& initial_value, doub
                              double offset)
     : Block(std::move(name)) {
   const int size = static_cast<int>(initial_value.size());
-  const InputPort& u = declare_input_port("u", size, "the signal to sample");
+  u_ = &declare_input_port("u", size, "the signal to sample");
   declare_discrete_state("held", initial_value, StateLifetime::kPerTrial);
-  declare_output_port(
-      "y", size, [](const BlockContext& context, VectorRef y) { y = context.discrete_state(); }, {},
-      "the held sample", OutputSources::kDiscreteState);
-  declare_periodic_update(
-      period, offset,
-      [&u](BlockContext& context, VectorRef next) {
-        next = context.input(u);
-        return EventStatus::succeeded();
-      },
-      UpdateWrites::kInPlace);  // writes only
+  declare_output_port<&ZeroOrderHold::calc_y>("y", size, {}, "the held sample",
+                                              OutputSources::kDiscreteState);
+  // In place: it writes only
+  declare_periodic_update<&ZeroOrderHold::sample>(period, offset, UpdateWrites::kInPlace);
+}
+
+void ZeroOrderHold::calc_y(const BlockContext& context, VectorRef y) const {
+  copy_values(context.discrete_state().data(), y.size(), y.data());
+}
+
+EventStatus ZeroOrderHold::sample(BlockContext& context, VectorRef next) const {
+  copy_values(context.input(*u_).data(), next.size(), next.data());
+  return EventStatus::succeeded();
 }
 
 }  // namespace cbbg

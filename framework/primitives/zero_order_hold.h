@@ -16,6 +16,14 @@ class ZeroOrderHold final : public Block {
  public:
   ZeroOrderHold(std::string name, int size, double period, double offset = 0.0);
   ZeroOrderHold(std::string name, const Vector& initial_value, double period, double offset = 0.0);
+
+ private:
+  // "y": the state, the held sample.
+  void calc_y(const BlockContext& context, VectorRef y) const;
+  // Stores u's sample. Writes in place: it writes only.
+  EventStatus sample(BlockContext& context, VectorRef next) const;
+
+  const InputPort* u_;
 };
 
 }  // namespace cbbg

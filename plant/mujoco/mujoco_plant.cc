@@ -387,58 +387,6 @@ class MujocoPlant::Scratch final : public BlockScratch {
   mjData* data_;
 };
 
-MujocoPlant::MujocoPlant(std::string name, const MujocoParams& params, const RobotParams& robot,
-                         double initial_pitch, DisturbanceInput disturbance)
-    : RobotPlant(std::move(name)),
-      model_(
-          std::make_shared<const Model>(params, robot, disturbance == DisturbanceInput::kDeclared)),
-      wheel_radius_(params.wheel_radius > 0.0 ? params.wheel_radius
-                    : params.model.empty()    ? robot.wheel_radius
-                                              : std::numeric_limits<double>::quiet_NaN()),
-      drawing_(params.model.empty() ? two_wheeler_drawing(robot) : PlantDrawing{}) {
-  // A model file's robot is drawn from its own shapes; the built-in two-wheeler as the other
-  // plants' two-wheeler is.
-  if (!params.model.empty()) drawing_.model = model_drawing(model_->m, model_->pitch_joint);
-  check_initial_pitch(initial_pitch);
-  signals_ = model_->signal_names;
-  const InputPort& torque = declare_input_port(
-      "torque", kTorqueSize, "tau_l, tau_r: motor torques, N m, to mujoco.actuators");
-  const InputPort* pushed = declare_disturbance_input(disturbance);
-  const int signal_count = model_->signals;
-  declare_output_port(
-      "state", signal_count,
-      [signal_count](const BlockContext& context, VectorRef y) {
-        y = context.continuous_state().head(signal_count);
-      },
-      {}, "the model's sensors (or joints), by name");
-  Scratch scratch(model_);
-  scratch.rest(initial_pitch);
-  Vector initial(model_->size);
-  scratch.pack(initial);
-  declare_self_integrated_state(initial,
-                                [this, &torque, pushed](BlockContext& context, double end_time) {
-                                  advance(context, end_time, torque, pushed);
-                                });
-}
-
-MujocoPlant::~MujocoPlant() = default;
-
-double MujocoPlant::timestep() const { return model_->m->opt.timestep; }
-
-std::unique_ptr<BlockScratch> MujocoPlant::make_scratch() const {
-  return std::make_unique<Scratch>(model_);
-}
-
-void MujocoPlant::reset(Context& context, double initial_pitch) const {
-  check_initial_pitch(initial_pitch);
-  auto& scratch = static_cast<Scratch&>(*context.scratch(context.diagram().leaf_index(*this)));
-  scratch.rest(initial_pitch);
-  VectorView state = context.continuous_state(*this);
-  scratch.pack(state);
-  scratch.synced_time = context.time();
-  scratch.synced_state = state;
-}
-
 namespace {
 
 // MuJoCo's count of the warnings that mean a step went wrong: it reset a diverged simulation,
@@ -474,9 +422,38 @@ void apply_push(mjData* data, int body, double force, double pitch_torque) {
 
 }  // namespace
 
-void MujocoPlant::advance(BlockContext& context, double end_time, const InputPort& torque,
-                          const InputPort* disturbance) const {
-  const ConstVectorView tau = context.input(torque);
+MujocoPlant::MujocoPlant(std::string name, const MujocoParams& params, const RobotParams& robot,
+                         double initial_pitch, DisturbanceInput disturbance)
+    : RobotPlant(std::move(name)),
+      model_(
+          std::make_shared<const Model>(params, robot, disturbance == DisturbanceInput::kDeclared)),
+      wheel_radius_(params.wheel_radius > 0.0 ? params.wheel_radius
+                    : params.model.empty()    ? robot.wheel_radius
+                                              : std::numeric_limits<double>::quiet_NaN()),
+      drawing_(params.model.empty() ? two_wheeler_drawing(robot) : PlantDrawing{}) {
+  // A model file's robot is drawn from its own shapes; the built-in two-wheeler as the other
+  // plants' two-wheeler is.
+  if (!params.model.empty()) drawing_.model = model_drawing(model_->m, model_->pitch_joint);
+  check_initial_pitch(initial_pitch);
+  signals_ = model_->signal_names;
+  torque_ = &declare_input_port("torque", kTorqueSize,
+                                "tau_l, tau_r: motor torques, N m, to mujoco.actuators");
+  disturbance_ = declare_disturbance_input(disturbance);
+  declare_output_port<&MujocoPlant::calc_state>("state", model_->signals, {},
+                                                "the model's sensors (or joints), by name");
+  Scratch scratch(model_);
+  scratch.rest(initial_pitch);
+  Vector initial(model_->size);
+  scratch.pack(initial);
+  declare_self_integrated_state<&MujocoPlant::advance>(initial);
+}
+
+void MujocoPlant::calc_state(const BlockContext& context, VectorRef y) const {
+  y = context.continuous_state().head(model_->signals);
+}
+
+void MujocoPlant::advance(BlockContext& context, double end_time) const {
+  const ConstVectorView tau = context.input(*torque_);
   check_torque_finite(*this, tau);
   Scratch& scratch = context.scratch<Scratch>();
   VectorView state = context.mutable_continuous_state();
@@ -490,8 +467,8 @@ void MujocoPlant::advance(BlockContext& context, double end_time, const InputPor
   } else {
     drives[0].apply(data, tau[kTauLeft] + tau[kTauRight]);
   }
-  if (disturbance != nullptr) {
-    const ConstVectorView push = context.input(*disturbance);
+  if (disturbance_ != nullptr) {
+    const ConstVectorView push = context.input(*disturbance_);
     check_disturbance_finite(*this, push);
     apply_push(data, model_->body, push[kPushForce], push[kPushPitchTorque]);
   }
@@ -512,6 +489,24 @@ void MujocoPlant::advance(BlockContext& context, double end_time, const InputPor
                           "': state is not finite at t = " + format_number(end_time));
   }
   scratch.synced_time = end_time;
+  scratch.synced_state = state;
+}
+
+MujocoPlant::~MujocoPlant() = default;
+
+double MujocoPlant::timestep() const { return model_->m->opt.timestep; }
+
+std::unique_ptr<BlockScratch> MujocoPlant::make_scratch() const {
+  return std::make_unique<Scratch>(model_);
+}
+
+void MujocoPlant::reset(Context& context, double initial_pitch) const {
+  check_initial_pitch(initial_pitch);
+  auto& scratch = static_cast<Scratch&>(*context.scratch(context.diagram().leaf_index(*this)));
+  scratch.rest(initial_pitch);
+  VectorView state = context.continuous_state(*this);
+  scratch.pack(state);
+  scratch.synced_time = context.time();
   scratch.synced_state = state;
 }
 

@@ -62,10 +62,15 @@ class MujocoPlant final : public RobotPlant {
   struct Model;
   class Scratch;
 
-  void advance(BlockContext& context, double end_time, const InputPort& torque,
-               const InputPort* disturbance) const;
+  // "state": the signals, the head of the continuous state.
+  void calc_state(const BlockContext& context, VectorRef y) const;
+  // Takes MuJoCo's steps to `end_time` with the torque (and the push) held, then packs the
+  // continuous state; throws when MuJoCo diverges or the state is not finite.
+  void advance(BlockContext& context, double end_time) const;
 
   std::shared_ptr<const Model> model_;
+  const InputPort* torque_;
+  const InputPort* disturbance_;  // null without DisturbanceInput::kDeclared
   std::vector<std::string> signals_;
   double wheel_radius_;
   PlantDrawing drawing_;

@@ -4,7 +4,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cbbg/framework/block_context.h"
 #include "cbbg/framework/diagram_builder.h"
@@ -193,6 +196,49 @@ TEST(CompiledSchedule, AnInPlaceUpdateMustBeItsBlocksOnlyPeriodicUpdate) {
               ::testing::ThrowsMessage<std::invalid_argument>(::testing::HasSubstr(
                   "block 'two': an update that writes in place must be the block's only "
                   "periodic update")));
+}
+
+// y = 1 until `until`, NaN after: a source that spoils what samples it.
+class SpoilsAfter final : public Block {
+ public:
+  SpoilsAfter(std::string name, double until) : Block(std::move(name)) {
+    declare_output_port("y", 1,
+                        [until](const BlockContext& context, VectorRef y) {
+                          y[0] = context.time() < until ? 1.0
+                                                        : std::numeric_limits<double>::quiet_NaN();
+                        },
+                        {});
+  }
+};
+
+// The message a simulation of holds of `periods` sampling a source spoilt after `until` ends
+// with on `schedule`.
+std::string spoilt_error(Schedule schedule, std::vector<double> periods, double until) {
+  DiagramBuilder builder("top");
+  auto& source = builder.emplace<SpoilsAfter>("source", until);
+  for (size_t i = 0; i < periods.size(); ++i) {
+    auto& hold = builder.emplace<ZeroOrderHold>("hold" + std::to_string(i), 1, periods[i]);
+    builder.connect(source.output_port("y"), hold.input_port("u"));
+  }
+  const auto diagram = builder.build();
+  Simulator simulator(*diagram, SimulatorOptions{.schedule = schedule});
+  try {
+    simulator.advance_to(1.0);
+  } catch (const SimulationError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+TEST(CompiledSchedule, NamesTheBlockWhoseStateTurnedNonFiniteAsTheInterpretedScheduleDoes) {
+  for (const Schedule schedule : {Schedule::kCompiled, Schedule::kInterpreted}) {
+    // Only the slow hold samples at 0.04: it alone is checked, and named.
+    EXPECT_EQ(spoilt_error(schedule, {0.03, 0.04}, 0.035),
+              "block 'top/hold1': discrete state became non-finite at t = 0.040000");
+    // Both sample at 0.06 (their groups coincide): the first in leaf order is named.
+    EXPECT_EQ(spoilt_error(schedule, {0.02, 0.03}, 0.05),
+              "block 'top/hold0': discrete state became non-finite at t = 0.060000");
+  }
 }
 
 }  // namespace
