@@ -43,7 +43,7 @@ Critic::Critic(std::string name, int num_features, const CriticParams& params, d
   declare_output_port<&Critic::calc_value>("value", 1, {features_}, "V(s_t) = w . phi(s_t)");
   td_error_ = &declare_output_port<&Critic::calc_td_error>(
       "td_error", 1, {features_, reward_, failed_}, "delta_{t-1}");
-  declare_periodic_update<&Critic::learn_and_remember>(
+  declare_periodic_update<&Critic::learn>(
       period, 0.0, UpdateWrites::kInPlace);  // every part is read before it is written
 }
 
@@ -55,10 +55,10 @@ void Critic::calc_td_error(const BlockContext& context, VectorRef delta) const {
   delta[0] = td_error(context);
 }
 
-EventStatus Critic::learn_and_remember(BlockContext& context, VectorRef next) const {
+EventStatus Critic::learn(BlockContext& context, VectorRef next) const {
   const auto state = context.discrete_state();
   if (has_previous_.of(state)[0] != 0.0 && !params_.frozen) {
-    learn(state, next, context.output(*td_error_)[0]);  // delta at this instant
+    apply_rule(state, next, context.output(*td_error_)[0]);  // delta at this instant
   }
   previous_features_.of(next) = context.input(*features_);
   has_previous_.of(next)[0] = 1.0;
@@ -75,7 +75,7 @@ double Critic::td_error(const BlockContext& context) const {
          w.dot(previous_features_.of(state));
 }
 
-void Critic::learn(ConstVectorView state, VectorRef next, double delta) const {
+void Critic::apply_rule(ConstVectorView state, VectorRef next, double delta) const {
   const auto phi = previous_features_.of(state);
   if (params_.kind == CriticKind::kTd0) {
     const double step = params_.beta * delta / (params_.epsilon + phi.squaredNorm());
@@ -109,7 +109,7 @@ codegen::CCalculation Critic::c_calculation(int output, const Context&) const {
 }
 
 codegen::CCalculation Critic::c_update(int, const Context&) const {
-  // in0 features; out1 td_error, the delta of this instant. The steps of learn().
+  // in0 features; out1 td_error, the delta of this instant. The steps of apply_rule().
   const std::string n = std::to_string(num_features_);
   const std::string each = "    for (i = 0; i < " + n + "; ++i) ";
   codegen::CCalculation c;

@@ -95,11 +95,11 @@ class Critic final : public Block, public Learner, public codegen::EmitsC {
   void calc_td_error(const BlockContext& context, VectorRef delta) const;
   // The periodic update: learns from the last transition (unless frozen), then remembers
   // phi(s_t) for the next one. Writes in place: every part is read before it is written.
-  EventStatus learn_and_remember(BlockContext& context, VectorRef next) const;
+  EventStatus learn(BlockContext& context, VectorRef next) const;
   // delta_{t-1} from the context at tick t (0 without a previous tick).
   double td_error(const BlockContext& context) const;
   // The rule's step on w (and z) from the transition s_{t-1} -> s_t, into `next`.
-  void learn(ConstVectorView state, VectorRef next, double delta) const;
+  void apply_rule(ConstVectorView state, VectorRef next, double delta) const;
 
   int num_features_;
   CriticParams params_;

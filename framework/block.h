@@ -1,6 +1,8 @@
 #pragma once
 // Block: the unit of composition. A leaf block declares named, sized ports, its state, its
-// parameters and its events; a Diagram (diagram.h) is a Block made of other blocks.
+// parameters and its events, and what it calculates as its own const member functions (named
+// calculations: declare_output_port<&Adder::calc_sum>(...)) or lambdas; a Diagram (diagram.h)
+// is a Block made of other blocks.
 
 #include <deque>
 #include <functional>

@@ -339,7 +339,8 @@ void Simulator::integrate_ode(double start_time, double end_time) {
       options_.schedule == Schedule::kCompiled ? &compiled_ : nullptr;
   auto derivatives = [&context, &diagram, compiled, size](const Integrator::State& x,
                                                           Integrator::State& dxdt, double t) {
-    std::copy_n(x.begin(), size, context.continuous_states().data());
+    // Eigen's copy loop: a call to memmove costs more than these few values.
+    VectorView(context.continuous_states().data(), size) = ConstVectorView(x.data(), size);
     context.set_time(t);
     if (compiled != nullptr) {
       compiled->evaluate_stage_inputs();

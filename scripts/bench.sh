@@ -63,15 +63,33 @@ wall jobs1 "$cbbg" run --jobs 1 --no-figures --out "$out/exp1-jobs1"
 wall jobs2 "$cbbg" run --jobs 2 --no-figures --out "$out/exp1-jobs2"
 if [[ -n "$baseline" ]]; then
   wall baseline_main "$baseline/build/apps/cbbg" run --jobs 2 --no-figures --out "$out/exp1-base"
+  # exp1 on the analytic plant, where the framework's share of the time is largest.
+  wall analytic "$cbbg" run --jobs 2 --no-figures --set plant.kind=analytic --out "$out/analytic"
+  wall baseline_analytic "$baseline/build/apps/cbbg" run --jobs 2 --no-figures \
+    --set plant.kind=analytic --out "$out/analytic-base"
 else
   wall baseline_main "$cbbg" run --jobs 2 --no-figures --set plant.simbody_model=constrained \
     --out "$out/exp1-base"
 fi
-identical=yes
-for file in trials.csv evaluation.csv steps.csv summary.json; do
-  cmp -s "$out/exp1-jobs1/$file" "$out/exp1-jobs2/$file" || identical=no
-done
+# same_results <dir> <dir>: yes when the two runs wrote the same result bytes.
+same_results() {
+  local file
+  for file in trials.csv evaluation.csv steps.csv summary.json; do
+    cmp -s "$1/$file" "$2/$file" || { echo no; return; }
+  done
+  echo yes
+}
+identical="$(same_results "$out/exp1-jobs1" "$out/exp1-jobs2")"
+: > "$out/same_as_baseline"
+if [[ -n "$baseline" ]]; then
+  echo "main $(same_results "$out/exp1-jobs2" "$out/exp1-base")" >> "$out/same_as_baseline"
+  echo "analytic $(same_results "$out/analytic" "$out/analytic-base")" >> "$out/same_as_baseline"
+fi
 
 python3 "$root/scripts/bench_table.py" "$out" "$identical" "${against:-constrained}"
 # Instructions per tick, which repeat where timings do not.
 "$root/scripts/count_instructions.sh" "$root/build"
+if [[ -n "$baseline" ]]; then
+  echo "The same at ${against:0:7}:"
+  "$root/scripts/count_instructions.sh" "$baseline/build"
+fi

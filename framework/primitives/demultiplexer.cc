@@ -24,6 +24,8 @@ Demultiplexer::Demultiplexer(std::string name, const std::vector<Output>& output
   }
   const InputPort& u = declare_input_port("u", total, "the vector to split");
   int offset = 0;
+  // Each output's calculation is a lambda, not a named calculation: one member function would not
+  // know which output it computes, and the lambda carries its offset.
   for (const auto& output : outputs) {
     declare_output_port(
         output.name, output.size,
