@@ -3,8 +3,8 @@
 // block declares it. Two kinds, called the same way:
 //  - a named calculation, a const member function of the block (`&Actor::calc_action`), given
 //    as a template argument to Block's declare_* functions: a trampoline instantiated for that
-//    member calls it directly, so a call is one plain function-pointer call with the member's
-//    body inlined behind it, and no std::function;
+//    member calls it directly (a call the compiler may inline), so a call costs one plain
+//    function-pointer call and no std::function;
 //  - a callable (a lambda), for a user's small block: kept in a std::function that the same
 //    pointer calls.
 
