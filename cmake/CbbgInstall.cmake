@@ -25,8 +25,7 @@ install(FILES apps/cli.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/apps)
 install(TARGETS cbbg RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The command finds its plotting script in share/cbbg/ beside its bin/.
 install(PROGRAMS scripts/plot_results.py DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg)
-# The robustness, teacher, ablation and baseline studies and their reports (README: Beyond
-# the paper),
+# The robustness, teacher, ablation and baseline studies and their reports (docs/studies.md),
 # what they share, and the variants' configs the teacher and ablation studies run.
 install(PROGRAMS scripts/robustness_study.sh scripts/robustness_report.py
                  scripts/teacher_study.sh scripts/teacher_report.py
@@ -38,12 +37,16 @@ install(FILES scripts/study_kit.sh scripts/study_stats.py DESTINATION ${CMAKE_IN
 install(DIRECTORY configs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/configs)
 # The paper's two-wheeler as an MJCF model (plant.kind mujoco), to copy and change.
 install(FILES plant/mujoco/two_wheeler.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/models)
-# The Slurm batch scripts of a sweep (README: Sweeps).
+# The Slurm batch scripts of a sweep (docs/sweeps.md).
 install(PROGRAMS scripts/slurm/sweep.sbatch scripts/slurm/merge.sbatch scripts/slurm/submit_sweep.sh
         DESTINATION ${CMAKE_INSTALL_DATADIR}/cbbg/slurm)
 # The documentation, and the examples as a user's project to start from.
 install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
-install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
+install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs PATTERN "CMakeLists.txt" EXCLUDE)
+# The documentation site (guide and API reference), when the build made it (docs/CMakeLists.txt).
+if(CBBG_WITH_DOCS)
+  install(DIRECTORY ${CBBG_DOCS_HTML}/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/html)
+endif()
 install(DIRECTORY examples/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples)
 install(DIRECTORY python/examples/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/examples/python
         PATTERN "__pycache__" EXCLUDE)

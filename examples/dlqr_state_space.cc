@@ -17,6 +17,7 @@
 
 #include <Eigen/Eigenvalues>
 
+// [docs dlqr-state-space-includes]
 #include <cbbg/framework/control/discretize.h>
 #include <cbbg/framework/control/linearize.h>
 #include <cbbg/framework/control/lqr.h>
@@ -27,6 +28,7 @@
 #include <cbbg/framework/primitives/linear_system.h>
 #include <cbbg/framework/primitives/zero_order_hold.h>
 #include <cbbg/framework/simulator.h>
+// [docs dlqr-state-space-includes end]
 
 int main(int argc, char** argv) try {
   if (argc != 2) {
@@ -45,6 +47,7 @@ int main(int argc, char** argv) try {
   const Eigen::MatrixXd C = Eigen::MatrixXd::Identity(2, 2), D = Eigen::MatrixXd::Zero(2, 1);
   const cbbg::Vector x0 = (cbbg::Vector(2) << 1.0, 0.0).finished();
 
+  // [docs dlqr-state-space]
   // The plant as a diagram of its own, its ports exported: what linearize reads.
   cbbg::DiagramBuilder plant_builder("motor");
   auto& motor = plant_builder.emplace<cbbg::LinearSystem>("dynamics", A, B, C, D, x0);
@@ -81,6 +84,7 @@ int main(int argc, char** argv) try {
   builder.connect(feedback.output_port("y"), motor_block.input_port("u"));
   builder.connect(motor_block.output_port("x"), csv.input_port("x"));
   builder.connect(feedback.output_port("y"), csv.input_port("u"));
+  // [docs dlqr-state-space end]
   const auto diagram = builder.build();
 
   const std::string dot = cbbg::to_dot(*diagram);

@@ -37,6 +37,7 @@ namespace {
 
 using namespace cbbg;
 
+// [docs saturated-pd-params]
 // The supervisor's own parameters: config keys saturated_pd.*, declared once, here.
 struct SaturatedPdParams {
   double k_theta = 60.0;
@@ -50,6 +51,7 @@ struct SaturatedPdParams {
     a.number("k_v", k_v, "gain on the mean wheel speed, N m s/rad", kFinite);
   }
 };
+// [docs saturated-pd-params end]
 
 /// SaturatedPd: a_S = clamp(k_theta theta_b + k_dtheta theta_b' + k_v (phi_l' + phi_r') / 2,
 /// -limit, limit). Input "measured" (6), output "action" (1): the cerebellum's slot.
@@ -123,6 +125,7 @@ std::vector<Point> read_points(int argc, char** argv) {
 
 // Experiment 1 of both arms at one point, into the results directory `out`.
 void run_point(const Point& point, const std::filesystem::path& out) {
+  // [docs own-supervisor]
   diagrams::ControllerOptions mine = diagrams::preset("cbbg").options;
   mine.slots.supervisor = [](const diagrams::SlotRequest& request) {
     return std::make_unique<SaturatedPd>(request.name,
@@ -141,6 +144,7 @@ void run_point(const Point& point, const std::filesystem::path& out) {
                             directory.work(), &tasks);
   render(arms[1], point.parameters, directory.work() / "figures");
   directory.commit();
+  // [docs own-supervisor end]
 
   std::printf("%s\n%-6s %22s %22s\n", out.string().c_str(), "seed", "cbbg failures",
               "cbbg_saturated_pd failures");
@@ -158,8 +162,10 @@ int main(int argc, char** argv) {
                  "usage: own_supervisor OUTPUT_DIR [SEEDS [KEY=VALUE | --grid=KEY=V1,V2 ...]]\n");
     return 2;
   }
+  // [docs register-section]
   // Before any config is made: saturated_pd.* become keys like the built-in ones.
   config::register_section<SaturatedPdParams>("saturated_pd");
+  // [docs register-section end]
   std::vector<Point> points;
   try {
     points = read_points(argc, argv);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+// [docs pid-first-order-includes]
 #include <cbbg/framework/diagram_builder.h>
 #include <cbbg/framework/graphviz.h>
 #include <cbbg/framework/primitives/adder.h>
@@ -20,6 +21,7 @@
 #include <cbbg/framework/primitives/pid_controller.h>
 #include <cbbg/framework/primitives/step_source.h>
 #include <cbbg/framework/simulator.h>
+// [docs pid-first-order-includes end]
 
 int main(int argc, char** argv) try {
   if (argc != 2) {
@@ -29,6 +31,7 @@ int main(int argc, char** argv) try {
   const std::filesystem::path out = argv[1];
   std::filesystem::create_directories(out);
 
+  // [docs pid-first-order]
   // The plant: gain K = 2, time constant tau = 0.5 s; its steady state is y = K u.
   const double plant_gain = 2.0, tau = 0.5, target = 1.0, period = 0.01;
   // ki / kp = 1 / tau cancels the plant's lag: the loop is close to first order, time
@@ -58,6 +61,7 @@ int main(int argc, char** argv) try {
   builder.connect(setpoint.output_port("y"), csv.input_port("r"));
   builder.connect(plant.output_port("y"), csv.input_port("y"));
   builder.connect(pid.output_port("u"), csv.input_port("u"));
+  // [docs pid-first-order end]
   const auto diagram = builder.build();
 
   const std::string dot = cbbg::to_dot(*diagram);

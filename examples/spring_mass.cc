@@ -10,11 +10,13 @@
 #include <iostream>
 #include <string>
 
+// [docs spring-mass-includes]
 #include <cbbg/framework/block_context.h>
 #include <cbbg/framework/diagram_builder.h>
 #include <cbbg/framework/graphviz.h>
 #include <cbbg/framework/primitives/zero_order_hold.h>
 #include <cbbg/framework/simulator.h>
+// [docs spring-mass-includes end]
 
 namespace {
 
@@ -24,6 +26,7 @@ using cbbg::InputPort;
 using cbbg::Vector;
 using cbbg::VectorRef;
 
+// [docs spring-mass-block]
 // x'' = (-k x - c x' + force) / m. Input "force" (1); output "state" = (x, x').
 //
 // The constructor declares; each calculation is a const member function of the block, named
@@ -56,6 +59,7 @@ class MassSpring final : public Block {
   double damping_;
   const InputPort* force_;
 };
+// [docs spring-mass-block end]
 
 // force = kp (target - x) - kd x', read directly from the state (direct feedthrough).
 class PdController final : public Block {
@@ -85,6 +89,7 @@ int main(int argc, char** argv) {
   const std::filesystem::path out = argc > 1 ? argv[1] : ".";
   std::filesystem::create_directories(out);
 
+  // [docs spring-mass-diagram]
   cbbg::DiagramBuilder builder("spring_mass");
   auto& plant = builder.emplace<MassSpring>("plant", 1.0, 4.0, 0.4);
   auto& controller = builder.emplace<PdController>("controller", 0.5, 40.0, 8.0);
@@ -108,6 +113,7 @@ int main(int argc, char** argv) {
   } catch (const std::runtime_error& error) {
     std::cerr << error.what() << "\n";
   }
+  // [docs spring-mass-diagram end]
   const double x = simulator.context().continuous_state(plant)[0];
   // The PD law against the spring settles at kp target / (kp + k) = 20 / 44.
   std::printf("x(5 s) = %.6f m (static equilibrium %.6f m), %d samples in %s\n", x,

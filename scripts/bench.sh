@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds and runs the benchmarks, then prints the table of ratios that the README's
-# performance section shows. Every ratio is measured in this one run, against a baseline run
+# Builds and runs the benchmarks, then prints the table of ratios that docs/performance.md
+# shows. Every ratio is measured in this one run, against a baseline run
 # in it too.
 #
 #   scripts/bench.sh                      # this tree: every ratio it can measure alone

@@ -1,5 +1,5 @@
 // A screenshot of a replay page at one moment, in a headless Chromium (Debian's), as the
-// README's picture is made:
+// picture in docs/plants.md is made:
 //   node scripts/replay_screenshot.mjs FILE.html OUT.png [trial=2&t=12]
 import { existsSync } from "node:fs";
 import { resolve } from "node:path";

@@ -49,7 +49,7 @@ for grid in "${grids[@]}"; do
 done
 # The push comes from outside: a force at the body's centre of mass for 0.5 s. 74 N is the
 # largest the PD supervisor survives from every angle on both plants, 80 N fells it (measured,
-# README). A push through the motors (evaluation.push_torque) is bounded by their 5 N m limit.
+# docs/studies.md). A push through the motors (evaluation.push_torque) is bounded by their 5 N m limit.
 push_duration=0.5
 transfer_args=(--experiment transfer --set transfer.training=exp3 --set plant.kind="$plant"
   --set "arms=[cbbg, bg_only, pd_only]" --seeds "$seeds" --jobs "$jobs"

@@ -4,8 +4,9 @@
 # replay/page/package-lock.json) into replay/page/node_modules.
 #   scripts/setup.sh          everything the tests need too (test.sh)
 #   scripts/setup.sh --main   only what building and running the main job needs (run.sh):
-#                             no sanitizer compiler, fuzzer, Slurm, GNU parallel, Chromium
-#                             or PyTorch
+#                             no sanitizer compiler, fuzzer, Slurm, GNU parallel, Chromium,
+#                             PyTorch or documentation tools
+#   scripts/setup.sh --docs   what the main job and the documentation site need (docs.sh)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
@@ -19,6 +20,8 @@ packages=(
   # plant.kind mujoco; MuJoCo's CMake package names libqhull_r's headers
   libmujoco-dev libqhull-dev
 )
+# The documentation site (docs/CMakeLists.txt): the API reference and the user guide.
+docs_packages=(doxygen python3-sphinx python3-myst-parser python3-sphinx-rtd-theme)
 # The tests' own tools and services.
 test_packages=(
   clang clang-format libclang-rt-14-dev libfuzzer-14-dev time python3-pytest
@@ -28,9 +31,10 @@ test_packages=(
   python3-torch
 )
 case "${1:-}" in
-  "") packages+=("${test_packages[@]}") ;;
+  "") packages+=("${test_packages[@]}" "${docs_packages[@]}") ;;
   --main) ;;
-  *) echo "setup.sh: unknown option '$1' (usage: scripts/setup.sh [--main])" >&2; exit 2 ;;
+  --docs) packages+=("${docs_packages[@]}") ;;
+  *) echo "setup.sh: unknown option '$1' (usage: scripts/setup.sh [--main | --docs])" >&2; exit 2 ;;
 esac
 # Node.js and npm may come from Debian or from NodeSource's nodejs (which brings npm along).
 command -v node >/dev/null || packages+=(nodejs)

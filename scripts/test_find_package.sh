@@ -27,6 +27,15 @@ cmake --install "$build" --prefix "$scratch/prefix" >/dev/null
 # The examples as installed (share/doc/cbbg/examples), built as a user's own project.
 examples="$scratch/prefix/share/doc/cbbg/examples"
 test -s "$scratch/prefix/share/doc/cbbg/docs/parameters.md"
+# The documentation site, when the build made it (Doxygen and Sphinx present): the guide
+# and the API reference, a block's page among them.
+if [[ -s "$build/docs/html/index.html" ]]; then
+  for page in index.html controller.html api/classcbbg_1_1blocks_1_1Actor.html graphs/cbbg.svg; do
+    test -s "$scratch/prefix/share/doc/cbbg/html/$page" || fail "share/doc/cbbg/html/$page was not installed"
+  done
+else
+  not_checked+=("the installed documentation site (no Doxygen or Sphinx at configure)")
+fi
 cmake -S "$examples" -B "$scratch/example" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$scratch/prefix" >/dev/null
 cmake --build "$scratch/example" >/dev/null
@@ -127,7 +136,7 @@ if grep -qaF -- "$root" "$scratch/prefix/bin/cbbg"; then
   fail "the installed cbbg names the source tree $root"
 fi
 # The installed Python module, away from the build tree, with its installed examples: a
-# Python supervisor through exp1 (the README's example), plotted.
+# Python supervisor through exp1 (docs/python.md's example), plotted.
 if ! grep -qx 'CBBG_BUILD_PYTHON:BOOL=ON' "$build/CMakeCache.txt"; then
   not_checked+=("the installed Python module (this build has none: CBBG_BUILD_PYTHON is not ON)")
 elif ! python_with numpy matplotlib; then

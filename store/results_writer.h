@@ -1,5 +1,5 @@
 #pragma once
-// Writes the files of a results directory (README "Results directory"): config.yaml,
+// Writes the files of a results directory (docs/commands.md): config.yaml,
 // schema.json (what the results hold: the protocol's declaration), summary.json, trials.csv,
 // evaluation.csv, figures.csv (the protocol's own per-seed figures), steps.csv, weights/. They
 // go into a run's work directory (run_directory.h), which its commit then publishes. Every file

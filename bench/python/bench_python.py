@@ -1,6 +1,6 @@
 """What Python costs: a block written in Python against the same block in C++, per tick, and
 the environment's steps per second against a NumPy-only step of the same robot. Everything in
-one run on one machine; the table is what the README shows (scripts/bench_python.sh).
+one run on one machine; the table is what docs/python.md shows (scripts/bench_python.sh).
 
 usage: bench_python.py [--repeats N]
 """

@@ -57,6 +57,7 @@ inline void curriculum_seed(const cbbg::parameters::Parameters& p, const cbbg::d
 
 inline void register_curriculum() {
   cbbg::config::register_section<CurriculumParams>("curriculum");
+  // [docs curriculum-protocol]
   cbbg::experiments::register_protocol(
       {.name = "curriculum",
        .meaning = "per arm and seed: trials from curriculum.first_angle until a success, then "
@@ -77,6 +78,7 @@ inline void register_curriculum() {
                               .paired = true}},
                  .plots = {"pitch", "failures", "figures"}};
            }});
+  // [docs curriculum-protocol end]
 }
 
 }  // namespace cartpole

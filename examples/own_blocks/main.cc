@@ -27,6 +27,7 @@ namespace {
 using cbbg::diagrams::ControllerOptions;
 using cbbg::diagrams::SlotRequest;
 
+// [docs own-critic]
 ControllerOptions paper() { return cbbg::diagrams::preset("cbbg").options; }
 
 void register_own_critic() {
@@ -37,7 +38,9 @@ void register_own_critic() {
   };
   cbbg::diagrams::register_arm("own_critic", "cbbg with a visit-count TD(0) critic", options);
 }
+// [docs own-critic end]
 
+// [docs own-exploration-and-reward]
 void register_own_exploration() {
   ControllerOptions options = paper();
   options.slots.exploration = [](const std::string& name, const cbbg::parameters::Parameters& p) {
@@ -53,6 +56,7 @@ void register_own_reward() {
   };
   cbbg::diagrams::register_arm("own_reward", "cbbg learning from a pitch cost", paper(), task);
 }
+// [docs own-exploration-and-reward end]
 
 }  // namespace
 

@@ -12,7 +12,7 @@ namespace cbbg {
 ///
 /// | port         | dir | size | meaning                      |
 /// |--------------|-----|------|------------------------------|
-/// | <input name> | in  | n    | one per declared input, u_i  |
+/// | (each input) | in  | n    | one per declared input, u_i  |
 /// | y            | out | n    | sum_i s_i u_i                |
 ///
 /// y reads every input directly (direct feedthrough). The first input is taken with its sign

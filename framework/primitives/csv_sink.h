@@ -23,7 +23,7 @@ inline constexpr const char* kCsvSinkTag = "# written by cbbg CsvSink";
 ///
 /// | port         | dir | size     | meaning                                 |
 /// |--------------|-----|----------|-----------------------------------------|
-/// | <input name> | in  | its size | one per declared input, in column order |
+/// | (each input) | in  | its size | one per declared input, in column order |
 ///
 /// A row holds the values every update at t_k reads (simulator.h step 2), the same a
 /// SignalLog of the signal would record at t_k; numbers are written as number_text.h writes

@@ -13,7 +13,7 @@ namespace cbbg {
 /// | port          | dir | size        | meaning                        |
 /// |---------------|-----|-------------|--------------------------------|
 /// | u             | in  | sum of n_i  | the vector to split            |
-/// | <output name> | out | n_i         | one per declared output, a cut |
+/// | (each output) | out | n_i         | one per declared output, a cut |
 ///
 /// Every output reads u directly (direct feedthrough).
 class Demultiplexer final : public Block {

@@ -11,7 +11,7 @@ namespace cbbg {
 ///
 /// | port          | dir | size        | meaning                  |
 /// |---------------|-----|-------------|--------------------------|
-/// | <input name>  | in  | its size    | one per declared input   |
+/// | (each input)  | in  | its size    | one per declared input   |
 /// | y             | out | sum of them | the inputs, concatenated |
 class Multiplexer final : public Block {
  public:

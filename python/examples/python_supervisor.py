@@ -1,4 +1,4 @@
-"""The README's "From Python" example: the CB-BG controller with a supervisor written in
+"""docs/python.md's example: the CB-BG controller with a supervisor written in
 Python, experiment 1 over 5 seeds beside the preset with the C++ PD, and each arm's failures
 before the first success plotted with matplotlib.
 
@@ -17,6 +17,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import cbbg  # noqa: E402
 
 
+# [docs lean-supervisor]
 class LeanSupervisor(cbbg.LeafBlock):
     """A supervisor of the user's: the PD law on pitch and pitch rate alone (no wheel terms)."""
 
@@ -30,6 +31,7 @@ class LeanSupervisor(cbbg.LeafBlock):
     def calc_action(self, context, action):
         pitch, pitch_rate = context.input(self.measured)[:2]
         action[0] = self.k_theta * pitch + self.k_dtheta * pitch_rate
+# [docs lean-supervisor end]
 
 
 def main():
@@ -42,6 +44,7 @@ def main():
               file=sys.stderr)
         sys.exit(2)
 
+    # [docs python-exp1]
     options = cbbg.preset("cbbg").options
     options.slots.supervisor = LeanSupervisor  # called as LeanSupervisor(name, parameters)
     arms = [cbbg.make_arm("cbbg_lean", options), cbbg.preset_arm("cbbg")]
@@ -53,6 +56,7 @@ def main():
         failures = [results.run(index, s).failures_before_success for s in range(len(results.seeds))]
         print(f"{arm:10s} failures before the first success, seeds {results.seeds}: {failures}")
         axes.plot(results.seeds, failures, "o-", label=arm)
+    # [docs python-exp1 end]
     axes.set_xticks(results.seeds)
     axes.yaxis.get_major_locator().set_params(integer=True)
     axes.set_xlabel("seed")

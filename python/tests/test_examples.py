@@ -1,4 +1,4 @@
-"""The examples a user starts from run as the README shows them."""
+"""The examples a user starts from run as docs/python.md shows them."""
 
 import os
 import subprocess

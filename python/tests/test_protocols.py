@@ -158,9 +158,11 @@ def two_angles(parameters, arm, run, loop):
     run.add_figure("balanced_trials", sum(t.outcome.balanced for t in run.trials))
 
 
+# [docs python-protocol]
 cbbg.register_protocol("two_angles", "a trial from 0.05 rad, then from trial.theta0", two_angles,
                        figures=[cbbg.Figure("balanced_trials", type="integer", paired=True)],
                        trial_columns=[cbbg.Column("from_small_angle", "flag")])
+# [docs python-protocol end]
 
 
 def test_a_protocol_written_in_python_runs_in_memory_and_through_the_command_line(tmp_path):

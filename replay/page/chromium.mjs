@@ -1,5 +1,5 @@
 // Debian's Chromium, headless, through playwright-core: started for one use and stopped by
-// its pid whatever happens (the browser test and the README's screenshot share it).
+// its pid whatever happens (the browser test and docs/plants.md's screenshot share it).
 import { existsSync } from "node:fs";
 import { chromium } from "playwright-core";
 

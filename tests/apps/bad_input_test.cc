@@ -307,7 +307,7 @@ TEST(BadInput, EveryCaseExitsTwoWithOneLineAndLeavesEverythingAsItWas) {
   const auto before = cbbg::testing::tree_of(scratch);
 
   const std::vector<BadInput> cases = bad_inputs();
-  ASSERT_EQ(cases.size(), 161u);  // the README counts them: a case dropped shows here
+  ASSERT_EQ(cases.size(), 161u);  // docs/reliability.md counts them: a case dropped shows here
   for (const BadInput& input : cases) {
     const std::string arguments = expand(input.arguments, scratch.string());
     SCOPED_TRACE(arguments);
