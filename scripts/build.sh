@@ -3,7 +3,8 @@
 # installs the Python module where Debian's python3 finds it (/usr/local/lib/python3.X/
 # dist-packages), so `/usr/bin/python3 -c "import cbbg"` works; the build tree's copy is
 # build/python (PYTHONPATH=build/python).
-#   scripts/build.sh          everything: the tests, benchmarks and examples too (test.sh)
+#   scripts/build.sh          everything: the tests, benchmarks, examples and the
+#                             documentation site too (test.sh)
 #   scripts/build.sh --main   only the main job's: the `cbbg` command (with the replay page it
 #                             writes) and the Python module (run.sh)
 set -euo pipefail

@@ -22,7 +22,6 @@ source_suffix = {".md": "markdown"}
 root_doc = "index"
 exclude_patterns = ["site", "figures"]
 myst_heading_anchors = 4
-myst_enable_extensions = ["dollarmath"]
 
 html_theme = "sphinx_rtd_theme"
 html_title = "cbbg documentation"

@@ -1,6 +1,7 @@
 """The documentation's checks fail when they should: scripts/check_docs.py on a small tree
-with one fault each, and the site's Sphinx build (docs/site/conf.py, warnings as errors) on
-pages with a broken link or a snippet marker its file lacks."""
+with one fault each, the site's Sphinx build (docs/site/conf.py, warnings as errors) on
+pages with a broken link or a snippet marker its file lacks, and the API reference's Doxygen
+build (docs/site/Doxyfile.in, warnings as errors) on a header comment it warns about."""
 
 import os
 import shutil
@@ -131,3 +132,27 @@ def test_the_site_build_fails_on_a_warning(tmp_path, fault, message):
     else:
         assert result.returncode != 0
         assert message in result.stderr, result.stderr
+
+
+DOXYGEN = shutil.which("doxygen")
+
+
+@pytest.mark.skipif(DOXYGEN is None, reason="Doxygen is not installed")
+@pytest.mark.parametrize("comment, message", [
+    ("/// A block with a port table.", None),
+    ("/// A block whose comment holds <input name>.", "Unsupported xml/html tag <input> found"),
+])
+def test_the_reference_build_fails_on_a_warning(tmp_path, comment, message):
+    (tmp_path / "block.h").write_text(f"#pragma once\n{comment}\nclass Block {{}};\n")
+    with open(os.path.join(REPO, "docs", "site", "Doxyfile.in"), encoding="utf-8") as f:
+        doxyfile = f.read()
+    for name, value in {"@PROJECT_VERSION@": "0", "@CBBG_DOCS_EXTRA@": str(tmp_path / "out"),
+                        "@PROJECT_SOURCE_DIR@": REPO,
+                        "@CBBG_DOXYGEN_INPUT@": str(tmp_path / "block.h")}.items():
+        doxyfile = doxyfile.replace(name, value)
+    result = subprocess.run([DOXYGEN, "-"], input=doxyfile, capture_output=True, text=True)
+    if message is None:
+        assert result.returncode == 0, result.stderr
+    else:
+        assert result.returncode != 0
+        assert f"block.h:2: error: {message}" in result.stderr, result.stderr
