@@ -1,7 +1,8 @@
 """The documentation's checks fail when they should: scripts/check_docs.py on a small tree
 with one fault each, the site's Sphinx build (docs/site/conf.py, warnings as errors) on
 pages with a broken link or a snippet marker its file lacks, and the API reference's Doxygen
-build (docs/site/Doxyfile.in, warnings as errors) on a header comment it warns about."""
+build (docs/site/Doxyfile.in, warnings as errors) on a header comment it warns about; and
+scripts/build_docs.sh refusing to replace a folder it did not make."""
 
 import os
 import shutil
@@ -156,3 +157,20 @@ def test_the_reference_build_fails_on_a_warning(tmp_path, comment, message):
     else:
         assert result.returncode != 0
         assert f"block.h:2: error: {message}" in result.stderr, result.stderr
+
+
+@pytest.mark.parametrize("folder", ["--out", "--extra"])
+def test_the_site_build_never_replaces_a_folder_it_did_not_make(tmp_path, folder):
+    mine = tmp_path / "mine"
+    mine.mkdir()
+    (mine / "notes.txt").write_text("a user's notes")
+    paths = {"--out": str(tmp_path / "html"), "--extra": str(tmp_path / "extra"), folder: str(mine)}
+    command = ["bash", os.path.join(REPO, "scripts", "build_docs.sh"), "--source", "docs",
+               "--doxyfile", "Doxyfile", "--cbbg", "cbbg", "--sphinx", "sphinx-build"]
+    for option, path in paths.items():
+        command += [option, path]
+    result = subprocess.run(command, capture_output=True, text=True)
+    assert result.returncode == 2
+    assert f"{mine} exists and is not" in result.stderr
+    assert (mine / "notes.txt").read_text() == "a user's notes"
+    assert sorted(os.listdir(tmp_path)) == ["mine"]
