@@ -15,8 +15,7 @@ set(CBBG_LIBRARIES cbbg_framework cbbg_codegen cbbg_plant cbbg_blocks cbbg_confi
 install(TARGETS ${CBBG_LIBRARIES} EXPORT cbbgTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(folder framework codegen plant blocks config parameters diagrams records experiments environment store
-               realtime replay)
+foreach(folder ${CBBG_HEADER_FOLDERS})
   install(DIRECTORY ${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/cbbg/${folder}
           FILES_MATCHING PATTERN "*.h" PATTERN "simbody" EXCLUDE PATTERN "node_modules" EXCLUDE)
 endforeach()
